@@ -1,0 +1,76 @@
+// Art import: vector art from SVG files and from the RepulsionPak/AnimationPak `.path` format, as
+// flattened polylines with their paint, in the art's own coordinates (y down).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "animpak/geometry.hpp"
+
+namespace animpak {
+
+/// Straight RGBA colour, each channel in [0, 1].
+struct Rgba {
+  double r = 0.0, g = 0.0, b = 0.0, a = 1.0;
+};
+
+/// A fill or a stroke: absent, or one flat colour (gradients are reduced to a representative colour).
+struct Paint {
+  bool enabled = false;
+  Rgba color;
+};
+
+enum class FillRule { nonzero, evenodd };
+enum class PaintOrder { fill_then_stroke, stroke_then_fill };
+
+/// One flattened subpath.
+struct Polyline {
+  std::vector<Vec2> points;  ///< the closing segment is implied when closed; the first point is not repeated
+  bool closed = true;
+};
+
+/// One drawable path: one or more subpaths painted together under one style.
+struct ArtPath {
+  std::string id;           ///< SVG id (or "path<N>" for .path files); used in messages
+  int source_index = 0;     ///< position of the path in its file (0-based), stable for scene references
+  int path_type = 0;        ///< `.path` pathType (0 boundary … 7 hole); 0 for SVG
+  std::vector<Polyline> polylines;
+  Paint fill;
+  Paint stroke;
+  double stroke_width = 0.0;  ///< in art units, after transforms
+  FillRule fill_rule = FillRule::nonzero;
+  PaintOrder paint_order = PaintOrder::fill_then_stroke;
+};
+
+/// A whole art file. `paths` is in drawing order: paths[0] is painted first (bottom-most).
+struct ArtShape {
+  std::filesystem::path source;
+  std::vector<ArtPath> paths;
+  std::vector<std::string> warnings;  ///< one line each: skipped elements, reduced gradients, …
+  Box bounds() const;                 ///< box of every polyline point
+};
+
+struct SvgOptions {
+  /// Largest distance between a curve and its flattened polyline, in the SVG's user units after
+  /// viewBox scaling (pixels at 96 dpi for unit-less documents).
+  double flatten_tolerance = 0.1;
+  /// Files larger than this are refused before parsing (an attack or not clip art).
+  std::uintmax_t max_file_bytes = 32u << 20;
+};
+
+/// Reads an SVG document. Throws InputError naming the file and element for malformed or unusable input.
+/// Never loads another file: external entities and external references are refused.
+ArtShape load_svg(const std::filesystem::path& file, const SvgOptions& options = {});
+
+/// Parses SVG text already in memory; `name` is used in messages.
+ArtShape parse_svg(const std::string& text, const std::string& name, const SvgOptions& options = {});
+
+/// Reads the authors' `.path` format (../shared/data/README.md). Paths come out in drawing order
+/// (the file's last path first), each with its source_index and path_type.
+ArtShape load_path_file(const std::filesystem::path& file);
+
+/// Chooses the reader by extension (.svg, .path); anything else is an InputError.
+ArtShape load_art(const std::filesystem::path& file, const SvgOptions& options = {});
+
+}  // namespace animpak

@@ -1,0 +1,66 @@
+// Every constant of the paper, in one value passed down explicitly (never a global). Defaults are the
+// paper's values unless docs/parameters.md says why ours differ. A scene file may override any of them
+// by the name in param_table().
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <variant>
+
+namespace animpak {
+
+struct Params {
+  // §3 spacetime elements
+  double offset = 0.04;            ///< Δs, channel of negative space around each element (unit square)
+  double boundary_spacing = 0.11;  ///< arc length between boundary samples of the offset outline
+  double interior_spacing = 0.08;  ///< minimum distance between interior (Poisson-disk) samples
+  int slices = 100;                ///< n_s, slices along the time axis
+
+  // §4 initial configuration
+  double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
+
+  // §5 forces
+  double k_repulsion = 10.0;        ///< Eq. 1
+  double repulsion_epsilon = 1.0;   ///< ε of Eq. 1
+  double k_edge = 10.0;             ///< Eq. 2, slice edge springs
+  double k_shear = 10.0;            ///< Eq. 2, shear springs
+  double k_negative_space = 0.1;    ///< Eq. 2, negative-space springs
+  double k_time = 0.01;             ///< Eq. 2, time springs
+  double k_target = 10.0;           ///< Eq. 2, target-point springs of guided elements
+  double k_overlap = 5.0;           ///< Eq. 3
+  double k_boundary = 5.0;          ///< Eq. 4
+  double k_torsion = 0.1;           ///< Eq. 5
+  double k_temporal = 1.0;          ///< Eq. 6
+  double dt = 0.01;                 ///< Δt_sim, explicit Euler step
+  double velocity_cap = 10.0;       ///< speeds are capped at velocity_cap · Δt_sim
+  double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
+  int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
+
+  // §5.3 growth and stopping
+  double growth_rate = 0.001;       ///< g grows by growth_rate · Δt_sim per step on a free slice
+  double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
+  double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
+  int max_iterations = 100000;      ///< hard cap on steps
+  int check_interval = 10;          ///< NaN/Inf check and statistics every k steps
+  double max_growth = 15.0;         ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
+
+  // art import
+  double flatten_tolerance = 0.1;   ///< largest curve-to-polyline distance when flattening, art units
+};
+
+/// One entry of the table of overridable constants.
+struct ParamInfo {
+  std::string_view name;  ///< key in the scene file's "params" object
+  std::variant<double Params::*, int Params::*> member;
+  double min;             ///< smallest valid value (inclusive)
+  double max;             ///< largest valid value (inclusive)
+  std::string_view meaning;
+};
+
+/// Every member of Params, in declaration order. docs/parameters.md documents each entry.
+std::span<const ParamInfo> param_table();
+
+/// Reads a constant by its table entry, as a double.
+double param_value(const Params& params, const ParamInfo& info);
+
+}  // namespace animpak

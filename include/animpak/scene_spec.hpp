@@ -1,0 +1,108 @@
+// The scene file as parsed and validated by src/io (docs/scene-format.md documents every field).
+// Art paths are already resolved against the scene file's folder. Nothing here is built yet.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "animpak/geometry.hpp"
+#include "animpak/params.hpp"
+
+namespace animpak {
+
+/// A keyed similarity transform of the whole element, applied about the pivot.
+struct TransformKey {
+  double t = 0.0;            ///< animation time in [0, 1]
+  Vec2 translate{0.0, 0.0};  ///< in art units
+  double rotate = 0.0;       ///< degrees, clockwise on screen (y down)
+  double scale = 1.0;        ///< uniform, > 0
+};
+
+/// A keyed position of one vertex handle.
+struct HandleKey {
+  double t = 0.0;  ///< animation time in [0, 1]
+  Vec2 position;   ///< art coordinates
+};
+
+/// A point of the art bound to its nearest slice vertex; its keys drive an ARAP deformation.
+struct HandleSpec {
+  Vec2 point;  ///< art coordinates of the handle in the undeformed art
+  std::vector<HandleKey> keys;
+};
+
+enum class AnimationPreset { none, rotate, pulse, swim };
+
+struct AnimationSpec {
+  AnimationPreset preset = AnimationPreset::none;
+  double turns = 1.0;       ///< rotate: turns per loop; negative turns the other way
+  double amplitude = 0.15;  ///< pulse: relative scale change; swim: bend as a fraction of the body length
+  int count = 1;            ///< pulse: pulses per loop; swim: waves passing per loop
+  double wavelength = 1.0;  ///< swim: wave length as a fraction of the body length
+  bool loop = true;         ///< splines are periodic and t = 1 equals t = 0
+  std::optional<Vec2> pivot;  ///< art coordinates; default: the centroid of the element's outline
+  std::vector<TransformKey> keys;
+  std::vector<HandleSpec> handles;
+};
+
+struct ContainerSpec {
+  std::filesystem::path art;
+  std::optional<int> outline;       ///< source index of the outline path; default: the largest path not a hole
+  std::optional<std::vector<int>> holes;  ///< source indices; default: `.path` type-7 paths, none for SVG
+};
+
+struct LibraryElementSpec {
+  std::string name;  ///< unique; defaults to the art file's stem
+  std::filesystem::path art;
+  AnimationSpec animation;
+  std::optional<int> count;  ///< exact number of unguided copies; otherwise drawn by weight
+  double weight = 1.0;
+};
+
+struct TargetSpec {
+  double x = 0.0, y = 0.0;  ///< container art coordinates
+  double t = 0.0;           ///< in [0, 1]; the first target has t = 0 and the last t = 1
+  std::optional<double> scale;  ///< relative to the element's packed size
+  std::optional<double> angle;  ///< degrees
+};
+
+struct GuidedSpec {
+  std::string name;     ///< unique among guided elements
+  std::string element;  ///< name of a library element
+  std::vector<TargetSpec> targets;
+  std::string loop_to;  ///< guided element whose t = 0 slice this one's t = 1 slice meets; empty: itself
+};
+
+enum class OrientationMode { random, fixed, field };
+enum class FieldKind { constant, radial, tangential };
+
+struct OrientationSpec {
+  OrientationMode mode = OrientationMode::random;
+  double angle = 0.0;            ///< fixed: degrees; field constant: the field's direction
+  FieldKind field = FieldKind::constant;
+  Vec2 center{250.0, 250.0};     ///< radial/tangential: container art coordinates
+};
+
+struct SceneSpec {
+  std::filesystem::path file;  ///< the scene file itself, for messages
+  ContainerSpec container;
+  std::vector<LibraryElementSpec> elements;
+  std::vector<GuidedSpec> guided;
+  OrientationSpec orientation;
+  std::optional<int> count;       ///< unguided elements to seed; default: as many as fit ("fill")
+  std::uint64_t seed = 1;
+  bool loop = true;               ///< loop constraint on: the t = 1 plane meets the t = 0 plane
+  Params params;                  ///< paper constants with the scene's overrides applied
+};
+
+/// Reads, parses and validates a scene file. Errors are InputError with the file and the field path,
+/// e.g. `scene.json: elements[2].animation.keys[0].t: expected a number in [0, 1], got 1.5`.
+SceneSpec load_scene(const std::filesystem::path& file);
+
+/// Same, from text in memory; relative art paths resolve against `base_dir`.
+SceneSpec parse_scene(const std::string& text, const std::filesystem::path& file_for_messages,
+                      const std::filesystem::path& base_dir);
+
+}  // namespace animpak

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs every dependency animpak needs from Debian 12 packages. Idempotent: packages already present
+# are left alone, and apt is not touched at all when nothing is missing. Runs as root or through sudo,
+# never asks a question (CI has no standard input).
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  # OpenCL: C headers, C++ bindings, ICD loader, the PoCL CPU device, clinfo for diagnosis
+  opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd clinfo
+  # geometry and maths
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpolyclipping-dev
+  # input: SVG (svgpp over libxml2), JSON, command line
+  libsvgpp-dev libxml2-dev nlohmann-json3-dev libcli11-dev
+  # output: vector rasterisation, image files, video
+  libcairo2-dev libopenimageio-dev ffmpeg
+  # tests: Catch2 v2, and the real-world SVG test bed
+  catch2 openclipart-svg
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: error: not root and no sudo; run as root" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,42 @@
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "animpak/params.hpp"
+
+using namespace animpak;
+
+TEST_CASE("param_table: every entry is unique, in range at its default, and documented") {
+  const Params defaults;
+  std::ifstream doc(std::string(ANIMPAK_SOURCE_DIR) + "/docs/parameters.md");
+  REQUIRE(doc.good());
+  std::stringstream text;
+  text << doc.rdbuf();
+  std::set<std::string> names;
+  for (const ParamInfo& info : param_table()) {
+    INFO(info.name);
+    CHECK(names.insert(std::string(info.name)).second);
+    const double v = param_value(defaults, info);
+    CHECK(v >= info.min);
+    CHECK(v <= info.max);
+    CHECK(text.str().find("`" + std::string(info.name) + "`") != std::string::npos);
+  }
+  CHECK(names.size() == param_table().size());
+}
+
+TEST_CASE("param_table: writing through an entry changes exactly that member") {
+  for (const ParamInfo& info : param_table()) {
+    INFO(info.name);
+    Params p;
+    std::visit([&](auto member) { p.*member = static_cast<std::remove_reference_t<decltype(p.*member)>>(
+                                      param_value(p, info) + 1); },
+               info.member);
+    CHECK(param_value(p, info) == param_value(Params{}, info) + 1);
+    int changed = 0;
+    for (const ParamInfo& other : param_table()) changed += param_value(p, other) != param_value(Params{}, other);
+    CHECK(changed == 1);
+  }
+}
