@@ -14,7 +14,9 @@ find_package(CLI11 2.1 REQUIRED)                     # command line
 if(ANIMPAK_RENDERING)
   pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)    # anti-aliased vector rasterisation
   add_library(animpak::cairo ALIAS PkgConfig::CAIRO)
-  find_package(OpenImageIO 2.4 REQUIRED)                     # PNG output, image comparison
+  # Through pkg-config: Debian 12's OpenImageIO CMake config names tools from another package.
+  pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO>=2.4)   # PNG output, image comparison
+  add_library(animpak::oiio ALIAS PkgConfig::OIIO)
 endif()
 
 if(ANIMPAK_BUILD_TESTS)

@@ -1,0 +1,56 @@
+// Drawing: anti-aliased vector pictures with Cairo, written as image files with OpenImageIO.
+// This library sits beside the solver core, never under it (design.md): nothing in src/solver
+// includes this header.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "animpak/element.hpp"
+#include "animpak/io.hpp"
+
+namespace animpak {
+
+/// Replayed art: point k of polyline q of path p, as ArtShape::paths[p].polylines[q].points[k].
+using ArtPoints = std::vector<std::vector<std::vector<Vec2>>>;
+
+/// An RGBA raster with a world-to-pixel mapping: `world` is fitted into the picture with a margin,
+/// keeping its aspect ratio; y points down in both.
+class Picture {
+ public:
+  Picture(int width, int height, Box world, Rgba background = {1, 1, 1, 1}, double margin_px = 8.0);
+  ~Picture();
+  Picture(Picture&&) noexcept;
+  Picture& operator=(Picture&&) noexcept;
+
+  int width() const;
+  int height() const;
+  Vec2 to_pixel(Vec2 world) const;
+
+  /// Paints the art's paths in drawing order, each fill and stroke in its paint order.
+  /// `points` replaces the art's own coordinates (e.g. replayed on a deformed slice).
+  void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0);
+  /// Line segments between positions[e[0]] and positions[e[1]]; width in pixels.
+  void draw_edges(const std::vector<Vec2>& positions, const std::vector<Edge>& edges, Rgba color,
+                  double width_px, bool dashed = false);
+  /// A closed polygon outline.
+  void draw_ring(const std::vector<Vec2>& ring, Rgba color, double width_px);
+  void draw_dots(const std::vector<Vec2>& positions, Rgba color, double radius_px);
+  /// Straight (non-premultiplied) 8-bit RGBA, row-major, top row first.
+  std::vector<unsigned char> rgba8() const;
+  /// Writes any format OpenImageIO knows by extension (.png, .exr, .tif, …).
+  void write(const std::filesystem::path& file) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The pictures `animpak inspect --out` writes for one element, each `size` pixels high:
+/// <name>-slice.png (edge classes coloured, like paper Fig. 2c), <name>-art.png (the art replayed
+/// over the slice), <name>-strip.png (slices across the animation). Returns the files written.
+std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement& element,
+                                                          const std::filesystem::path& dir, int size);
+
+}  // namespace animpak
