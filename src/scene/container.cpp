@@ -1,0 +1,129 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "animpak/error.hpp"
+#include "animpak/scene.hpp"
+
+namespace animpak {
+namespace {
+
+bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
+  // Even–odd crossing test; the half-open rule counts a vertex on the ray once.
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 a = ring[i], b = ring[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+  }
+  return inside;
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double s = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + s * ab));
+}
+
+double ring_distance(const std::vector<Vec2>& ring, Vec2 p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < ring.size(); ++i) d = std::min(d, segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
+  return d;
+}
+
+std::string where(const ArtShape& art, int index) {
+  return art.source.string() + ": path " + std::to_string(index);
+}
+
+const ArtPath* find_source(const ArtShape& art, int index) {
+  for (const ArtPath& p : art.paths)
+    if (p.source_index == index) return &p;
+  return nullptr;
+}
+
+// The largest closed polyline of a path: a container path is one ring.
+std::vector<Vec2> ring_of(const ArtShape& art, const ArtPath& path) {
+  const Polyline* best = nullptr;
+  for (const Polyline& l : path.polylines)
+    if (!best || std::abs(signed_area(l.points)) > std::abs(signed_area(best->points))) best = &l;
+  if (!best || best->points.size() < 3 || std::abs(signed_area(best->points)) <= 0.0)
+    throw InputError(where(art, path.source_index) + " (" + path.id +
+                     "): has no area; a container outline or hole must be a closed shape with at least 3 points");
+  return best->points;
+}
+
+}  // namespace
+
+bool Container::contains(Vec2 p) const {
+  if (!ring_contains(outline, p)) return false;
+  return std::none_of(holes.begin(), holes.end(), [&](const auto& h) { return ring_contains(h, p); });
+}
+
+double Container::distance_to_boundary(Vec2 p) const {
+  double d = ring_distance(outline, p);
+  for (const auto& h : holes) d = std::min(d, ring_distance(h, p));
+  return d;
+}
+
+double Container::area() const {
+  double a = std::abs(signed_area(outline));
+  for (const auto& h : holes) a -= std::abs(signed_area(h));
+  return a;
+}
+
+Container make_container(const ArtShape& art, const ContainerSpec& spec) {
+  std::vector<int> hole_indices;
+  if (spec.holes) {
+    hole_indices = *spec.holes;
+  } else {
+    for (const ArtPath& p : art.paths)
+      if (p.path_type == 7) hole_indices.push_back(p.source_index);
+  }
+  std::vector<std::vector<Vec2>> hole_rings;
+  for (int h : hole_indices) {
+    const ArtPath* path = find_source(art, h);
+    if (!path) throw InputError(where(art, h) + ": container.holes names a path the file does not have");
+    hole_rings.push_back(ring_of(art, *path));
+  }
+
+  std::vector<Vec2> outline;
+  if (spec.outline) {
+    const ArtPath* path = find_source(art, *spec.outline);
+    if (!path) throw InputError(where(art, *spec.outline) + ": container.outline names a path the file does not have");
+    outline = ring_of(art, *path);
+  } else {
+    double best = 0.0;
+    for (const ArtPath& p : art.paths) {
+      if (std::find(hole_indices.begin(), hole_indices.end(), p.source_index) != hole_indices.end()) continue;
+      for (const Polyline& l : p.polylines)
+        if (l.closed && l.points.size() >= 3 && std::abs(signed_area(l.points)) > best)
+          best = std::abs(signed_area(l.points)), outline = l.points;
+    }
+    if (outline.empty())
+      throw InputError(art.source.string() +
+                       ": no closed path to use as the container outline; draw a closed shape or set container.outline");
+  }
+
+  Box box;
+  for (Vec2 p : outline) box.add(p);
+  Container c;
+  c.frame.art_origin = box.min;
+  c.frame.scale = 1.0 / std::max(box.width(), box.height());
+  c.frame.unit_origin = {0.5 * (1.0 - box.width() * c.frame.scale), 0.5 * (1.0 - box.height() * c.frame.scale)};
+  for (Vec2 p : outline) c.outline.push_back(c.frame.to_unit(p));
+  for (std::size_t i = 0; i < hole_rings.size(); ++i) {
+    std::vector<Vec2> ring;
+    for (Vec2 p : hole_rings[i]) ring.push_back(c.frame.to_unit(p));
+    if (!std::all_of(ring.begin(), ring.end(), [&](Vec2 p) { return ring_contains(c.outline, p); }))
+      throw InputError(where(art, hole_indices[i]) + ": the hole is not inside the container outline");
+    c.holes.push_back(std::move(ring));
+  }
+  c.art = art;
+  for (ArtPath& p : c.art.paths)
+    for (Polyline& l : p.polylines)
+      for (Vec2& q : l.points) q = c.frame.to_unit(q);
+  return c;
+}
+
+}  // namespace animpak

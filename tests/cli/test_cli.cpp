@@ -1,0 +1,76 @@
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include "run_animpak.hpp"
+
+TEST_CASE("animpak: --help for the program and every command exits 0 and describes it") {
+  for (const std::string args : {"--help", "inspect --help"}) {
+    INFO(args);
+    const CommandResult r = run_animpak(args);
+    CHECK(r.code == 0);
+    CHECK(r.out.find("Usage") != std::string::npos);
+  }
+  CHECK(run_animpak("--help").out.find("inspect") != std::string::npos);
+  CHECK(run_animpak("--version").out.find("animpak 0.1.0") != std::string::npos);
+}
+
+TEST_CASE("animpak: usage errors exit 1 with one line saying what is wrong") {
+  CHECK(run_animpak("").code == 1);
+  CHECK(run_animpak("frobnicate").code == 1);
+  const CommandResult r = run_animpak("inspect --no-such-flag x.svg");
+  CHECK(r.code == 1);
+  CHECK(r.err.find("--no-such-flag") != std::string::npos);
+  CHECK(run_animpak("inspect " + shapes_dir() + "/bird.path --slices 1").code == 1);
+}
+
+TEST_CASE("animpak inspect: a missing or unsupported file exits 2 and names it") {
+  const CommandResult missing = run_animpak("inspect /nonexistent/bird.svg");
+  CHECK(missing.code == 2);
+  CHECK(missing.err.rfind("animpak: error: ", 0) == 0);
+  CHECK(missing.err.find("/nonexistent/bird.svg") != std::string::npos);
+  const CommandResult unsupported = run_animpak("inspect " + std::string(ANIMPAK_SOURCE_DIR) + "/CMakeLists.txt");
+  CHECK(unsupported.code == 2);
+  CHECK(unsupported.err.find("CMakeLists.txt") != std::string::npos);
+}
+
+TEST_CASE("animpak inspect --json: counts follow the extrusion formulas") {
+  const int slices = 7;
+  const CommandResult r = run_animpak("inspect " + shapes_dir() + "/bird.path --json --slices " + std::to_string(slices));
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  REQUIRE(report["elements"].size() == 1);
+  const auto& e = report["elements"][0];
+  CHECK(e["name"] == "bird");
+  const int per_slice = e["vertices_per_slice"];
+  CHECK(e["vertices"] == slices * per_slice);
+  const int time = e["springs"]["time"];
+  const int envelope = e["envelope_triangles"];
+  // 3 time edges and 2 envelope triangles per boundary edge and slice gap (paper §3.1)
+  CHECK(time % (3 * (slices - 1)) == 0);
+  CHECK(envelope * 3 == time * 2);
+  CHECK(e["springs"]["edge"].get<int>() % slices == 0);
+  CHECK(e["springs"]["shear"].get<int>() % slices == 0);
+  CHECK(e["springs"]["negative_space"].get<int>() % slices == 0);
+}
+
+TEST_CASE("animpak inspect --out: writes the slice, art and strip pictures of every element") {
+  const auto dir = std::filesystem::temp_directory_path() / ("animpak-inspect-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const CommandResult r = run_animpak("inspect " + shapes_dir() + "/snake.path --slices 4 --size 64 --out " + dir.string());
+  REQUIRE(r.code == 0);
+  for (const char* suffix : {"-slice.png", "-art.png", "-strip.png"}) {
+    INFO(suffix);
+    CHECK(std::filesystem::file_size(dir / (std::string("snake") + suffix)) > 100);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("animpak inspect: the default example scene builds every library element") {
+  const CommandResult r =
+      run_animpak("inspect " + std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/scene.json --json --slices 4");
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  REQUIRE(report["elements"].size() >= 1);
+  for (const auto& e : report["elements"]) CHECK(e["vertices"].get<int>() > 0);
+}
