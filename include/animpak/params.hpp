@@ -18,6 +18,7 @@ struct Params {
 
   // §4 initial configuration
   double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
+  double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
 
   // §5 forces
   double k_repulsion = 10.0;        ///< Eq. 1

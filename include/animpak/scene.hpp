@@ -8,6 +8,7 @@
 #include "animpak/io.hpp"
 #include "animpak/random.hpp"
 #include "animpak/scene_spec.hpp"
+#include "animpak/solver.hpp"
 
 namespace animpak {
 
@@ -35,5 +36,41 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec);
 /// Blue-noise (Poisson-disk, Bridson) points inside the container, at least `min_distance` apart and
 /// at least `margin` from the boundary, in generation order. Deterministic for the generator's state.
 std::vector<Vec2> poisson_disk(const Container& container, double min_distance, double margin, Rng& rng);
+
+/// One element in the container: a library element, shrunk, oriented and placed.
+struct ElementInstance {
+  std::string name;       ///< "<library name>#<k>" for unguided elements, the guided name otherwise
+  int library = 0;        ///< index into World::library
+  bool guided = false;
+  int vertex_begin = 0;   ///< its first global vertex id
+  int slice_begin = 0;    ///< its first global slice id
+  Vec2 position;          ///< unit coordinates of its seed (unguided) or first target (guided)
+  double angle = 0.0;     ///< radians, clockwise on screen
+};
+
+/// Everything a simulation starts from.
+struct World {
+  Container container;
+  std::vector<SpacetimeElement> library;  ///< built once per library entry, full size, animated
+  std::vector<ElementInstance> elements;
+  Topology topology;
+  SimState state;  ///< the initial state: shrunken elements at rest, g = 1
+  Params params;
+  std::uint64_t seed = 1;
+  bool loop = true;
+  std::vector<std::string> notes;  ///< what set-up decided, one line each (seed spacing, rejections)
+};
+
+/// Places the elements of `scene` (paper §4): guided elements along their targets, unguided ones on
+/// blue-noise seeds, each shrunk to params.initial_scale; then checks that nothing overlaps and that
+/// every element is inside the container. InputError names the elements (and slice) at fault.
+World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library);
+
+/// The seed of library element `index`'s slice sampling: independent per element, so adding an
+/// element does not change the others.
+std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index);
+
+/// Loads the scene's art, builds the library elements and calls build_world.
+World make_world(const SceneSpec& scene);
 
 }  // namespace animpak

@@ -4,6 +4,7 @@
 // All simulation arithmetic is float, in an order both backends share (equivalence by construction).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -68,6 +69,11 @@ struct Topology {
 
   ContainerGeometry container;
 
+  // the shrunken reference copy (§5.3): rest lengths are measured on it, each slice scaled by its g
+  // about the slice's reference centroid
+  std::vector<float> ref_x, ref_y, ref_t;     ///< per vertex
+  std::vector<float> slice_ref_cx, slice_ref_cy;  ///< per global slice
+
   std::int32_t vertex_count() const { return static_cast<std::int32_t>(element.size()); }
   std::int32_t slice_count() const { return static_cast<std::int32_t>(slice_boundary.size()); }
   std::int32_t element_count() const { return static_cast<std::int32_t>(element_slice_begin.size()) - 1; }
@@ -82,5 +88,20 @@ struct SimState {
   std::vector<float> growth;      ///< g per global slice (§5.3)
   std::uint64_t iteration = 0;
 };
+
+/// §5.3: the rest length of CSR slot `slot` of vertex `v`: the distance between the spring's two ends
+/// in the reference copy, each end's slice scaled by its g about that slice's reference centroid. Time
+/// springs join two slices with different g; the t distance is not scaled.
+inline float reference_rest_length(const Topology& topo, const std::vector<float>& growth, std::int32_t v,
+                                   std::int32_t slot) {
+  const std::int32_t w = topo.spring_other[slot];
+  const std::int32_t sv = topo.slice[v], sw = topo.slice[w];
+  const float xv = topo.slice_ref_cx[sv] + growth[sv] * (topo.ref_x[v] - topo.slice_ref_cx[sv]);
+  const float yv = topo.slice_ref_cy[sv] + growth[sv] * (topo.ref_y[v] - topo.slice_ref_cy[sv]);
+  const float xw = topo.slice_ref_cx[sw] + growth[sw] * (topo.ref_x[w] - topo.slice_ref_cx[sw]);
+  const float yw = topo.slice_ref_cy[sw] + growth[sw] * (topo.ref_y[w] - topo.slice_ref_cy[sw]);
+  const float dx = xw - xv, dy = yw - yv, dt = topo.ref_t[w] - topo.ref_t[v];
+  return std::sqrt(dx * dx + dy * dy + dt * dt);
+}
 
 }  // namespace animpak

@@ -6,7 +6,7 @@
 #include "animpak/animation.hpp"
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
-#include "animpak/scene_spec.hpp"
+#include "animpak/scene.hpp"
 #include "commands.hpp"
 
 namespace animpak::cli {
@@ -21,14 +21,6 @@ std::string lower_extension(const std::filesystem::path& p) {
   std::string ext = p.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
-}
-
-// One element seed per library entry, so that adding an element does not reshuffle the others.
-std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index) {
-  std::uint64_t z = scene_seed + 0x9e3779b97f4a7c15ull * (index + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
 }
 
 std::vector<Built> build_all(const InspectOptions& options) {

@@ -1,0 +1,104 @@
+#include "placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "animpak/error.hpp"
+
+namespace animpak::scene_detail {
+namespace {
+
+Vec2 rotate(Vec2 v, double angle) {
+  // y points down, so the usual rotation matrix turns clockwise on screen for a positive angle.
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+Vec2 slice_vertex(const SpacetimeElement& e, int s, int v) { return {e.x[e.id(s, v)], e.y[e.id(s, v)]}; }
+
+int library_index(const SceneSpec& scene, const std::string& name) {
+  for (std::size_t i = 0; i < scene.elements.size(); ++i)
+    if (scene.elements[i].name == name) return static_cast<int>(i);
+  throw InputError(scene.file.string() + ": guided element names library element \"" + name +
+                   "\", which the scene does not define");
+}
+
+// Piecewise-linear interpolation of the targets at time t (paper §4: the initial guided path is a
+// polygonal extrusion); missing scale is 1 and missing angle 0.
+struct TargetSample {
+  Vec2 position;
+  double scale, angle;
+};
+TargetSample sample_targets(const std::vector<TargetSpec>& targets, const Container& c, double t) {
+  std::size_t k = 0;
+  while (k + 2 < targets.size() && targets[k + 1].t <= t) ++k;
+  const TargetSpec& a = targets[k];
+  const TargetSpec& b = targets[std::min(k + 1, targets.size() - 1)];
+  const double span = b.t - a.t;
+  const double w = span > 0 ? std::clamp((t - a.t) / span, 0.0, 1.0) : 0.0;
+  auto mix = [&](double u, double v) { return u + w * (v - u); };
+  const Vec2 pa = c.frame.to_unit({a.x, a.y}), pb = c.frame.to_unit({b.x, b.y});
+  return {{mix(pa.x, pb.x), mix(pa.y, pb.y)},
+          mix(a.scale.value_or(1.0), b.scale.value_or(1.0)),
+          mix(a.angle.value_or(0.0), b.angle.value_or(0.0)) * std::numbers::pi / 180.0};
+}
+
+}  // namespace
+
+Vec2 apply(const Placement& p, int slice, Vec2 q) {
+  return p.offset[slice] + p.scale[slice] * rotate(q - p.pivot, p.angle[slice]);
+}
+
+Vec2 rest_centroid(const SpacetimeElement& e) {
+  std::vector<Vec2> ring(e.slice.vertices.begin(), e.slice.vertices.begin() + e.slice.boundary_count);
+  const double a = signed_area(ring);
+  Vec2 c;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 p = ring[i], q = ring[(i + 1) % ring.size()];
+    c = c + cross(p, q) * (p + q);
+  }
+  return (1.0 / (6.0 * a)) * c;
+}
+
+std::vector<Placement> place_guided(const SceneSpec& scene, const Container& container,
+                                    const std::vector<SpacetimeElement>& library, std::vector<std::string>& notes) {
+  std::vector<Placement> out;
+  for (const GuidedSpec& g : scene.guided) {
+    Placement p;
+    p.library = library_index(scene, g.element);
+    p.name = g.name;
+    p.guided = true;
+    const SpacetimeElement& e = library[p.library];
+    p.pivot = rest_centroid(e);
+    // The anchor is the slice vertex closest to the centroid (paper §4).
+    double best = 1e300;
+    for (int v = 0; v < e.vertices_per_slice(); ++v)
+      if (const double d = norm(e.slice.vertices[v] - p.pivot); d < best) best = d, p.anchor = v;
+    for (int s = 0; s < e.slice_count; ++s) {
+      const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
+      const TargetSample target = sample_targets(g.targets, container, t);
+      const double scale = scene.params.initial_scale * target.scale;
+      const Vec2 anchor = slice_vertex(e, s, p.anchor);
+      p.scale.push_back(scale);
+      p.angle.push_back(target.angle);
+      p.offset.push_back(target.position - scale * rotate(anchor - p.pivot, target.angle));
+      p.targets.push_back({static_cast<float>(target.position.x), static_cast<float>(target.position.y), t});
+    }
+    out.push_back(std::move(p));
+  }
+  for (std::size_t i = 0; i < scene.guided.size(); ++i) {
+    if (!scene.loop) continue;
+    const std::string& to = scene.guided[i].loop_to.empty() ? scene.guided[i].name : scene.guided[i].loop_to;
+    for (std::size_t j = 0; j < out.size(); ++j)
+      if (out[j].name == to) out[i].loop_partner = static_cast<int>(j);
+    if (out[i].loop_partner >= 0 && out[out[i].loop_partner].library != out[i].library)
+      throw InputError(scene.file.string() + ": guided[" + std::to_string(i) + "].loop_to: \"" + to +
+                       "\" uses another library element; a loop joins slices vertex to vertex, so both must use "
+                       "the same element");
+  }
+  if (!out.empty()) notes.push_back("placed " + std::to_string(out.size()) + " guided element(s)");
+  return out;
+}
+
+}  // namespace animpak::scene_detail

@@ -1,0 +1,42 @@
+// Internal to src/scene: where every instance goes, before the topology is assembled.
+#pragma once
+
+#include <vector>
+
+#include "animpak/scene.hpp"
+
+namespace animpak::scene_detail {
+
+/// Per-slice similarity transform of one instance: p' = offset[s] + scale[s] · R(angle[s]) · (p − pivot).
+struct Placement {
+  int library = 0;
+  std::string name;
+  bool guided = false;
+  Vec2 pivot;  ///< the library element's rest centroid (unit element coordinates)
+  std::vector<Vec2> offset;
+  std::vector<double> scale, angle;
+  int anchor = -1;  ///< slice vertex pulled to the targets (guided only)
+  std::vector<Vec3f> targets;  ///< per slice (guided only)
+  int loop_partner = -1;       ///< instance whose first slice this one's last slice meets
+};
+
+Vec2 apply(const Placement& p, int slice, Vec2 q);
+
+/// Area centroid of the boundary ring of the rest slice.
+Vec2 rest_centroid(const SpacetimeElement& e);
+
+/// Guided placements, in scene order.
+std::vector<Placement> place_guided(const SceneSpec& scene, const Container& container,
+                                    const std::vector<SpacetimeElement>& library, std::vector<std::string>& notes);
+
+/// Unguided placements on blue-noise seeds, avoiding the guided elements' trajectories.
+std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
+                                      const std::vector<SpacetimeElement>& library,
+                                      const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes);
+
+/// Throws InputError naming the elements and slice where two shrunken elements overlap or one leaves
+/// the container.
+void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
+                      const std::vector<Placement>& placements);
+
+}  // namespace animpak::scene_detail

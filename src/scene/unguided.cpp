@@ -1,0 +1,194 @@
+// Unguided elements (paper §4): blue-noise seeds, a library pick per seed, an orientation, and the
+// checks that the shrunken elements neither overlap nor leave the container.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "animpak/error.hpp"
+#include "placement.hpp"
+
+namespace animpak::scene_detail {
+namespace {
+
+Vec2 slice_vertex(const SpacetimeElement& e, int s, int v) { return {e.x[e.id(s, v)], e.y[e.id(s, v)]}; }
+
+double orientation(const OrientationSpec& o, const Container& c, Vec2 p, Rng& rng) {
+  constexpr double deg = std::numbers::pi / 180.0;
+  if (o.mode == OrientationMode::random) return rng.uniform(0.0, 2.0 * std::numbers::pi);
+  if (o.mode == OrientationMode::fixed || o.field == FieldKind::constant) return o.angle * deg;
+  const Vec2 d = p - c.frame.to_unit(o.center);
+  const double radial = std::atan2(d.y, d.x);
+  return o.field == FieldKind::radial ? radial : radial + 0.5 * std::numbers::pi;
+}
+
+// Seeds at least `spacing` from every guided element's anchor path: the paper rejects seeds whose
+// element would cross a guided element's volume, and `spacing` is the room each element gets.
+std::vector<Vec2> free_seeds(const Container& c, double spacing, double margin, const std::vector<Placement>& guided,
+                             Rng& rng) {
+  std::vector<Vec2> seeds = poisson_disk(c, spacing, margin, rng);
+  std::erase_if(seeds, [&](Vec2 p) {
+    for (const Placement& g : guided)
+      for (const Vec3f& t : g.targets)
+        if (norm(p - Vec2{t.x, t.y}) < spacing) return true;
+    return false;
+  });
+  return seeds;
+}
+
+template <class T>
+void shuffle(std::vector<T>& v, Rng& rng) {
+  for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
+}
+
+}  // namespace
+
+std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
+                                      const std::vector<SpacetimeElement>& library,
+                                      const std::vector<Placement>& guided, Rng& rng,
+                                      std::vector<std::string>& notes) {
+  const std::string file = scene.file.string();
+  int fixed = 0;
+  std::vector<int> weighted;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    if (scene.elements[i].count) fixed += *scene.elements[i].count;
+    else if (scene.elements[i].weight > 0) weighted.push_back(static_cast<int>(i));
+  }
+  const bool fill = !scene.count && !weighted.empty();
+  const int wanted = scene.count ? *scene.count : fixed;
+  if (scene.count && wanted < fixed)
+    throw InputError(file + ": count: " + std::to_string(wanted) + " is less than the elements' own counts (" +
+                     std::to_string(fixed) + "); raise count or lower the per-element counts");
+  if (scene.count && wanted > fixed && weighted.empty())
+    throw InputError(file + ": count: " + std::to_string(wanted) + " differs from the sum of the elements' counts (" +
+                     std::to_string(fixed) + ") and no element has a weight to fill the rest");
+
+  // The margin keeps a shrunken element inside the container whatever its orientation.
+  double radius = 0.0;
+  for (const SpacetimeElement& e : library) {
+    const Vec2 c = rest_centroid(e);
+    for (int s = 0; s < e.slice_count; ++s)
+      for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(slice_vertex(e, s, v) - c));
+  }
+  const double margin = 1.05 * scene.params.initial_scale * radius;
+
+  std::vector<Vec2> seeds;
+  double spacing = scene.params.seed_spacing;
+  if (fill) {
+    seeds = free_seeds(container, spacing, margin, guided, rng);
+  } else if (wanted > 0) {
+    // Start from the spacing of a hexagonal packing of `wanted` discs and tighten until they fit.
+    spacing = std::sqrt(0.8 * container.area() / wanted);
+    for (int attempt = 0; attempt < 60; ++attempt, spacing *= 0.93) {
+      Rng trial = rng.split();
+      seeds = free_seeds(container, spacing, margin, guided, trial);
+      if (static_cast<int>(seeds.size()) >= wanted) break;
+    }
+    if (static_cast<int>(seeds.size()) < wanted)
+      throw InputError(file + ": count: only " + std::to_string(seeds.size()) + " of " + std::to_string(wanted) +
+                       " elements fit in the container at initial_scale " + std::to_string(scene.params.initial_scale) +
+                       "; lower count or params.initial_scale");
+    shuffle(seeds, rng);
+    seeds.resize(wanted);
+  }
+  if (static_cast<int>(seeds.size()) < fixed)
+    throw InputError(file + ": the elements' counts ask for " + std::to_string(fixed) + " elements but only " +
+                     std::to_string(seeds.size()) + " seeds fit at params.seed_spacing " + std::to_string(spacing) +
+                     "; lower the counts or the spacing");
+
+  // Library picks: every fixed count, then the rest by weight; shuffled so kinds mix in space.
+  std::vector<int> picks;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i)
+    for (int k = 0; k < scene.elements[i].count.value_or(0); ++k) picks.push_back(static_cast<int>(i));
+  double total_weight = 0.0;
+  for (int i : weighted) total_weight += scene.elements[i].weight;
+  while (picks.size() < seeds.size()) {
+    double u = rng.uniform() * total_weight;
+    int pick = weighted.back();
+    for (int i : weighted)
+      if ((u -= scene.elements[i].weight) < 0) {
+        pick = i;
+        break;
+      }
+    picks.push_back(pick);
+  }
+  shuffle(picks, rng);
+
+  std::vector<Placement> out;
+  std::vector<int> per_library(library.size(), 0);
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const SpacetimeElement& e = library[picks[k]];
+    Placement p;
+    p.library = picks[k];
+    p.name = e.name + "#" + std::to_string(++per_library[picks[k]]);
+    p.pivot = rest_centroid(e);
+    const double angle = orientation(scene.orientation, container, seeds[k], rng);
+    p.offset.assign(e.slice_count, seeds[k]);
+    p.scale.assign(e.slice_count, scene.params.initial_scale);
+    p.angle.assign(e.slice_count, angle);
+    out.push_back(std::move(p));
+  }
+  notes.push_back("seeded " + std::to_string(out.size()) + " unguided element(s) at spacing " +
+                  std::to_string(spacing) + (fill ? " (fill)" : ""));
+  return out;
+}
+
+namespace {
+
+bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+    if ((ring[i].y > p.y) != (ring[j].y > p.y) &&
+        p.x < (ring[j].x - ring[i].x) * (p.y - ring[i].y) / (ring[j].y - ring[i].y) + ring[i].x)
+      inside = !inside;
+  return inside;
+}
+
+bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+bool rings_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  if (ring_contains(b, a[0]) || ring_contains(a, b[0])) return true;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
+  return false;
+}
+
+}  // namespace
+
+void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
+                      const std::vector<Placement>& placements) {
+  const std::size_t n = placements.size();
+  std::vector<std::vector<std::vector<Vec2>>> rings(n);  // [instance][slice] → boundary ring
+  std::vector<Box> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SpacetimeElement& e = library[placements[i].library];
+    for (int s = 0; s < e.slice_count; ++s) {
+      std::vector<Vec2> ring;
+      for (int v = 0; v < e.slice.boundary_count; ++v) {
+        const Vec2 p = apply(placements[i], s, slice_vertex(e, s, v));
+        if (!container.contains(p))
+          throw InputError("element " + placements[i].name + " lies outside the container at slice " +
+                           std::to_string(s) + " after shrinking; move its seed or targets inward");
+        ring.push_back(p);
+        boxes[i].add(p);
+      }
+      rings[i].push_back(std::move(ring));
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (boxes[i].max.x < boxes[j].min.x || boxes[j].max.x < boxes[i].min.x || boxes[i].max.y < boxes[j].min.y ||
+          boxes[j].max.y < boxes[i].min.y)
+        continue;
+      for (std::size_t s = 0; s < rings[i].size(); ++s)
+        if (rings_overlap(rings[i][s], rings[j][s]))
+          throw InputError("elements " + placements[i].name + " and " + placements[j].name +
+                           " overlap at slice " + std::to_string(s) +
+                           " after shrinking; lower params.initial_scale or move their seeds or targets apart");
+    }
+}
+
+}  // namespace animpak::scene_detail
