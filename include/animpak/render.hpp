@@ -9,6 +9,7 @@
 
 #include "animpak/element.hpp"
 #include "animpak/io.hpp"
+#include "animpak/scene.hpp"
 
 namespace animpak {
 
@@ -52,5 +53,47 @@ class Picture {
 /// over the slice), <name>-strip.png (slices across the animation). Returns the files written.
 std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement& element,
                                                           const std::filesystem::path& dir, int size);
+
+/// Slice vertex positions of element instance `element` at frame time tf (paper §6): linear
+/// interpolation between the two consecutive slices whose current t values bracket tf.
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf);
+
+/// The frame times of a `count`-frame animation: i / count when looping (frame `count` would repeat
+/// frame 0), i / (count − 1) otherwise.
+std::vector<double> frame_times(int count, bool loop);
+
+struct FrameStyle {
+  int size = 512;                  ///< picture height in pixels; the width follows the container's aspect
+  Rgba background{1, 1, 1, 1};
+  bool draw_container = true;      ///< the outline and holes, thin grey
+};
+
+/// One frame: every element's art replayed on its interpolated slice, in element order.
+Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style);
+
+/// Quality of one frame, measured on the elements' slice boundaries (their offset outlines) and on
+/// the rasterized art.
+struct FrameMetrics {
+  double t = 0.0;
+  double coverage = 0.0;   ///< share of the container's area covered by elements' art
+  double min_gap = 0.0;    ///< smallest distance between two elements' boundaries
+  double mean_gap = 0.0;   ///< mean over elements of the distance to the nearest other element
+  int overlapping_pairs = 0;
+};
+FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
+
+enum class FrameFormat { png, gif, mp4, svg };
+
+struct FrameOutput {
+  std::filesystem::path dir;
+  int count = 100;
+  double fps = 25.0;
+  std::vector<FrameFormat> formats{FrameFormat::png, FrameFormat::gif};
+  FrameStyle style;
+};
+
+/// Writes `count` frames one at a time (never all in memory): frames/frame_NNNN.png (and .svg), then
+/// animation.gif / animation.mp4 through ffmpeg. Returns the metrics of every frame.
+std::vector<FrameMetrics> write_frames(const World& world, const SimState& state, const FrameOutput& out);
 
 }  // namespace animpak

@@ -9,29 +9,6 @@
 namespace animpak {
 namespace {
 
-bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
-  // Even–odd crossing test; the half-open rule counts a vertex on the ray once.
-  bool inside = false;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Vec2 a = ring[i], b = ring[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-  }
-  return inside;
-}
-
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double s = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + s * ab));
-}
-
-double ring_distance(const std::vector<Vec2>& ring, Vec2 p) {
-  double d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < ring.size(); ++i) d = std::min(d, segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
-  return d;
-}
-
 std::string where(const ArtShape& art, int index) {
   return art.source.string() + ": path " + std::to_string(index);
 }

@@ -132,32 +132,6 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
   return out;
 }
 
-namespace {
-
-bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-    if ((ring[i].y > p.y) != (ring[j].y > p.y) &&
-        p.x < (ring[j].x - ring[i].x) * (p.y - ring[i].y) / (ring[j].y - ring[i].y) + ring[i].x)
-      inside = !inside;
-  return inside;
-}
-
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
-}
-
-bool rings_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  if (ring_contains(b, a[0]) || ring_contains(a, b[0])) return true;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j)
-      if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
-  return false;
-}
-
-}  // namespace
-
 void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
                       const std::vector<Placement>& placements) {
   const std::size_t n = placements.size();

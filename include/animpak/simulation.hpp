@@ -1,0 +1,52 @@
+// The simulation loop (paper §5): a backend advances the state one step at a time; the Simulation
+// around it checks statistics every params.check_interval steps, stops on the paper's criteria and
+// keeps the last good state. Backends: the scalar reference (src/solver/reference) and OpenCL.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "animpak/params.hpp"
+#include "animpak/solver.hpp"
+
+namespace animpak {
+
+enum class StopReason { running, gap, growth, max_iterations, interrupted, non_finite };
+const char* stop_reason_name(StopReason r);
+
+/// Reduced statistics of the latest step (no full read-back needed).
+struct StepStatistics {
+  std::uint64_t iteration = 0;
+  float max_slice_gap = 0.0f;   ///< largest per-slice closest distance to another element (§5.3 stop test)
+  float min_slice_gap = 0.0f;
+  double growing_share = 0.0;   ///< share of slices whose g grew in the last step
+  std::int64_t overlapping_vertices = 0;
+  float min_growth = 1.0f, max_growth = 1.0f;
+  bool finite = true;           ///< every position and velocity is finite
+  std::int32_t first_bad_vertex = -1;  ///< when not finite
+};
+
+/// Seconds spent per phase, summed over steps.
+struct PhaseTimes {
+  double grid = 0, forces = 0, integrate = 0, constraints = 0, loop = 0, growth = 0, statistics = 0, transfer = 0;
+  double total() const { return grid + forces + integrate + constraints + loop + growth + statistics + transfer; }
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  /// One step: grid (every grid_rebuild_interval steps), forces, integration, per-element constraints,
+  /// the loop pass, growth and rest lengths.
+  virtual void step() = 0;
+  virtual StepStatistics statistics() = 0;
+  virtual SimState state() = 0;  ///< a full read-back (checkpoints, rendering)
+  virtual const PhaseTimes& times() const = 0;
+};
+
+/// The scalar reference backend: plain C++, the specification the kernels are tested against.
+std::unique_ptr<Backend> make_reference_backend(const Topology& topology, SimState initial, const Params& params);
+
+}  // namespace animpak

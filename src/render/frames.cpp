@@ -1,0 +1,59 @@
+#include <algorithm>
+#include <cmath>
+
+#include "animpak/render.hpp"
+
+namespace animpak {
+
+std::vector<double> frame_times(int count, bool loop) {
+  std::vector<double> t(count);
+  for (int i = 0; i < count; ++i) t[i] = loop ? double(i) / count : (count > 1 ? double(i) / (count - 1) : 0.0);
+  return t;
+}
+
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf) {
+  const ElementInstance& inst = world.elements[element];
+  const SpacetimeElement& lib = world.library[inst.library];
+  const int P = lib.vertices_per_slice(), n = lib.slice_count;
+  auto slice_t = [&](int s) { return double(state.t[inst.vertex_begin + s * P]); };
+  // Slices stay ordered (time springs) and flat (simultaneity), so the first vertex's t is the slice's.
+  int s = 0;
+  while (s < n - 2 && slice_t(s + 1) < tf) ++s;
+  const double t0 = slice_t(s), t1 = slice_t(s + 1);
+  const double w = t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
+  std::vector<Vec2> out(P);
+  for (int v = 0; v < P; ++v) {
+    const int a = inst.vertex_begin + s * P + v, b = a + P;
+    out[v] = {state.x[a] + w * (double(state.x[b]) - state.x[a]), state.y[a] + w * (double(state.y[b]) - state.y[a])};
+  }
+  return out;
+}
+
+namespace {
+
+Box container_box(const World& world) {
+  Box box;
+  for (Vec2 p : world.container.outline) box.add(p);
+  return box;
+}
+
+}  // namespace
+
+Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style) {
+  const Box box = container_box(world);
+  const int height = style.size;
+  const int width = std::max(1, static_cast<int>(std::lround(style.size * box.width() / std::max(box.height(), 1e-9))));
+  Picture pic(width, height, box, style.background, 0.02 * style.size);
+  for (std::size_t i = 0; i < world.elements.size(); ++i) {
+    const SpacetimeElement& lib = world.library[world.elements[i].library];
+    pic.draw_art(lib.art.art, replay_art(lib.binding, lib.slice, element_at(world, state, int(i), tf)));
+  }
+  if (style.draw_container) {
+    const double w = std::max(1.0, style.size / 400.0);
+    pic.draw_ring(world.container.outline, {0.55, 0.55, 0.55, 1}, w);
+    for (const auto& hole : world.container.holes) pic.draw_ring(hole, {0.55, 0.55, 0.55, 1}, w);
+  }
+  return pic;
+}
+
+}  // namespace animpak

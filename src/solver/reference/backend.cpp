@@ -1,0 +1,132 @@
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "animpak/reference.hpp"
+#include "animpak/simulation.hpp"
+
+namespace animpak {
+namespace {
+
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+class ReferenceBackend final : public Backend {
+ public:
+  ReferenceBackend(const Topology& topology, SimState initial, const Params& params)
+      : topo_(topology), state_(std::move(initial)), params_(params) {
+    slice_gap_.assign(topo_.slice_count(), std::numeric_limits<float>::infinity());
+    inside_.assign(topo_.vertex_count(), 0);
+  }
+
+  std::string name() const override { return "reference"; }
+
+  // One step in the order of design.md "One step"; each phase is timed on its own.
+  void step() override {
+    if (state_.iteration % static_cast<std::uint64_t>(params_.grid_rebuild_interval) == 0 || grid_.n == 0) {
+      Stopwatch w(times_.grid);
+      grid_ = reference::build_collision_grid(topo_, state_, params_);
+    }
+    reference::StepForces forces;
+    {
+      Stopwatch w(times_.forces);
+      forces = reference::step_forces(topo_, state_, params_, grid_, nullptr);
+    }
+    {
+      Stopwatch w(times_.integrate);
+      reference::integrate(forces.total, params_, state_);
+    }
+    {
+      Stopwatch w(times_.constraints);
+      for (std::int32_t e = 0; e < topo_.element_count(); ++e) {
+        reference::apply_end_to_end(topo_, state_, e);
+        reference::apply_simultaneity(topo_, state_, e);
+      }
+    }
+    {
+      Stopwatch w(times_.loop);
+      reference::apply_loop(topo_, state_);
+    }
+    {
+      Stopwatch w(times_.growth);
+      grown_ = reference::grow_slices(topo_, forces.inside, params_, state_, grew_);
+      reference::update_rest_lengths(topo_, grew_, state_);
+    }
+    {
+      Stopwatch w(times_.statistics);
+      for (std::int32_t s = 0; s < topo_.slice_count(); ++s) {
+        float gap = std::numeric_limits<float>::infinity();
+        for (std::int32_t v = topo_.slice_begin[s]; v < topo_.slice_begin[s + 1]; ++v)
+          gap = forces.closest[v] < gap ? forces.closest[v] : gap;
+        slice_gap_[s] = gap;
+      }
+      inside_ = std::move(forces.inside);
+    }
+    ++state_.iteration;
+  }
+
+  StepStatistics statistics() override {
+    Stopwatch w(times_.statistics);
+    StepStatistics st;
+    st.iteration = state_.iteration;
+    st.max_slice_gap = 0.0f;
+    st.min_slice_gap = std::numeric_limits<float>::infinity();
+    for (float g : slice_gap_) {
+      st.max_slice_gap = g > st.max_slice_gap ? g : st.max_slice_gap;
+      st.min_slice_gap = g < st.min_slice_gap ? g : st.min_slice_gap;
+    }
+    st.growing_share = topo_.slice_count() ? double(grown_) / topo_.slice_count() : 0.0;
+    for (std::uint8_t f : inside_) st.overlapping_vertices += f;
+    st.min_growth = st.max_growth = state_.growth.empty() ? 1.0f : state_.growth[0];
+    for (float g : state_.growth) {
+      st.min_growth = g < st.min_growth ? g : st.min_growth;
+      st.max_growth = g > st.max_growth ? g : st.max_growth;
+    }
+    for (std::int32_t v = 0; v < topo_.vertex_count() && st.finite; ++v) {
+      const bool ok = std::isfinite(state_.x[v]) && std::isfinite(state_.y[v]) && std::isfinite(state_.t[v]) &&
+                      std::isfinite(state_.vx[v]) && std::isfinite(state_.vy[v]) && std::isfinite(state_.vt[v]);
+      if (!ok) st.finite = false, st.first_bad_vertex = v;
+    }
+    return st;
+  }
+
+  SimState state() override { return state_; }
+  const PhaseTimes& times() const override { return times_; }
+
+ private:
+  Topology topo_;
+  SimState state_;
+  Params params_;
+  reference::CollisionGrid grid_;
+  std::vector<float> slice_gap_;
+  std::vector<std::uint8_t> inside_, grew_;
+  std::int32_t grown_ = 0;
+  PhaseTimes times_;
+};
+
+}  // namespace
+
+const char* stop_reason_name(StopReason r) {
+  switch (r) {
+    case StopReason::running: return "running";
+    case StopReason::gap: return "gap";
+    case StopReason::growth: return "growth";
+    case StopReason::max_iterations: return "max_iterations";
+    case StopReason::interrupted: return "interrupted";
+    case StopReason::non_finite: return "non_finite";
+  }
+  return "unknown";
+}
+
+std::unique_ptr<Backend> make_reference_backend(const Topology& topology, SimState initial, const Params& params) {
+  return std::make_unique<ReferenceBackend>(topology, std::move(initial), params);
+}
+
+}  // namespace animpak
