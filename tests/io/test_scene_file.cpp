@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <unistd.h>
@@ -324,4 +325,19 @@ TEST_CASE("parse_scene: total count disagreeing with the element counts") {
         "make them agree or use \"fill\"");
   CHECK(error_of(scene(R"([{"art": "bird.path", "count": 4}, {"art": "cat.path"}])", R"(, "count": 6)")) == "(no error)");
   CHECK(error_of(scene(kBird, R"(, "count": "all")")) == "scene.json: count: expected an integer or \"fill\", got \"all\"");
+}
+
+TEST_CASE("parse_scene: the example in docs/scene-format.md is valid") {
+  std::ifstream doc(std::string(ANIMPAK_SOURCE_DIR) + "/docs/scene-format.md");
+  REQUIRE(doc.good());
+  const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+  const std::size_t begin = text.find("```json\n");
+  REQUIRE(begin != std::string::npos);
+  const std::size_t end = text.find("```", begin + 8);
+  const SceneSpec s = parse_scene(text.substr(begin + 8, end - begin - 8), "scene-format.md",
+                                  std::filesystem::path(ANIMPAK_SOURCE_DIR) / "examples");
+  CHECK(s.elements.size() == 4);
+  CHECK(s.guided.size() == 2);
+  CHECK(s.orientation.field == FieldKind::tangential);
+  CHECK(s.params.k_torsion == 0.2);
 }
