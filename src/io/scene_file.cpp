@@ -1,0 +1,342 @@
+// The scene file: JSON, every field checked here with its path in the message (docs/scene-format.md).
+// Only scene-level facts are checked; art files are tested for existence but not opened (the element
+// stage reads them), so parsing a scene never reads another file.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+#include <system_error>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "animpak/error.hpp"
+#include "animpak/scene_spec.hpp"
+#include "json_fields.hpp"
+#include "scene_animation.hpp"
+#include "text_file.hpp"
+
+namespace animpak {
+namespace {
+
+namespace fs = std::filesystem;
+using io_detail::format_number;
+using io_detail::JsonField;
+using nlohmann::json;
+
+/// How close the end of one guided path must be to the start of the path it loops into, in art units:
+/// far below anything visible, above the rounding of coordinates typed with a few decimals.
+constexpr double kLoopTolerance = 1e-6;
+constexpr int kMaxCount = 100000;
+
+std::string backticked(const std::string& word) { return "`" + word + "`"; }
+
+fs::path resolve_art(const JsonField& field, const fs::path& base_dir) {
+  const std::string text = field.non_empty_string();
+  const fs::path given(text);
+  const fs::path resolved = (given.is_absolute() ? given : base_dir / given).lexically_normal();
+  std::string extension = resolved.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".svg" && extension != ".path")
+    field.fail("\"" + text + "\" is not an art file; expected a .svg or .path file");
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(resolved, ec);
+  if (!fs::is_regular_file(resolved, ec))
+    field.fail("cannot read \"" + text + "\" (resolved to " + (ec ? resolved : absolute).string() +
+               "); relative paths start at the scene file's folder");
+  return resolved;
+}
+
+ContainerSpec read_container(const JsonField& field, const fs::path& base_dir) {
+  ContainerSpec spec;
+  // A bare string is the common case: the container is its art's default outline and holes.
+  if (field.json().is_string()) {
+    spec.art = resolve_art(field, base_dir);
+    return spec;
+  }
+  field.check_keys({"art", "outline", "holes"});
+  spec.art = resolve_art(field.required("art"), base_dir);
+  if (auto f = field.optional("outline")) spec.outline = f->integer_in(0, kMaxCount);
+  if (auto f = field.optional("holes")) {
+    std::vector<int> holes;
+    for (std::size_t i = 0, n = f->array_size(); i < n; ++i) {
+      const int hole = f->item(i).integer_in(0, kMaxCount);
+      if (std::find(holes.begin(), holes.end(), hole) != holes.end())
+        f->item(i).fail("path " + std::to_string(hole) + " is listed twice");
+      if (spec.outline == hole) f->item(i).fail("path " + std::to_string(hole) + " is the outline and cannot be a hole");
+      holes.push_back(hole);
+    }
+    spec.holes = std::move(holes);
+  }
+  return spec;
+}
+
+std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::path& base_dir) {
+  std::vector<LibraryElementSpec> elements;
+  const std::size_t n = field.array_size();
+  if (n == 0) field.fail("expected at least one element");
+  for (std::size_t i = 0; i < n; ++i) {
+    const JsonField item = field.item(i);
+    item.check_keys({"name", "art", "animation", "count", "weight"});
+    LibraryElementSpec e;
+    e.art = resolve_art(item.required("art"), base_dir);
+    const std::optional<JsonField> name = item.optional("name");
+    e.name = name ? name->non_empty_string() : e.art.stem().string();
+    for (std::size_t j = 0; j < elements.size(); ++j)
+      if (elements[j].name == e.name)
+        (name ? *name : item)
+            .fail("name " + backticked(e.name) + (name ? "" : " (the art file's stem)") + " is already used by " +
+                  field.item(j).path() + "; give each element a unique `name`");
+    if (auto f = item.optional("animation")) e.animation = io_detail::read_animation(*f);
+    if (auto f = item.optional("count")) e.count = f->integer_in(0, kMaxCount);
+    if (auto f = item.optional("weight")) {
+      if (e.count) f->fail("give either `count` or `weight`, not both");
+      e.weight = f->positive_number();
+    }
+    elements.push_back(std::move(e));
+  }
+  return elements;
+}
+
+std::vector<std::string_view> names_of(const auto& items) {
+  std::vector<std::string_view> names;
+  for (const auto& item : items) names.push_back(item.name);
+  return names;
+}
+
+std::string unknown_name_problem(const std::string& name, const std::vector<std::string_view>& known,
+                                 const std::string& what) {
+  std::string problem = "no " + what + " is named " + backticked(name);
+  const std::string near = io_detail::closest_name(name, known);
+  if (!near.empty()) return problem + "; did you mean " + backticked(near) + "?";
+  problem += "; expected one of";
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on `" " + std::string` once inlined.
+  for (std::string_view k : known) problem.append(" ").append(backticked(std::string(k)));
+  return problem;
+}
+
+std::vector<TargetSpec> read_targets(const JsonField& field) {
+  std::vector<TargetSpec> targets;
+  const std::size_t n = field.array_size();
+  if (n < 2) field.fail("expected at least two targets, the first at t = 0 and the last at t = 1");
+  for (std::size_t i = 0; i < n; ++i) {
+    const JsonField item = field.item(i);
+    item.check_keys({"x", "y", "t", "scale", "angle"});
+    TargetSpec target;
+    target.x = item.required("x").number();
+    target.y = item.required("y").number();
+    const JsonField t = item.required("t");
+    target.t = t.number_in(0.0, 1.0);
+    if (i == 0 && target.t != 0.0) t.fail("the first target must have t = 0, got " + t.shown());
+    if (i == n - 1 && target.t != 1.0) t.fail("the last target must have t = 1, got " + t.shown());
+    if (i > 0 && target.t <= targets.back().t)
+      t.fail(target.t == targets.back().t ? "duplicate t " + t.shown() + "; each target needs its own time"
+                                          : "targets out of order: t " + t.shown() + " comes after t " +
+                                                format_number(targets.back().t) + "; list targets by increasing t");
+    if (auto f = item.optional("scale")) target.scale = f->positive_number();
+    if (auto f = item.optional("angle")) target.angle = f->number();
+    targets.push_back(target);
+  }
+  return targets;
+}
+
+/// Every guided element's t = 1 slice must land on exactly one t = 0 slice: `loop_to` (default: itself)
+/// must be a permutation, and the paths must meet where they hand over.
+void check_guided_loops(const JsonField& field, const std::vector<GuidedSpec>& guided, bool loop) {
+  std::vector<std::size_t> into(guided.size());
+  for (std::size_t i = 0; i < guided.size(); ++i) {
+    const std::optional<JsonField> loop_to = field.item(i).optional("loop_to");
+    into[i] = i;
+    if (!loop_to) continue;
+    if (!loop) loop_to->fail("needs `loop: true` at the top level; remove it or turn looping on");
+    const auto names = names_of(guided);
+    const auto found = std::find(names.begin(), names.end(), guided[i].loop_to);
+    if (found == names.end()) loop_to->fail(unknown_name_problem(guided[i].loop_to, names, "guided element"));
+    into[i] = static_cast<std::size_t>(found - names.begin());
+  }
+  if (!loop) return;
+  for (std::size_t i = 0; i < guided.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (into[i] == into[j]) {
+        // Blame the one that names its target; one without loop_to loops into itself implicitly.
+        const std::size_t blamed = field.item(i).has("loop_to") ? i : j;
+        const std::size_t other = blamed == i ? j : i;
+        field.item(blamed).required("loop_to").fail(
+            backticked(guided[into[i]].name) + " is already looped into by " + field.item(other).path() + " (" +
+            backticked(guided[other].name) + (field.item(other).has("loop_to") ? "" : ", which has no `loop_to` and loops into itself") +
+            "); loops must be a permutation: each guided element is looped into by exactly one");
+      }
+  for (std::size_t i = 0; i < guided.size(); ++i) {
+    const TargetSpec& last = guided[i].targets.back();
+    const TargetSpec& first = guided[into[i]].targets.front();
+    const double gap = std::hypot(last.x - first.x, last.y - first.y);
+    if (gap <= kLoopTolerance) continue;
+    const std::string whose = into[i] == i ? "its own first target (it has no `loop_to`, so it loops into itself)"
+                                           : "the first target of " + backticked(guided[into[i]].name) + " (" +
+                                                 field.item(into[i]).path() + ".targets[0]), its `loop_to`";
+    field.item(i).required("targets").item(guided[i].targets.size() - 1).fail(
+        "the last target (" + format_number(last.x) + ", " + format_number(last.y) + ") must meet " + whose + " at (" +
+        format_number(first.x) + ", " + format_number(first.y) + ") within " + format_number(kLoopTolerance) +
+        " art units, but is " + format_number(gap) + " away; move one of them or set `loop` to false");
+  }
+}
+
+std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<LibraryElementSpec>& library, bool loop) {
+  std::vector<GuidedSpec> guided;
+  for (std::size_t i = 0, n = field.array_size(); i < n; ++i) {
+    const JsonField item = field.item(i);
+    item.check_keys({"name", "element", "targets", "loop_to"});
+    GuidedSpec g;
+    const JsonField name = item.required("name");
+    g.name = name.non_empty_string();
+    for (std::size_t j = 0; j < guided.size(); ++j)
+      if (guided[j].name == g.name)
+        name.fail("name " + backticked(g.name) + " is already used by " + field.item(j).path() +
+                  "; give each guided element a unique `name`");
+    const JsonField element = item.required("element");
+    g.element = element.non_empty_string();
+    const auto library_names = names_of(library);
+    if (std::find(library_names.begin(), library_names.end(), g.element) == library_names.end())
+      element.fail(unknown_name_problem(g.element, library_names, "element in `elements`"));
+    g.targets = read_targets(item.required("targets"));
+    if (auto f = item.optional("loop_to")) g.loop_to = f->non_empty_string();
+    guided.push_back(std::move(g));
+  }
+  check_guided_loops(field, guided, loop);
+  return guided;
+}
+
+OrientationSpec read_orientation(const JsonField& field) {
+  field.check_keys({"mode", "angle", "field"});
+  OrientationSpec spec;
+  if (auto f = field.optional("mode")) spec.mode = static_cast<OrientationMode>(f->choice({"random", "fixed", "field"}));
+  if (auto f = field.optional("angle")) {
+    if (spec.mode != OrientationMode::fixed) f->fail("applies only to mode `fixed`; remove it or set `mode` to \"fixed\"");
+    spec.angle = f->number();
+  }
+  const std::optional<JsonField> vector_field = field.optional("field");
+  if (spec.mode != OrientationMode::field) {
+    if (vector_field) vector_field->fail("applies only to mode `field`; remove it or set `mode` to \"field\"");
+    return spec;
+  }
+  if (!vector_field) field.fail("mode `field` needs a `field` object ({\"kind\": \"constant\"|\"radial\"|\"tangential\", ...})");
+  vector_field->check_keys({"kind", "angle", "center"});
+  spec.field = static_cast<FieldKind>(vector_field->required("kind").choice({"constant", "radial", "tangential"}));
+  if (auto f = vector_field->optional("angle")) {
+    if (spec.field != FieldKind::constant) f->fail("applies only to kind `constant`; radial and tangential fields use `center`");
+    spec.angle = f->number();
+  }
+  if (auto f = vector_field->optional("center")) {
+    if (spec.field == FieldKind::constant) f->fail("applies only to kinds `radial` and `tangential`; a constant field uses `angle`");
+    spec.center = f->point();
+  }
+  return spec;
+}
+
+void read_param(const JsonField& field, const ParamInfo& info, Params& params) {
+  std::visit(
+      [&](auto member) {
+        using T = std::remove_reference_t<decltype(params.*member)>;
+        if constexpr (std::is_same_v<T, int>)
+          params.*member = field.integer_in(static_cast<long long>(info.min), static_cast<long long>(info.max));
+        else
+          params.*member = field.number_in(info.min, info.max);
+      },
+      info.member);
+}
+
+const ParamInfo& param_info(std::string_view name) {
+  for (const ParamInfo& info : param_table())
+    if (info.name == name) return info;
+  throw InputError("internal: no parameter named " + std::string(name));
+}
+
+void read_params(const JsonField& field, Params& params) {
+  std::vector<std::string_view> names;
+  for (const ParamInfo& info : param_table()) names.push_back(info.name);
+  for (const auto& [key, value] : field.members()) {
+    const auto found = std::find(names.begin(), names.end(), key);
+    if (found == names.end()) {
+      const std::string near = io_detail::closest_name(key, names);
+      value.fail(near.empty() ? "unknown parameter; docs/parameters.md lists them all"
+                              : "unknown parameter; did you mean " + backticked(near) + "?");
+    }
+    read_param(value, param_info(key), params);
+  }
+}
+
+void read_count(const JsonField& field, SceneSpec& scene) {
+  if (field.json().is_string()) {
+    if (field.string() != "fill") field.fail("expected an integer or \"fill\", got " + field.shown());
+  } else {
+    scene.count = field.integer_in(0, kMaxCount);
+  }
+  if (!scene.count) return;
+  int fixed = 0;
+  bool weighted = false;
+  for (const LibraryElementSpec& e : scene.elements) {
+    fixed += e.count.value_or(0);
+    weighted = weighted || !e.count;
+  }
+  if (fixed > *scene.count || (!weighted && fixed != *scene.count))
+    field.fail(std::to_string(*scene.count) + " unguided elements, but the elements' `count`s add up to " +
+               std::to_string(fixed) + (weighted ? "" : " and no element is drawn by weight") +
+               "; make them agree or use \"fill\"");
+}
+
+/// nlohmann keeps the last of two equal keys silently; in a hand-written scene that hides a mistake.
+json parse_json(const std::string& text, const std::string& name) {
+  std::vector<std::set<std::string>> open_objects;
+  const json::parser_callback_t reject_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) open_objects.emplace_back();
+    if (event == json::parse_event_t::object_end) open_objects.pop_back();
+    if (event == json::parse_event_t::key && !open_objects.back().insert(parsed.get<std::string>()).second)
+      throw InputError(name + ": key " + backticked(parsed.get<std::string>()) +
+                       " appears twice in one object; keep only one");
+    return true;
+  };
+  try {
+    return json::parse(text, reject_duplicates);
+  } catch (const json::parse_error& e) {
+    // what() reads "[json.exception.parse_error.101] parse error at line L, column C: <detail>".
+    const std::string what = e.what();
+    const std::size_t at = what.find("at line ");
+    throw InputError(name + ": malformed JSON " + (at == std::string::npos ? what : what.substr(at)));
+  }
+}
+
+}  // namespace
+
+SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages, const fs::path& base_dir) {
+  const std::string name = file_for_messages.string();
+  const json document = parse_json(text, name);
+  const JsonField root(document, name);
+  root.check_keys({"container", "elements", "guided", "orientation", "count", "seed", "loop", "slices", "params"});
+
+  SceneSpec scene;
+  scene.file = file_for_messages;
+  scene.container = read_container(root.required("container"), base_dir);
+  scene.elements = read_elements(root.required("elements"), base_dir);
+  if (auto f = root.optional("loop")) scene.loop = f->boolean();
+  if (auto f = root.optional("guided")) scene.guided = read_guided(*f, scene.elements, scene.loop);
+  if (auto f = root.optional("orientation")) scene.orientation = read_orientation(*f);
+  if (auto f = root.optional("count")) read_count(*f, scene);
+  if (auto f = root.optional("seed")) scene.seed = f->unsigned_integer();
+  if (auto f = root.optional("params")) read_params(*f, scene.params);
+  if (auto f = root.optional("slices")) {
+    if (root.has("params") && root.required("params").has("slices"))
+      f->fail("given twice, here and as params.slices; keep one");
+    read_param(*f, param_info("slices"), scene.params);
+  }
+  return scene;
+}
+
+SceneSpec load_scene(const fs::path& file) {
+  const std::string text = io_detail::read_text_file(file, "check the scene file's path");
+  return parse_scene(text, file, file.parent_path());
+}
+
+}  // namespace animpak
