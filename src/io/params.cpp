@@ -10,12 +10,13 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 27> table{{
+const std::array<ParamInfo, 28> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "arc length between boundary samples"},
     {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
     {"slices", &Params::slices, 2, 1000, "n_s: slices along the time axis (§3.1)"},
     {"initial_scale", &Params::initial_scale, 0.001, 1.0, "size of every element at the start (§4)"},
+    {"seed_spacing", &Params::seed_spacing, 0.01, 1.0, "distance between unguided seeds when filling (§4)"},
     {"k_repulsion", &Params::k_repulsion, 0.0, inf, "k_rpl, repulsion strength (Eq. 1)"},
     {"repulsion_epsilon", &Params::repulsion_epsilon, 1e-12, inf, "ε, softening of Eq. 1"},
     {"k_edge", &Params::k_edge, 0.0, inf, "k_edg of slice edge springs (Eq. 2)"},

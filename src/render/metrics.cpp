@@ -1,0 +1,92 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "animpak/render.hpp"
+
+namespace animpak {
+namespace {
+
+constexpr int coverage_size = 256;  // raster height for coverage: ±0.5 % at typical packings
+
+Box container_box(const World& world) {
+  Box box;
+  for (Vec2 p : world.container.outline) box.add(p);
+  return box;
+}
+
+// Coverage on a raster: the container (outline minus holes, even–odd) against every element's art
+// painted opaque; the ratio of covered container pixels.
+double coverage(const World& world, const SimState& state, double tf) {
+  const Box box = container_box(world);
+  const int h = coverage_size;
+  const int w = std::max(1, static_cast<int>(std::lround(h * box.width() / std::max(box.height(), 1e-9))));
+  ArtShape region;
+  ArtPath path;
+  path.fill = {true, {0, 0, 0, 1}};
+  path.fill_rule = FillRule::evenodd;
+  path.polylines.push_back({world.container.outline, true});
+  for (const auto& hole : world.container.holes) path.polylines.push_back({hole, true});
+  region.paths.push_back(path);
+  ArtPoints region_points(1);
+  for (const Polyline& l : path.polylines) region_points[0].push_back(l.points);
+
+  Picture inside(w, h, box, {0, 0, 0, 0}, 0.0);
+  inside.draw_art(region, region_points);
+  Picture art(w, h, box, {0, 0, 0, 0}, 0.0);
+  for (std::size_t i = 0; i < world.elements.size(); ++i) {
+    const SpacetimeElement& lib = world.library[world.elements[i].library];
+    ArtShape opaque = lib.art.art;
+    for (ArtPath& p : opaque.paths) {
+      p.fill.color.a = 1.0;
+      p.stroke.color.a = 1.0;
+    }
+    art.draw_art(opaque, replay_art(lib.binding, lib.slice, element_at(world, state, int(i), tf)));
+  }
+  const std::vector<unsigned char> a = inside.rgba8(), b = art.rgba8();
+  std::size_t container_pixels = 0, covered = 0;
+  for (std::size_t k = 3; k < a.size(); k += 4) {
+    if (a[k] < 128) continue;
+    ++container_pixels;
+    covered += b[k] >= 128;
+  }
+  return container_pixels ? double(covered) / double(container_pixels) : 0.0;
+}
+
+}  // namespace
+
+FrameMetrics measure_frame(const World& world, const SimState& state, double tf) {
+  FrameMetrics m;
+  m.t = tf;
+  m.coverage = coverage(world, state, tf);
+  const std::size_t n = world.elements.size();
+  std::vector<std::vector<Vec2>> rings(n);
+  std::vector<Box> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int B = world.library[world.elements[i].library].slice.boundary_count;
+    std::vector<Vec2> all = element_at(world, state, int(i), tf);
+    rings[i].assign(all.begin(), all.begin() + B);
+    for (Vec2 p : rings[i]) boxes[i].add(p);
+  }
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      // Boxes farther apart than both current nearest distances cannot change either.
+      const double dx = std::max({0.0, boxes[j].min.x - boxes[i].max.x, boxes[i].min.x - boxes[j].max.x});
+      const double dy = std::max({0.0, boxes[j].min.y - boxes[i].max.y, boxes[i].min.y - boxes[j].max.y});
+      if (std::hypot(dx, dy) > std::max(nearest[i], nearest[j])) continue;
+      const double gap = ring_gap(rings[i], rings[j]);
+      m.overlapping_pairs += gap == 0.0;
+      nearest[i] = std::min(nearest[i], gap);
+      nearest[j] = std::min(nearest[j], gap);
+    }
+  if (n >= 2) {
+    m.min_gap = *std::min_element(nearest.begin(), nearest.end());
+    double sum = 0.0;
+    for (double d : nearest) sum += d;
+    m.mean_gap = sum / double(n);
+  }
+  return m;
+}
+
+}  // namespace animpak

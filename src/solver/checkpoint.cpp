@@ -1,0 +1,143 @@
+#include "animpak/checkpoint.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "animpak/error.hpp"
+
+namespace animpak {
+namespace {
+
+constexpr char magic[8] = {'A', 'N', 'I', 'M', 'P', 'A', 'K', 'S'};
+constexpr std::uint64_t max_array = std::uint64_t{1} << 32;
+
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+class Writer {
+ public:
+  template <class T>
+  void put(T value) {
+    bytes_.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  void put_string(const std::string& s) {
+    put<std::uint64_t>(s.size());
+    bytes_ += s;
+  }
+  template <class T>
+  void put_array(const std::vector<T>& v) {
+    put<std::uint64_t>(v.size());
+    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  std::string& bytes() { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& bytes, std::size_t end, std::string file) : bytes_(bytes), end_(end), file_(std::move(file)) {}
+  template <class T>
+  T get() {
+    need(sizeof(T));
+    T value;
+    std::memcpy(&value, bytes_.data() + pos_, sizeof value);
+    pos_ += sizeof value;
+    return value;
+  }
+  std::string get_string() {
+    const auto n = get<std::uint64_t>();
+    need(n);
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  template <class T>
+  std::vector<T> get_array() {
+    const auto n = get<std::uint64_t>();
+    if (n > max_array) fail("an array length is implausible");
+    need(n * sizeof(T));
+    std::vector<T> v(n);
+    std::memcpy(v.data(), bytes_.data() + pos_, n * sizeof(T));
+    pos_ += n * sizeof(T);
+    return v;
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(file_ + ": " + what + "; the state file is damaged, pack the scene again");
+  }
+
+ private:
+  void need(std::uint64_t n) const {
+    if (n > end_ - pos_) fail("ends early (truncated)");
+  }
+  const std::string& bytes_;
+  std::size_t end_, pos_ = sizeof magic + sizeof(std::uint32_t);
+  std::string file_;
+};
+
+}  // namespace
+
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
+  Writer w;
+  w.bytes().append(magic, sizeof magic);
+  w.put<std::uint32_t>(checkpoint_version);
+  w.put_string(c.scene_text);
+  w.put_string(c.scene_file.string());
+  w.put<std::uint64_t>(c.seed);
+  w.put_string(c.backend);
+  w.put_string(c.stop_reason);
+  w.put<std::uint64_t>(c.state.iteration);
+  for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
+                        &c.state.spring_rest, &c.state.growth})
+    w.put_array(*a);
+  w.put<std::uint64_t>(fnv1a(w.bytes()));
+
+  const std::filesystem::path temp = file.string() + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    out.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
+    if (!out) throw InputError(file.string() + ": cannot write the state; check the folder and free disk space");
+  }
+  std::filesystem::rename(temp, file);
+}
+
+Checkpoint read_checkpoint(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot read the state file; give the folder `animpak pack --out` wrote");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string name = file.string();
+  if (bytes.size() < sizeof magic + 4 + 8 || std::memcmp(bytes.data(), magic, sizeof magic) != 0)
+    throw InputError(name + ": not an animpak state file (wrong magic bytes)");
+  std::uint32_t version;
+  std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
+  if (version != checkpoint_version)
+    throw InputError(name + ": state format version " + std::to_string(version) + ", this animpak reads version " +
+                     std::to_string(checkpoint_version) + "; pack the scene again with this version");
+  const std::size_t body = bytes.size() - sizeof(std::uint64_t);
+  std::uint64_t stored;
+  std::memcpy(&stored, bytes.data() + body, sizeof stored);
+  Reader r(bytes, body, name);
+  if (fnv1a(bytes.substr(0, body)) != stored) r.fail("checksum mismatch (truncated or modified)");
+
+  Checkpoint c;
+  c.scene_text = r.get_string();
+  c.scene_file = r.get_string();
+  c.seed = r.get<std::uint64_t>();
+  c.backend = r.get_string();
+  c.stop_reason = r.get_string();
+  c.state.iteration = r.get<std::uint64_t>();
+  for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
+                  &c.state.growth})
+    *a = r.get_array<float>();
+  const std::size_t n = c.state.x.size();
+  for (const auto* a : {&c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt})
+    if (a->size() != n) r.fail("per-vertex arrays differ in length");
+  return c;
+}
+
+}  // namespace animpak
