@@ -20,7 +20,8 @@ namespace cl = ClipperLib;
 // and far inside Clipper's 4.6e18 coordinate range even for art well outside the unit square.
 constexpr double clipper_scale = 1e9;
 // Largest distance between a round join and its polygon, in unit-square units (≈44 segments per full
-// circle at Δs = 0.04); the outline is resampled at 0.11 spacing afterwards, so finer arcs buy nothing.
+// circle at Δs = 0.04; the last chord of a join spans up to 1.5 steps, so up to 2.25e-4 inside Δs). The
+// outline is resampled at boundary_spacing afterwards, so finer arcs buy nothing.
 constexpr double arc_tolerance = 1e-4;
 
 std::string source_name(const ArtShape& art) {

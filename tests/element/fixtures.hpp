@@ -8,6 +8,10 @@
 
 namespace animpak::test {
 
+/// How far inside Δs the offset outline may come: Clipper's round joins keep each chord within the arc
+/// tolerance (1e-4) of the arc, except the last chord of a join, up to 1.5 steps long (2.25 × 1e-4).
+inline constexpr double offset_tolerance = 2.5e-4;
+
 /// One filled closed path per ring, in art coordinates (y down), nonzero rule.
 inline ArtShape filled_art(const std::vector<std::vector<Vec2>>& rings, const std::string& source,
                            FillRule rule = FillRule::nonzero) {

@@ -72,7 +72,16 @@ inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Par
   for (const Edge& e : mesh.negative_space_edges) {
     CHECK(e[0] < b);
     CHECK(e[1] < b);
-    CHECK_FALSE(ring_contains(boundary, (mesh.vertices[e[0]] + mesh.vertices[e[1]]) * 0.5));
+    const Vec2 a = mesh.vertices[e[0]], c = mesh.vertices[e[1]];
+    CHECK_FALSE(ring_contains(boundary, (a + c) * 0.5));
+    for (int i = 0; i < b; ++i) {
+      const int j = (i + 1) % b;
+      if (i == e[0] || i == e[1] || j == e[0] || j == e[1]) continue;
+      const Vec2 p = mesh.vertices[i], q = mesh.vertices[j];
+      const bool crosses = (cross(c - a, p - a) > 0) != (cross(c - a, q - a) > 0) &&
+                           (cross(q - p, a - p) > 0) != (cross(q - p, c - p) > 0);
+      CHECK_FALSE(crosses);
+    }
   }
 }
 

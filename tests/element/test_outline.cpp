@@ -15,12 +15,12 @@ void check_outline(const NormalizedArt& art, const Outline& outline, double offs
   CHECK(signed_area(ring) > 0.0);
   for (std::size_t i = 0; i < ring.size(); ++i) CHECK_FALSE(ring[i] == ring[(i + 1) % ring.size()]);
   CHECK(ring_simple(ring));
-  // Every art point lies inside and at least Δs (less the arc tolerance and rounding) from the outline.
+  // Every art point lies inside and at least Δs (less the join's chord error) from the outline.
   for (const ArtPath& path : art.art.paths)
     for (const Polyline& line : path.polylines)
       for (Vec2 p : line.points) {
         CHECK(ring_contains(ring, p));
-        CHECK(ring_distance(ring, p) >= offset - 2e-4);
+        CHECK(ring_distance(ring, p) >= offset - offset_tolerance);
       }
 }
 
@@ -88,7 +88,7 @@ TEST_CASE("element_outline includes open strokes and rejects art without area", 
   const NormalizedArt n = normalize_art(line);
   const Outline outline = element_outline(n, 0.04);
   // Half the stroke (0.1 in unit coordinates) plus Δs around the stroke's centre line.
-  CHECK(ring_distance(outline.ring, n.frame.to_unit({5, 0})) >= 0.1 + 0.04 - 2e-4);
+  CHECK(ring_distance(outline.ring, n.frame.to_unit({5, 0})) >= 0.1 + 0.04 - offset_tolerance);
   CHECK(ring_simple(outline.ring));
 
   line.paths[0].stroke.enabled = false;
