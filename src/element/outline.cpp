@@ -139,6 +139,11 @@ bool ring_is_simple(const cl::Path& ring) {
 
 NormalizedArt normalize_art(const ArtShape& art) {
   const Box box = art_box(art);
+  for (const ArtPath& path : art.paths)
+    for (const Polyline& line : path.polylines)
+      for (Vec2 p : line.points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+          throw InputError(source_name(art) + ": path '" + path.id + "' has a non-finite coordinate");
   if (box.empty())
     throw InputError(source_name(art) + ": the art has no drawable point; an element needs at least one "
                      "filled or stroked path");
@@ -196,6 +201,7 @@ Outline element_outline(const NormalizedArt& art, double offset) {
     throw InputError(name + ": the offset outline has no area");
 
   Outline out;
+  out.source = name;
   if (pieces.size() > 1) {
     std::ostringstream note;
     note << name << ": kept the largest of " << pieces.size() << " disjoint outline pieces (area "

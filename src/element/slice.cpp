@@ -232,10 +232,11 @@ bool triangulate(SliceMesh& mesh) {
 
 SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_t seed) {
   const std::size_t n = outline.ring.size();
+  const std::string name = outline.source.empty() ? std::string("<outline>") : outline.source;
   if (n < 3 || !(std::fabs(signed_area(outline.ring)) > 0.0))
-    throw InputError("build_slice: the outline has fewer than three points or no area");
+    throw InputError(name + ": the element's outline has fewer than three points or no area");
   if (!(params.boundary_spacing > 0.0) || !(params.interior_spacing > 0.0))
-    throw InputError("build_slice: boundary_spacing and interior_spacing must be positive");
+    throw InputError(name + ": boundary_spacing and interior_spacing must be positive");
   double perimeter = 0.0;
   for (std::size_t i = 0; i < n; ++i) perimeter += norm(outline.ring[(i + 1) % n] - outline.ring[i]);
   // §3.1 "evenly-spaced samples around the outer boundary": the count is rounded so the spacing along
@@ -252,7 +253,7 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
     if (triangulate(mesh)) return mesh;
     count = count + std::max(1, count / 4);
   }
-  throw InputError("build_slice: could not triangulate the outline (" + std::to_string(n) +
+  throw InputError(name + ": could not triangulate the element's outline (" + std::to_string(n) +
                    " points, perimeter " + std::to_string(perimeter) + "); it may be degenerate");
 }
 

@@ -1,6 +1,8 @@
 // §3.1 Fig. 2a: normalization into the unit square and the offset outline.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "animpak/error.hpp"
 #include "element/fixtures.hpp"
 
@@ -48,6 +50,23 @@ TEST_CASE("normalize_art names the file for empty or zero-size art", "[element][
   empty.source = "empty.svg";
   CHECK_THROWS_WITH(normalize_art(empty), Catch::Contains("empty.svg"));
   CHECK_THROWS_AS(normalize_art(filled_art({{{1, 1}, {1, 1}, {1, 1}}}, "dot.svg")), InputError);
+  CHECK_THROWS_WITH(normalize_art(filled_art({{{0, 0}, {1, std::nan("")}, {2, 1}}}, "nan.svg")),
+                    Catch::Contains("nan.svg"));
+}
+
+TEST_CASE("element_outline cleans self-intersecting art into a simple ring", "[element][outline]") {
+  // A bow tie (one polygon crossing itself) and a star drawn as one self-crossing pentagram.
+  const ArtShape bow = filled_art({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}}, "bow.svg");
+  std::vector<Vec2> star;
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * 3.14159265358979 * (2 * k) / 5.0;
+    star.push_back({std::cos(a), std::sin(a)});
+  }
+  for (const ArtShape& art : {bow, filled_art({star}, "star.svg"), filled_art({star}, "star-eo.svg", FillRule::evenodd)}) {
+    INFO(art.source);
+    const NormalizedArt n = normalize_art(art);
+    check_outline(n, element_outline(n, 0.04), 0.04);
+  }
 }
 
 TEST_CASE("element_outline of synthetic shapes is simple, CCW and Δs around the art", "[element][outline]") {

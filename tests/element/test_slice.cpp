@@ -77,5 +77,7 @@ TEST_CASE("build_slice is deterministic for a seed", "[element][slice]") {
 TEST_CASE("build_slice rejects a degenerate outline", "[element][slice]") {
   Outline flat;
   flat.ring = {{0, 0}, {1, 0}, {2, 0}};
-  CHECK_THROWS_AS(build_slice(flat, {}, 1), InputError);
+  flat.source = "flat.svg";
+  CHECK_THROWS_WITH(build_slice(flat, {}, 1), Catch::Contains("flat.svg"));
+  CHECK(build(l_art()).outline.source == "l.svg");
 }
