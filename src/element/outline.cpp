@@ -4,9 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
-
 #include <polyclipping/clipper.hpp>
+#include <sstream>
 
 #include "animpak/element.hpp"
 #include "animpak/error.hpp"
@@ -72,8 +71,7 @@ cl::Paths painted_area(const ArtPath& path) {
     if ((line.closed || path.fill.enabled) && p.size() >= 3) fill.push_back(p);
     if (stroked) stroke.AddPath(p, cl::jtRound, line.closed ? cl::etClosedLine : cl::etOpenRound);
   }
-  cl::Paths area =
-      union_of(fill, path.fill_rule == FillRule::evenodd ? cl::pftEvenOdd : cl::pftNonZero);
+  cl::Paths area = union_of(fill, path.fill_rule == FillRule::evenodd ? cl::pftEvenOdd : cl::pftNonZero);
   if (stroked) {
     cl::Paths band;
     stroke.Execute(band, 0.5 * path.stroke_width * clipper_scale);
@@ -124,9 +122,9 @@ bool ring_is_simple(const cl::Path& ring) {
         const cl::IntPoint& a = ring[first];
         const cl::IntPoint& s = ring[(first + 1) % n];
         const cl::IntPoint& c = ring[(first + 2) % n];
-        const wide along = static_cast<wide>(c.X - s.X) * (a.X - s.X) + static_cast<wide>(c.Y - s.Y) * (a.Y - s.Y);
-        if (n > 3 && orient(a, s, c) == 0 && along > 0)
-          return false;
+        const wide along =
+            static_cast<wide>(c.X - s.X) * (a.X - s.X) + static_cast<wide>(c.Y - s.Y) * (a.Y - s.Y);
+        if (n > 3 && orient(a, s, c) == 0 && along > 0) return false;
         continue;
       }
       if (segments_touch(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
@@ -145,11 +143,13 @@ NormalizedArt normalize_art(const ArtShape& art) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
           throw InputError(source_name(art) + ": path '" + path.id + "' has a non-finite coordinate");
   if (box.empty())
-    throw InputError(source_name(art) + ": the art has no drawable point; an element needs at least one "
+    throw InputError(source_name(art) +
+                     ": the art has no drawable point; an element needs at least one "
                      "filled or stroked path");
   const double side = std::max(box.width(), box.height());
   if (!(side > 0.0) || !std::isfinite(side))
-    throw InputError(source_name(art) + ": the art's bounding box has zero size; an element needs an "
+    throw InputError(source_name(art) +
+                     ": the art's bounding box has zero size; an element needs an "
                      "area to pack");
   NormalizedArt out;
   out.frame.art_origin = box.min;
@@ -195,8 +195,7 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   std::vector<std::pair<double, const cl::Path*>> pieces;
   for (const cl::PolyNode* node : tree.Childs)
     pieces.emplace_back(std::fabs(cl::Area(node->Contour)), &node->Contour);
-  std::sort(pieces.begin(), pieces.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   if (pieces.empty() || !(pieces.front().first > 0.0))
     throw InputError(name + ": the offset outline has no area");
 
@@ -217,7 +216,8 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   // Drop repeated and collinear points (within 2 integer units, i.e. 2e-9).
   cl::CleanPolygon(ring, 2.0);
   if (ring.size() < 3 || !ring_is_simple(ring))
-    throw InputError(name + ": the outline stays self-intersecting after cleaning; simplify the art's "
+    throw InputError(name +
+                     ": the outline stays self-intersecting after cleaning; simplify the art's "
                      "paths");
   out.ring.reserve(ring.size());
   for (const cl::IntPoint& p : ring) out.ring.push_back(to_unit(p));

@@ -1,19 +1,20 @@
 // Paper §3.1, Fig. 2b–c: one slice. Evenly spaced samples on the offset outline, Poisson-disk samples
 // inside, a constrained Delaunay triangulation (CGAL; the only translation unit that includes it, because
 // it compiles slowly), then the shear edges and the negative-space edges that brace the slice.
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <map>
-#include <random>
-#include <set>
-#include <string>
-
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+#include <string>
 
 #include "animpak/element.hpp"
 #include "animpak/error.hpp"
@@ -22,8 +23,8 @@ namespace animpak {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;            // sample index
-using FaceInfo = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;                // nesting level
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;  // sample index
+using FaceInfo = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;      // nesting level
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, FaceInfo>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // Constraints never cross in a simple polygon; if they do, CGAL throws instead of inventing a vertex.
@@ -39,7 +40,9 @@ constexpr double min_triangle_area = 1e-12;
 
 // Portable uniform double in [0, 1): the top 53 bits of the generator (std distributions differ between
 // standard libraries, so they would break determinism across platforms).
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 std::vector<Vec2> resample(const std::vector<Vec2>& ring, int count) {
   const std::size_t n = ring.size();
@@ -113,7 +116,7 @@ std::vector<Vec2> interior_samples(const std::vector<Vec2>& boundary, double spa
     const Vec2 centre = points[active[slot]];
     bool found = false;
     for (int k = 0; k < bridson_tries && !found; ++k) {
-      const double angle = 2.0 * M_PI * uniform(rng);
+      const double angle = 2.0 * std::numbers::pi * uniform(rng);
       const double radius = spacing * (1.0 + uniform(rng));
       found = accept(centre + Vec2{std::cos(angle), std::sin(angle)} * radius);
     }
@@ -127,7 +130,8 @@ std::vector<Vec2> interior_samples(const std::vector<Vec2>& boundary, double spa
   for (Vec2 p : points) {
     if (!inside(boundary, p)) continue;
     double d = 1e300;
-    for (std::size_t i = 0; i < b; ++i) d = std::min(d, segment_distance(p, boundary[i], boundary[(i + 1) % b]));
+    for (std::size_t i = 0; i < b; ++i)
+      d = std::min(d, segment_distance(p, boundary[i], boundary[(i + 1) % b]));
     if (d > boundary_clearance * spacing) kept.push_back(p);
   }
   return kept;
@@ -156,7 +160,9 @@ void mark_nesting(Cdt& cdt) {
   }
 }
 
-Edge make_edge(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+Edge make_edge(int a, int b) {
+  return a < b ? Edge{a, b} : Edge{b, a};
+}
 
 // Triangle with its smallest vertex first, cyclic order (and so orientation) kept.
 Triangle canonical(Triangle t) {

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <set>
 
@@ -52,7 +51,8 @@ inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Par
     while (next < b) {
       const Vec2 s = mesh.vertices[next];
       const double along = dot(s - a, c - a) / std::max(len, 1e-300);
-      if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 || along > len + 1e-9)
+      if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 ||
+          along > len + 1e-9)
         break;
       CHECK(std::fabs(arc + along - next * step) <= 1e-9 * perimeter);
       ++next;

@@ -1,6 +1,5 @@
 // §3.1 Fig. 2a: normalization into the unit square and the offset outline.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "animpak/error.hpp"
@@ -62,7 +61,8 @@ TEST_CASE("element_outline cleans self-intersecting art into a simple ring", "[e
     const double a = 2.0 * 3.14159265358979 * (2 * k) / 5.0;
     star.push_back({std::cos(a), std::sin(a)});
   }
-  for (const ArtShape& art : {bow, filled_art({star}, "star.svg"), filled_art({star}, "star-eo.svg", FillRule::evenodd)}) {
+  for (const ArtShape& art :
+       {bow, filled_art({star}, "star.svg"), filled_art({star}, "star-eo.svg", FillRule::evenodd)}) {
     INFO(art.source);
     const NormalizedArt n = normalize_art(art);
     check_outline(n, element_outline(n, 0.04), 0.04);

@@ -1,6 +1,5 @@
 // The real shapes of examples/shapes at default params: outline, slice validity, art binding.
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 
 #include "element/mesh_checks.hpp"
@@ -66,7 +65,8 @@ TEST_CASE("the container shape also triangulates and binds", "[element][shapes]"
   check_replay(b.art, b.mesh);
 }
 
-TEST_CASE("synthetic shapes: art replays; an outside point binds to the nearest triangle", "[element][binding]") {
+TEST_CASE("synthetic shapes: art replays; an outside point binds to the nearest triangle",
+          "[element][binding]") {
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art(), two_blobs_art()}) {
     INFO(art.source);
     const Built b = build(art);
@@ -100,16 +100,16 @@ TEST_CASE("print slice sizes of the example shapes", "[.counts]") {
   const Params params;
   std::vector<std::string> names = animal_names();
   names.push_back("heart-container");
-  std::printf("%-16s %8s %8s %6s %6s %6s %6s %9s\n", "shape", "vertices", "boundary", "tris", "edges", "shear",
-              "negsp", "art pts");
+  std::printf("%-16s %8s %8s %6s %6s %6s %6s %9s\n", "shape", "vertices", "boundary", "tris", "edges",
+              "shear", "negsp", "art pts");
   for (const std::string& name : names) {
     const Built b = build(load_path_file(shape_path(name)), params);
     std::size_t points = 0;
     for (const ArtPath& path : b.art.art.paths)
       for (const Polyline& line : path.polylines) points += line.points.size();
     std::printf("%-16s %8zu %8d %6zu %6zu %6zu %6zu %9zu\n", name.c_str(), b.mesh.vertices.size(),
-                b.mesh.boundary_count, b.mesh.triangles.size(), b.mesh.edges.size(), b.mesh.shear_edges.size(),
-                b.mesh.negative_space_edges.size(), points);
+                b.mesh.boundary_count, b.mesh.triangles.size(), b.mesh.edges.size(),
+                b.mesh.shear_edges.size(), b.mesh.negative_space_edges.size(), points);
     for (const std::string& note : b.outline.notes) std::printf("  note: %s\n", note.c_str());
   }
 }

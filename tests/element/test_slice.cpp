@@ -1,7 +1,6 @@
 // §3.1 Fig. 2b–c: sampling, constrained Delaunay triangulation, shear and negative-space edges.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 
 #include "animpak/error.hpp"
 #include "element/mesh_checks.hpp"
