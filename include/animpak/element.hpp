@@ -37,6 +37,7 @@ NormalizedArt normalize_art(const ArtShape& art);
 struct Outline {
   std::vector<Vec2> ring;              ///< simple polygon, counter-clockwise in y-up terms, no repeat
   std::vector<std::string> notes;      ///< e.g. "dropped 2 pieces smaller than the largest"
+  std::string source;                  ///< the art file, named in build_slice's errors
 };
 Outline element_outline(const NormalizedArt& art, double offset);
 
