@@ -12,8 +12,8 @@ namespace animpak {
 struct Params {
   // §3 spacetime elements
   double offset = 0.04;            ///< Δs, channel of negative space around each element (unit square)
-  double boundary_spacing = 0.11;  ///< arc length between boundary samples of the offset outline
-  double interior_spacing = 0.08;  ///< minimum distance between interior (Poisson-disk) samples
+  double boundary_spacing = 0.15;  ///< arc length between boundary samples of the offset outline
+  double interior_spacing = 0.15;  ///< minimum distance between interior (Poisson-disk) samples
   int slices = 100;                ///< n_s, slices along the time axis
 
   // §4 initial configuration
