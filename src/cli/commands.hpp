@@ -2,7 +2,10 @@
 #pragma once
 
 #include <filesystem>
+#include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace animpak::cli {
 
@@ -15,6 +18,34 @@ struct InspectOptions {
 };
 
 int inspect(const InspectOptions& options);
+
+struct FrameOptions {
+  int frames = 100;
+  int size = 512;
+  double fps = 25.0;
+  std::vector<std::string> formats{"png", "gif"};
+  bool draw_container = true;
+};
+
+struct PackOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;
+  std::optional<std::filesystem::path> resume;  ///< continue from DIR/state.bin
+  std::optional<std::uint64_t> seed;
+  std::optional<std::uint64_t> max_iterations;
+  std::string device = "reference";
+  bool render = true;
+  FrameOptions frames;
+};
+
+int pack(const PackOptions& options);
+
+struct RenderOptions {
+  std::filesystem::path dir;  ///< a folder `animpak pack` wrote
+  FrameOptions frames;
+};
+
+int render(const RenderOptions& options);
 
 /// Parses the command line and runs the chosen subcommand; never throws.
 int run(int argc, char** argv);

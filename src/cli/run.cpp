@@ -33,8 +33,41 @@ int run(int argc, char** argv) {
   inspect_cmd->add_option("--size", inspect_options.picture_size, "picture height in pixels")
       ->check(CLI::Range(16, 8192));
 
+  auto add_frame_options = [](CLI::App* cmd, FrameOptions& f) {
+    cmd->add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
+    cmd->add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
+    cmd->add_option("--fps", f.fps, "frames per second of GIF and MP4")->check(CLI::Range(1.0, 240.0));
+    cmd->add_option("--format", f.formats, "png, gif, mp4, svg (several allowed)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"png", "gif", "mp4", "svg"}));
+    cmd->add_flag("!--no-container", f.draw_container, "do not draw the container outline");
+  };
+
+  PackOptions pack_options;
+  CLI::App* pack_cmd = app.add_subcommand("pack", "Pack a scene's animated elements into its container and render it");
+  pack_cmd->add_option("SCENE", pack_options.scene, "scene file (.json)");
+  pack_cmd->add_option("--out", pack_options.out, "folder for state.bin, stats.json and the frames");
+  pack_cmd->add_option("--resume", pack_options.resume, "continue the packing in this folder");
+  pack_cmd->add_option("--seed", pack_options.seed, "seed (overrides the scene's)");
+  pack_cmd->add_option("--max-iterations", pack_options.max_iterations, "stop after this many iterations")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
+  pack_cmd->add_option("--device", pack_options.device, "solver: reference");
+  pack_cmd->add_flag("!--no-render", pack_options.render, "do not render frames");
+  add_frame_options(pack_cmd, pack_options.frames);
+
+  RenderOptions render_options;
+  CLI::App* render_cmd = app.add_subcommand("render", "Render the frames of a saved packing again");
+  render_cmd->add_option("DIR", render_options.dir, "folder written by animpak pack")->required();
+  add_frame_options(render_cmd, render_options.frames);
+
   try {
     app.parse(argc, argv);
+    if (pack_cmd->parsed()) {
+      if (pack_options.resume && !pack_options.scene.empty())
+        throw CLI::ValidationError("--resume", "give either SCENE or --resume DIR, not both");
+      if (!pack_options.resume && (pack_options.scene.empty() || pack_options.out.empty()))
+        throw CLI::ValidationError("SCENE", "pack needs SCENE and --out DIR (or --resume DIR)");
+    }
   } catch (const CLI::ParseError& e) {
     // --help and --version arrive here too, with exit code 0.
     const int code = app.exit(e);
@@ -43,6 +76,8 @@ int run(int argc, char** argv) {
 
   try {
     if (inspect_cmd->parsed()) return inspect(inspect_options);
+    if (pack_cmd->parsed()) return pack(pack_options);
+    if (render_cmd->parsed()) return render(render_options);
     return fail(ExitCode::usage, "no command given; see animpak --help");
   } catch (const UsageError& e) {
     return fail(ExitCode::usage, e.what());

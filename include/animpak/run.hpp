@@ -1,0 +1,30 @@
+// Running a backend to a stop (paper §5.3), with statistics every params.check_interval steps.
+#pragma once
+
+#include <atomic>
+#include <functional>
+
+#include "animpak/simulation.hpp"
+
+namespace animpak {
+
+struct RunControl {
+  std::uint64_t max_iterations = 0;                  ///< absolute iteration count to stop at
+  const std::atomic<bool>* interrupt = nullptr;      ///< set by a signal handler (Ctrl-C)
+  std::function<void(const StepStatistics&)> on_check;  ///< progress, after every statistics check
+};
+
+struct RunResult {
+  StopReason reason = StopReason::running;
+  StepStatistics last;     ///< the latest statistics
+  SimState last_good;      ///< the latest state known to be finite (the final state unless non_finite)
+  std::uint64_t steps_since_good = 0;
+  double seconds = 0.0;
+};
+
+/// Steps until the largest per-slice gap falls below params.stop_gap, every g passes
+/// params.stop_growth (when set), the iteration count reaches control.max_iterations, an interrupt
+/// arrives, or a NaN/Inf appears (then last_good holds the last finite state).
+RunResult run_simulation(Backend& backend, const Params& params, const RunControl& control);
+
+}  // namespace animpak

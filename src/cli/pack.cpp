@@ -1,0 +1,154 @@
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "animpak/checkpoint.hpp"
+#include "animpak/error.hpp"
+#include "animpak/render.hpp"
+#include "animpak/run.hpp"
+#include "commands.hpp"
+#include "pack_output.hpp"
+
+namespace animpak::cli {
+namespace {
+
+std::atomic<bool> interrupted{false};
+extern "C" void on_sigint(int) { interrupted.store(true); }
+
+std::string clock_text(double seconds) {
+  char s[32];
+  const long t = static_cast<long>(seconds);
+  std::snprintf(s, sizeof s, "%02ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  return s;
+}
+
+// Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise.
+class Progress {
+ public:
+  Progress(std::uint64_t max_iterations, double stop_gap)
+      : tty_(::isatty(STDERR_FILENO)), max_(max_iterations), stop_gap_(stop_gap), start_(now()) {}
+
+  void operator()(const StepStatistics& st) {
+    const double elapsed = now() - start_;
+    if (!tty_ && elapsed - last_print_ < 5.0) return;
+    last_print_ = elapsed;
+    // The estimate extrapolates the largest gap's recent fall towards the stop gap, capped by the
+    // iteration limit: rough, but it moves the right way.
+    double remaining = max_ > st.iteration && st.iteration > 0 ? elapsed * double(max_ - st.iteration) / double(st.iteration) : 0;
+    if (previous_gap_ > st.max_slice_gap && std::isfinite(previous_gap_) && std::isfinite(st.max_slice_gap)) {
+      const double rate = (previous_gap_ - st.max_slice_gap) / std::max(elapsed - previous_time_, 1e-9);
+      remaining = std::min(remaining, std::max(0.0, (st.max_slice_gap - stop_gap_) / rate));
+    }
+    previous_gap_ = st.max_slice_gap;
+    previous_time_ = elapsed;
+    const int width = 24;
+    const int filled = static_cast<int>(width * std::clamp(elapsed / std::max(elapsed + remaining, 1e-9), 0.0, 1.0));
+    std::ostringstream line;
+    line << "iter " << st.iteration << "  gap " << (std::isfinite(st.max_slice_gap) ? std::to_string(st.max_slice_gap) : "inf")
+         << "  growing " << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices
+         << "  g " << st.min_growth << ".." << st.max_growth << "  " << clock_text(elapsed) << " (~" << clock_text(remaining)
+         << " left)";
+    if (tty_)
+      std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << line.str() << "\033[K"
+                << std::flush;
+    else
+      std::cerr << "animpak: " << line.str() << "\n";
+  }
+  void finish() {
+    if (tty_) std::cerr << "\n";
+  }
+
+ private:
+  static double now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+  bool tty_;
+  std::uint64_t max_;
+  double stop_gap_, start_, last_print_ = -1e9;
+  double previous_gap_ = std::numeric_limits<double>::infinity(), previous_time_ = 0;
+};
+
+std::string read_whole(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+int pack(const PackOptions& options) {
+  if (options.device != "reference")
+    throw UsageError("--device " + options.device + ": only the reference solver is available in this build");
+  Checkpoint checkpoint;
+  std::filesystem::path out = options.out;
+  if (options.resume) {
+    out = *options.resume;
+    checkpoint = read_checkpoint(out / "state.bin");
+  } else {
+    checkpoint.scene_file = std::filesystem::absolute(options.scene);
+    (void)load_scene(checkpoint.scene_file);  // validates and names the file on every error
+    checkpoint.scene_text = read_whole(checkpoint.scene_file);
+    checkpoint.seed = options.seed ? *options.seed : parse_scene(checkpoint.scene_text, checkpoint.scene_file,
+                                                                 checkpoint.scene_file.parent_path()).seed;
+  }
+  std::filesystem::create_directories(out);
+  LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value());
+  World& world = loaded.world;
+  if (options.max_iterations) world.params.max_iterations = static_cast<int>(*options.max_iterations);
+  for (const std::string& note : world.notes) std::cerr << "animpak: " << note << "\n";
+  std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
+            << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
+            << " envelope triangles; solver: reference (scalar)\n";
+
+  auto backend = make_reference_backend(world.topology, world.state, world.params);
+  Progress progress(static_cast<std::uint64_t>(world.params.max_iterations), world.params.stop_gap);
+  RunControl control;
+  control.max_iterations = static_cast<std::uint64_t>(world.params.max_iterations);
+  control.interrupt = &interrupted;
+  control.on_check = [&](const StepStatistics& st) { progress(st); };
+  interrupted.store(false);
+  auto previous = std::signal(SIGINT, on_sigint);
+  RunResult result = run_simulation(*backend, world.params, control);
+  std::signal(SIGINT, previous);
+  progress.finish();
+
+  checkpoint.backend = backend->name();
+  checkpoint.stop_reason = stop_reason_name(result.reason);
+  checkpoint.state = result.last_good;
+  write_checkpoint(out / "state.bin", checkpoint);
+  world.state = result.last_good;
+
+  PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds};
+  if (result.reason == StopReason::non_finite) {
+    write_stats(out / "stats.json", report);
+    const std::int32_t v = result.last.first_bad_vertex;
+    const ElementInstance& e = world.elements[world.topology.element[v]];
+    throw std::runtime_error("the simulation produced NaN/Inf at element " + e.name + ", slice " +
+                             std::to_string(world.topology.slice[v] - e.slice_begin) + " near iteration " +
+                             std::to_string(result.last.iteration) + "; the last finite state (iteration " +
+                             std::to_string(result.last_good.iteration) + ") is in " + (out / "state.bin").string() +
+                             "; lower params.dt or the stiffnesses");
+  }
+  std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
+            << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
+  if (options.render && result.reason != StopReason::interrupted) report.frames = render_frames(world, out, options.frames);
+  write_stats(out / "stats.json", report);
+  return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
+}
+
+int render(const RenderOptions& options) {
+  const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
+  LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
+  const auto frames = render_frames(loaded.world, options.dir, options.frames);
+  std::cerr << "animpak: rendered " << frames.size() << " frames into " << options.dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace animpak::cli

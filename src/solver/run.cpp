@@ -1,0 +1,54 @@
+#include "animpak/run.hpp"
+
+#include <chrono>
+
+namespace animpak {
+
+RunResult run_simulation(Backend& backend, const Params& params, const RunControl& control) {
+  const auto start = std::chrono::steady_clock::now();
+  RunResult result;
+  result.last_good = backend.state();
+  const auto rebuild = static_cast<std::uint64_t>(params.grid_rebuild_interval);
+  const auto check = static_cast<std::uint64_t>(params.check_interval);
+  for (;;) {
+    const std::uint64_t iteration = result.last_good.iteration + (result.steps_since_good);
+    // An interrupt is honoured on a grid-rebuild boundary, so a resumed run rebuilds the grid at the
+    // same steps as an uninterrupted one and stays bit-identical.
+    if (control.interrupt && control.interrupt->load() && iteration % rebuild == 0) {
+      result.reason = StopReason::interrupted;
+      break;
+    }
+    if (iteration >= control.max_iterations) {
+      result.reason = StopReason::max_iterations;
+      break;
+    }
+    backend.step();
+    ++result.steps_since_good;
+    if ((iteration + 1) % check != 0) continue;
+
+    result.last = backend.statistics();
+    if (!result.last.finite) {
+      result.reason = StopReason::non_finite;
+      break;
+    }
+    result.last_good = backend.state();
+    result.steps_since_good = 0;
+    if (control.on_check) control.on_check(result.last);
+    if (result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
+      result.reason = StopReason::gap;
+      break;
+    }
+    if (params.stop_growth > 0.0 && result.last.min_growth >= static_cast<float>(params.stop_growth)) {
+      result.reason = StopReason::growth;
+      break;
+    }
+  }
+  if (result.reason != StopReason::non_finite && result.steps_since_good > 0) {
+    result.last_good = backend.state();
+    result.steps_since_good = 0;
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace animpak
