@@ -1,0 +1,221 @@
+// Paper §3.1, first step (Fig. 2a): the art scaled into the unit square, and its outline offset by Δs so
+// every element is surrounded by a channel of negative space. Polygon booleans and the offset use Clipper
+// on int64 coordinates; the ring that comes out is checked to be simple with exact integer predicates.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+
+#include <polyclipping/clipper.hpp>
+
+#include "animpak/element.hpp"
+#include "animpak/error.hpp"
+
+namespace animpak {
+namespace {
+
+namespace cl = ClipperLib;
+
+// Unit-square coordinates are scaled by 1e9 into int64: 1e-9 precision, far below any sample spacing,
+// and far inside Clipper's 4.6e18 coordinate range even for art well outside the unit square.
+constexpr double clipper_scale = 1e9;
+// Largest distance between a round join and its polygon, in unit-square units (≈44 segments per full
+// circle at Δs = 0.04); the outline is resampled at 0.11 spacing afterwards, so finer arcs buy nothing.
+constexpr double arc_tolerance = 1e-4;
+
+std::string source_name(const ArtShape& art) {
+  return art.source.empty() ? std::string("<art>") : art.source.string();
+}
+
+Box art_box(const ArtShape& art) {
+  Box box;
+  for (const ArtPath& path : art.paths)
+    for (const Polyline& line : path.polylines)
+      for (Vec2 p : line.points) box.add(p);
+  return box;
+}
+
+cl::IntPoint to_int(Vec2 p) {
+  return {static_cast<cl::cInt>(std::llround(p.x * clipper_scale)),
+          static_cast<cl::cInt>(std::llround(p.y * clipper_scale))};
+}
+
+Vec2 to_unit(const cl::IntPoint& p) {
+  return {static_cast<double>(p.X) / clipper_scale, static_cast<double>(p.Y) / clipper_scale};
+}
+
+cl::Path to_path(const Polyline& line) {
+  cl::Path path;
+  path.reserve(line.points.size());
+  for (Vec2 p : line.points) path.push_back(to_int(p));
+  return path;
+}
+
+cl::Paths union_of(const cl::Paths& paths, cl::PolyFillType rule) {
+  cl::Clipper clipper;
+  clipper.AddPaths(paths, cl::ptSubject, true);
+  cl::Paths out;
+  clipper.Execute(cl::ctUnion, out, rule, rule);
+  return out;
+}
+
+// The visible area of one path: its fill under its own fill rule (SVG fills open subpaths as if closed),
+// plus its stroke, which is visible art too and so must lie inside the element.
+cl::Paths painted_area(const ArtPath& path) {
+  cl::Paths fill;
+  cl::ClipperOffset stroke(2.0, arc_tolerance * clipper_scale);
+  bool stroked = path.stroke.enabled && path.stroke_width > 0.0;
+  for (const Polyline& line : path.polylines) {
+    cl::Path p = to_path(line);
+    if (p.empty()) continue;
+    if ((line.closed || path.fill.enabled) && p.size() >= 3) fill.push_back(p);
+    if (stroked) stroke.AddPath(p, cl::jtRound, line.closed ? cl::etClosedLine : cl::etOpenRound);
+  }
+  cl::Paths area =
+      union_of(fill, path.fill_rule == FillRule::evenodd ? cl::pftEvenOdd : cl::pftNonZero);
+  if (stroked) {
+    cl::Paths band;
+    stroke.Execute(band, 0.5 * path.stroke_width * clipper_scale);
+    area.insert(area.end(), band.begin(), band.end());
+  }
+  return area;
+}
+
+// 128-bit products of int64 differences cannot overflow, so the predicates below are exact.
+__extension__ typedef __int128 wide;
+
+int orient(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+  const wide d = static_cast<wide>(b.X - a.X) * (c.Y - a.Y) - static_cast<wide>(b.Y - a.Y) * (c.X - a.X);
+  return (d > 0) - (d < 0);
+}
+
+bool on_segment(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c) {
+  return std::min(a.X, b.X) <= c.X && c.X <= std::max(a.X, b.X) && std::min(a.Y, b.Y) <= c.Y &&
+         c.Y <= std::max(a.Y, b.Y);
+}
+
+bool segments_touch(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c,
+                    const cl::IntPoint& d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) ||
+         (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
+}
+
+bool ring_is_simple(const cl::Path& ring) {
+  const std::size_t n = ring.size();
+  if (n < 3) return false;
+  // Sweep over x: segments sorted by their left end; each is tested only against those whose x-range
+  // overlaps it. Neighbours along the ring share exactly one end point and are not tested.
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  auto lo = [&](std::size_t i) { return std::min(ring[i].X, ring[(i + 1) % n].X); };
+  auto hi = [&](std::size_t i) { return std::max(ring[i].X, ring[(i + 1) % n].X); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = order[k];
+    for (std::size_t m = k + 1; m < n && lo(order[m]) <= hi(i); ++m) {
+      const std::size_t j = order[m];
+      const bool adjacent = (i + 1) % n == j || (j + 1) % n == i;
+      if (adjacent) {
+        // Adjacent segments may only meet at their shared end: reject a fold back onto itself.
+        const std::size_t first = (i + 1) % n == j ? i : j;
+        const cl::IntPoint& a = ring[first];
+        const cl::IntPoint& s = ring[(first + 1) % n];
+        const cl::IntPoint& c = ring[(first + 2) % n];
+        const wide along = static_cast<wide>(c.X - s.X) * (a.X - s.X) + static_cast<wide>(c.Y - s.Y) * (a.Y - s.Y);
+        if (n > 3 && orient(a, s, c) == 0 && along > 0)
+          return false;
+        continue;
+      }
+      if (segments_touch(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+NormalizedArt normalize_art(const ArtShape& art) {
+  const Box box = art_box(art);
+  if (box.empty())
+    throw InputError(source_name(art) + ": the art has no drawable point; an element needs at least one "
+                     "filled or stroked path");
+  const double side = std::max(box.width(), box.height());
+  if (!(side > 0.0) || !std::isfinite(side))
+    throw InputError(source_name(art) + ": the art's bounding box has zero size; an element needs an "
+                     "area to pack");
+  NormalizedArt out;
+  out.frame.art_origin = box.min;
+  out.frame.scale = 1.0 / side;
+  // §3.1: "we scale the shape to fit a unit square"; the shorter side is centred.
+  out.frame.unit_origin = {0.5 * (1.0 - box.width() / side), 0.5 * (1.0 - box.height() / side)};
+  out.art = art;
+  for (ArtPath& path : out.art.paths) {
+    for (Polyline& line : path.polylines)
+      for (Vec2& p : line.points) p = out.frame.to_unit(p);
+    path.stroke_width *= out.frame.scale;
+  }
+  return out;
+}
+
+Outline element_outline(const NormalizedArt& art, double offset) {
+  const std::string name = source_name(art.art);
+  cl::Paths all;
+  for (const ArtPath& path : art.art.paths) {
+    cl::Paths area = painted_area(path);
+    all.insert(all.end(), area.begin(), area.end());
+  }
+  const cl::Paths shape = union_of(all, cl::pftNonZero);
+  double shape_area = 0.0;
+  for (const cl::Path& p : shape) shape_area += cl::Area(p);
+  if (!(shape_area > 0.0))
+    throw InputError(name + ": the art encloses no area (no filled region and no stroke with a width)");
+
+  // §3.1, Fig. 2a: offset by Δs with round joins so the channel of negative space has constant width.
+  cl::ClipperOffset grow(2.0, arc_tolerance * clipper_scale);
+  grow.AddPaths(shape, cl::jtRound, cl::etClosedPolygon);
+  cl::Paths grown;
+  grow.Execute(grown, offset * clipper_scale);
+  // Strictly simple output splits pieces that only touch at a vertex, so the kept ring is simple.
+  cl::Clipper clean;
+  clean.StrictlySimple(true);
+  clean.AddPaths(grown, cl::ptSubject, true);
+  cl::PolyTree tree;
+  clean.Execute(cl::ctUnion, tree, cl::pftNonZero, cl::pftNonZero);
+
+  // Keep the largest outer piece; its holes are dropped because the element is solid (§3.1 samples only
+  // "the outer boundary of the offset path").
+  std::vector<std::pair<double, const cl::Path*>> pieces;
+  for (const cl::PolyNode* node : tree.Childs)
+    pieces.emplace_back(std::fabs(cl::Area(node->Contour)), &node->Contour);
+  std::sort(pieces.begin(), pieces.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (pieces.empty() || !(pieces.front().first > 0.0))
+    throw InputError(name + ": the offset outline has no area");
+
+  Outline out;
+  if (pieces.size() > 1) {
+    std::ostringstream note;
+    note << name << ": kept the largest of " << pieces.size() << " disjoint outline pieces (area "
+         << pieces.front().first / (clipper_scale * clipper_scale) << "); dropped " << pieces.size() - 1
+         << " with area";
+    for (std::size_t i = 1; i < pieces.size(); ++i)
+      note << (i > 1 ? ", " : " ") << pieces[i].first / (clipper_scale * clipper_scale);
+    note << " (their art is still drawn, bound to the nearest triangle)";
+    out.notes.push_back(note.str());
+  }
+
+  cl::Path ring = *pieces.front().second;
+  // Drop repeated and collinear points (within 2 integer units, i.e. 2e-9).
+  cl::CleanPolygon(ring, 2.0);
+  if (ring.size() < 3 || !ring_is_simple(ring))
+    throw InputError(name + ": the outline stays self-intersecting after cleaning; simplify the art's "
+                     "paths");
+  out.ring.reserve(ring.size());
+  for (const cl::IntPoint& p : ring) out.ring.push_back(to_unit(p));
+  if (signed_area(out.ring) < 0.0) std::reverse(out.ring.begin(), out.ring.end());
+  return out;
+}
+
+}  // namespace animpak

@@ -1,0 +1,79 @@
+// Validity of one slice (§3.1, Fig. 2b–c), shared by the synthetic and the real-shape tests.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+
+#include "element/fixtures.hpp"
+
+namespace animpak::test {
+
+inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Params& params) {
+  const int v_count = static_cast<int>(mesh.vertices.size());
+  const int b = mesh.boundary_count;
+  REQUIRE(b >= 3);
+  REQUIRE(b <= v_count);
+  std::set<Edge> edges(mesh.edges.begin(), mesh.edges.end());
+  CHECK(edges.size() == mesh.edges.size());
+  std::set<int> used;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec2 p = mesh.vertices[t[0]], q = mesh.vertices[t[1]], r = mesh.vertices[t[2]];
+    CHECK(0.5 * cross(q - p, r - p) > 1e-12);  // counter-clockwise and not degenerate
+    for (int k = 0; k < 3; ++k) {
+      used.insert(t[k]);
+      const int a = std::min(t[k], t[(k + 1) % 3]), c = std::max(t[k], t[(k + 1) % 3]);
+      CHECK(edges.count({a, c}) == 1);
+    }
+  }
+  CHECK(static_cast<int>(used.size()) == v_count);  // every sample, boundary ones included, is a vertex
+  for (int i = 0; i < b; ++i) CHECK(edges.count({std::min(i, (i + 1) % b), std::max(i, (i + 1) % b)}) == 1);
+  // A disc: V − E + F = 1.
+  CHECK(v_count - static_cast<int>(mesh.edges.size()) + static_cast<int>(mesh.triangles.size()) == 1);
+  std::vector<Vec2> boundary(mesh.vertices.begin(), mesh.vertices.begin() + b);
+  CHECK(signed_area(boundary) > 0.0);
+  for (int i = b; i < v_count; ++i) {
+    CHECK(ring_contains(outline.ring, mesh.vertices[i]));
+    CHECK(ring_contains(boundary, mesh.vertices[i]));
+  }
+  // Boundary samples lie on the outline, evenly spaced by arc length: walk the outline and record the
+  // arc length at which each sample is met.
+  double perimeter = 0.0;
+  const auto& ring = outline.ring;
+  for (std::size_t i = 0; i < ring.size(); ++i) perimeter += norm(ring[(i + 1) % ring.size()] - ring[i]);
+  const double step = perimeter / b;
+  CHECK(step == Approx(params.boundary_spacing).epsilon(0.5));
+  double arc = 0.0;
+  int next = 0;
+  for (std::size_t i = 0; i < ring.size() && next < b; ++i) {
+    const Vec2 a = ring[i], c = ring[(i + 1) % ring.size()];
+    const double len = norm(c - a);
+    while (next < b) {
+      const Vec2 s = mesh.vertices[next];
+      const double along = dot(s - a, c - a) / std::max(len, 1e-300);
+      if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 || along > len + 1e-9)
+        break;
+      CHECK(std::fabs(arc + along - next * step) <= 1e-9 * perimeter);
+      ++next;
+    }
+    arc += len;
+  }
+  CHECK(next == b);
+  // Shear and negative-space edges are new edges, unique.
+  std::set<Edge> extra;
+  for (const Edge& e : mesh.shear_edges) CHECK(edges.count(e) == 0);
+  for (const Edge& e : mesh.negative_space_edges) CHECK(edges.count(e) == 0);
+  extra.insert(mesh.shear_edges.begin(), mesh.shear_edges.end());
+  CHECK(extra.size() == mesh.shear_edges.size());
+  std::set<Edge> neg(mesh.negative_space_edges.begin(), mesh.negative_space_edges.end());
+  CHECK(neg.size() == mesh.negative_space_edges.size());
+  // Negative-space edges join boundary samples and run outside the outline (midpoint outside, no crossing).
+  for (const Edge& e : mesh.negative_space_edges) {
+    CHECK(e[0] < b);
+    CHECK(e[1] < b);
+    CHECK_FALSE(ring_contains(boundary, (mesh.vertices[e[0]] + mesh.vertices[e[1]]) * 0.5));
+  }
+}
+
+}  // namespace animpak::test
