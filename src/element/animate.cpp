@@ -166,8 +166,6 @@ class SwimBend {
     return points;
   }
 
-  Vec2 head() const { return head_; }
-
  private:
   // amplitude · L · w(u) · sin(2π(u/λ − count·t)), w(u) = u²: the head (u = 0) stays put, the tail
   // swings widest, as in carangiform swimming.
