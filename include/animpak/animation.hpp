@@ -21,6 +21,7 @@ class Spline {
  private:
   std::vector<double> times_, values_;
   bool loop_;
+  std::vector<double> moments_;  ///< second derivatives at the keys, solved once in the constructor
 };
 
 /// ARAP (Sorkine & Alexa 2007) on one slice mesh, over its triangulation edges. The system matrix is

@@ -105,7 +105,7 @@ struct SpacetimeElement {
   std::vector<double> x, y, t;  ///< animated positions of every vertex, slice-major
   SpringCsr springs;            ///< edge, shear and negative-space springs on every slice, plus time springs
   std::vector<Triangle> envelope;  ///< two time edges and one boundary edge each; vertex ids
-  std::vector<std::string> notes;  ///< what construction changed, e.g. outline pieces dropped
+  std::vector<std::string> notes;  ///< what building it changed, e.g. the outline's dropped pieces
 
   int vertices_per_slice() const { return static_cast<int>(slice.vertices.size()); }
   int vertex_count() const { return slice_count * vertices_per_slice(); }
