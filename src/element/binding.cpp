@@ -18,13 +18,6 @@ std::array<double, 3> barycentric(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
   return {1.0 - wb - wc, wb, wc};
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double u = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + ab * u));
-}
-
 // Uniform bucket grid over the triangles' boxes: art has thousands of points, slices a few dozen
 // triangles, and each point then tests only the triangles of its cell.
 class TriangleGrid {

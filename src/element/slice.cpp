@@ -65,22 +65,6 @@ std::vector<Vec2> resample(const std::vector<Vec2>& ring, int count) {
   return out;
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double u = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + ab * u));
-}
-
-bool inside(const std::vector<Vec2>& poly, Vec2 p) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
-}
-
 // Bridson Poisson-disk sampling over the boundary's box; samples are then kept only when inside the
 // boundary polygon and clear of it.
 std::vector<Vec2> interior_samples(const std::vector<Vec2>& boundary, double spacing, std::uint64_t seed) {
@@ -128,7 +112,7 @@ std::vector<Vec2> interior_samples(const std::vector<Vec2>& boundary, double spa
   std::vector<Vec2> kept;
   const std::size_t b = boundary.size();
   for (Vec2 p : points) {
-    if (!inside(boundary, p)) continue;
+    if (!ring_contains(boundary, p)) continue;
     double d = 1e300;
     for (std::size_t i = 0; i < b; ++i)
       d = std::min(d, segment_distance(p, boundary[i], boundary[(i + 1) % b]));

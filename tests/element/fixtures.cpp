@@ -43,23 +43,4 @@ bool ring_simple(const std::vector<Vec2>& ring) {
   return true;
 }
 
-bool ring_contains(const std::vector<Vec2>& poly, Vec2 p) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
-}
-
-double ring_distance(const std::vector<Vec2>& ring, Vec2 p) {
-  double d = 1e300;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    const Vec2 a = ring[i], ab = ring[(i + 1) % n] - a;
-    const double u = std::clamp(dot(p - a, ab) / std::max(dot(ab, ab), 1e-300), 0.0, 1.0);
-    d = std::min(d, norm(p - (a + ab * u)));
-  }
-  return d;
-}
-
 }  // namespace animpak::test

@@ -64,9 +64,5 @@ Built build(const ArtShape& art, const Params& params = {}, std::uint64_t seed =
 
 /// Exact-enough simplicity test of a closed ring (no two non-adjacent edges meet).
 bool ring_simple(const std::vector<Vec2>& ring);
-/// Point in polygon by crossings.
-bool ring_contains(const std::vector<Vec2>& ring, Vec2 p);
-/// Distance from p to the closed ring's edges.
-double ring_distance(const std::vector<Vec2>& ring, Vec2 p);
 
 }  // namespace animpak::test

@@ -13,7 +13,7 @@ namespace {
 
 // A 5 × 5 grid filling [0.3, 0.7]², its square outline, and the identity frame.
 SliceMesh square() { return grid_slice(5, 5, 0.1, {0.3, 0.3}); }
-Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}}; }
+Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}, {}}; }
 const ArtFrame identity{};
 
 double mesh_area(const SliceMesh& mesh, const std::vector<Vec2>& p) {
@@ -82,7 +82,7 @@ TEST_CASE("animate_slices: pulse scales the area by (1 + amplitude)² at its pea
 TEST_CASE("animate_slices: swim bends the body with a wave that loops, the head steadier than the tail") {
   // A long strip, 1.0 × 0.15, head at the left (the pivot marks it).
   const SliceMesh mesh = grid_slice(21, 4, 0.05, {0.0, 0.4});
-  const Outline outline{{{0.0, 0.55}, {1.0, 0.55}, {1.0, 0.4}, {0.0, 0.4}}, {}};
+  const Outline outline{{{0.0, 0.55}, {1.0, 0.55}, {1.0, 0.4}, {0.0, 0.4}}, {}, {}};
   AnimationSpec spec;
   spec.preset = AnimationPreset::swim;
   spec.amplitude = 0.15;

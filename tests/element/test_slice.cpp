@@ -25,7 +25,10 @@ SliceMesh boundary_only(const std::vector<Vec2>& ring, double spacing_scale = 1.
 }  // namespace
 
 TEST_CASE("build_slice makes a valid disc on synthetic shapes", "[element][slice]") {
-  const Params params;
+  // Finer than the defaults so that even the thin bar gets interior samples to check.
+  Params params;
+  params.boundary_spacing = 0.1;
+  params.interior_spacing = 0.08;
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art(), two_blobs_art()}) {
     INFO(art.source);
     const Built b = build(art, params);

@@ -22,7 +22,9 @@ TEST_CASE("param_table: every entry is unique, in range at its default, and docu
     const double v = param_value(defaults, info);
     CHECK(v >= info.min);
     CHECK(v <= info.max);
-    CHECK(text.str().find("`" + std::string(info.name) + "`") != std::string::npos);
+    std::string key = "`";
+    key.append(info.name).append("`");
+    CHECK(text.str().find(key) != std::string::npos);
   }
   CHECK(names.size() == param_table().size());
 }
