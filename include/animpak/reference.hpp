@@ -1,0 +1,164 @@
+// The scalar reference solver (paper §5): one stateless function per force, constraint and query,
+// written to be read next to the paper. It is the specification the OpenCL kernels are tested against
+// bit for bit, so every function does its float arithmetic in one fixed, documented order (no FMA,
+// no double intermediates) and every force is GATHERED: a vertex's force is computed from one
+// snapshot of all positions and written only to that vertex.
+//
+// Float constants: each double in Params is converted once with static_cast<float> (products such as
+// the velocity cap are formed in double first, then converted), exactly as the host hands them to the
+// kernels.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "animpak/element.hpp"
+#include "animpak/params.hpp"
+#include "animpak/solver.hpp"
+
+namespace animpak::reference {
+
+// ---- collision grid (§5.1), grid.cpp ----------------------------------------------------------------
+
+/// Envelope-triangle centroids binned into cubic cells over the unit cube (x, y, t), sorted by cell
+/// with a stable counting sort (count → exclusive scan → scatter), as cuNSearch does.
+struct CollisionGrid {
+  std::int32_t n = 0;        ///< cells per axis
+  float cell = 0.0f;         ///< cell edge
+  std::vector<float> cx, cy, ct;           ///< centroid of envelope triangle i
+  std::vector<std::int32_t> triangle_cell; ///< linear cell of envelope triangle i
+  std::vector<std::int32_t> cell_start;    ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
+  std::vector<std::int32_t> sorted_triangles;  ///< triangle ids, by cell, increasing id within a cell
+};
+
+/// Cells per axis for a cell edge: the smallest n with n · cell ≥ 1 (25 for 0.04). Throws
+/// std::invalid_argument unless 0 < cell_size ≤ 1.
+std::int32_t grid_cells_per_axis(double cell_size);
+
+/// Cell index of one coordinate: clamp(floor(c / cell), 0, n − 1); NaN goes to cell 0.
+std::int32_t grid_axis_cell(float c, float cell, std::int32_t n);
+
+/// Centroid (a + b + c) / 3 of envelope triangle i, summed left to right.
+Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_t i);
+
+CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params);
+
+/// Envelope triangles of elements other than `own_element` whose centroids lie in the 3×3×3 block of
+/// cells around q's cell ("near"), or in the 98 cells of the outer shell of the 5×5×5 block ("far").
+/// Cells outside the grid are skipped. Order: cells by dz, dy, dx ascending, then sorted order within
+/// a cell. `out` is cleared first.
+void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+                    std::vector<std::int32_t>& out);
+void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+                   std::vector<std::int32_t>& out);
+
+// ---- geometry helpers ---------------------------------------------------------------------------------
+
+/// Closest point to p on triangle abc in (x, y, t): Ericson, Real-Time Collision Detection §5.1.5.
+/// closest_point.cpp.
+Vec3f closest_point_on_triangle(Vec3f p, Vec3f a, Vec3f b, Vec3f c);
+
+/// One step of the even–odd (ray crossing) point-in-polygon test: whether the ray from (px, py)
+/// towards +x crosses segment (ax, ay)–(bx, by). Toggle "inside" on every true. boundary.cpp.
+bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by);
+
+// ---- forces (§5); each returns the force on vertex v only ---------------------------------------------
+
+struct RepulsionResult {
+  Vec3f force;
+  float closest = std::numeric_limits<float>::infinity();  ///< distance to the nearest other element
+};
+
+/// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
+/// `near` triangles, then over centroids of `far` triangles. The force is zero when `inside` (Eq. 3
+/// takes over) or v is not a boundary vertex; `closest` is computed for every boundary vertex.
+/// repulsion.cpp.
+RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
+                                const CollisionGrid& grid, std::int32_t v,
+                                const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
+                                bool inside);
+
+/// Whether boundary vertex v lies inside another element that owns one of the `near` envelope
+/// triangles: that element's boundary polygon interpolated linearly at v's t, even–odd test in x, y.
+/// overlap.cpp.
+bool inside_other_element(const Topology& topo, const SimState& state, std::int32_t v,
+                          const std::vector<std::int32_t>& near);
+
+/// Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles. overlap.cpp.
+Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+/// Stiffness of one spring class (Eq. 2's k_edg per class).
+float spring_stiffness(const Params& params, SpringClass c);
+
+/// Eq. 2 summed over v's CSR slots in slot order. springs.cpp.
+Vec3f spring_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+/// Eq. 2 for the target-point spring of an anchor vertex (rest length 0, class target); zero for
+/// vertices without a target. target.cpp.
+Vec3f target_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+/// Eq. 4: k_bdr (p_b − x) in x, y for a vertex outside the container. boundary.cpp.
+Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+/// Current centroid of every slice (mean of its vertices in index order), for Eq. 5. torsion.cpp.
+void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx,
+                     std::vector<float>& cy);
+
+/// Eq. 5 with the slice centroid (cx, cy) of v's slice. torsion.cpp.
+Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
+                    float cx, float cy);
+
+/// Eq. 6: k_tmp (rest_t − t) along t. temporal.cpp.
+Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+// ---- one step ------------------------------------------------------------------------------------------
+
+/// Per-vertex force components, structure of arrays.
+struct ForceField {
+  std::vector<float> x, y, t;
+  void assign(std::size_t n);  ///< n zero vectors
+  void set(std::int32_t v, Vec3f f) { x[v] = f.x; y[v] = f.y; t[v] = f.t; }
+  Vec3f at(std::int32_t v) const { return {x[v], y[v], t[v]}; }
+};
+
+/// Every force of Eq. 7 separately (the equivalence suite and `validate` compare them one by one).
+struct ForceBreakdown {
+  ForceField repulsion, springs, target, boundary, overlap, torsion, temporal;
+};
+
+struct StepForces {
+  ForceField total;                 ///< Eq. 7 per vertex
+  std::vector<float> closest;       ///< per vertex; +inf for interior vertices and when nothing is near
+  std::vector<std::uint8_t> inside; ///< per vertex: 1 when found inside another element (growth pauses)
+};
+
+/// Eq. 7 for every vertex from one snapshot of positions. step_forces.cpp.
+StepForces step_forces(const Topology& topo, const SimState& state, const Params& params,
+                       const CollisionGrid& grid, ForceBreakdown* out);
+
+/// Symplectic Euler with the velocity cap (§5). integrate.cpp.
+void integrate(const ForceField& force, const Params& params, SimState& state);
+
+// ---- constraints (§5.2), constraints.cpp ------------------------------------------------------------------
+
+/// End-to-end: element e's first slice to t = 0, last slice to t = 1.
+void apply_end_to_end(const Topology& topo, SimState& state, std::int32_t e);
+
+/// Simultaneity: every inner slice of element e snapped to the mean t of its vertices.
+void apply_simultaneity(const Topology& topo, SimState& state, std::int32_t e);
+
+/// Loop: both vertices of every loop pair move to the average of their x, y; t untouched.
+void apply_loop(const Topology& topo, SimState& state);
+
+// ---- growth (§5.3), growth.cpp -------------------------------------------------------------------------
+
+/// Grows by growth_rate · Δt_sim (up to max_growth) every slice none of whose vertices is `inside`
+/// another element; `grew` marks them. Returns how many grew.
+std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& inside, const Params& params,
+                         SimState& state, std::vector<std::uint8_t>& grew);
+
+/// Recomputes the rest length of every spring with an end on a slice marked in `grew`.
+void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& grew, SimState& state);
+
+}  // namespace animpak::reference

@@ -1,0 +1,112 @@
+// Collision grid of paper §5.1: envelope-triangle centroids in a uniform grid over the unit cube,
+// queried by the 3×3×3 block ("near": exact closest points, overlap tests) and the outer shell of
+// the 5×5×5 block ("far": centroids only). Built as count → exclusive scan → stable scatter so the
+// kernels can build the same arrays and every run visits triangles in the same order.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "animpak/reference.hpp"
+
+namespace animpak::reference {
+
+std::int32_t grid_cells_per_axis(double cell_size) {
+  if (!(cell_size > 0.0 && cell_size <= 1.0))
+    throw std::invalid_argument("collision grid: cell_size must be in (0, 1]");
+  // The tolerance keeps 1 / 0.04 at 25 cells rather than 26 when the quotient rounds just above 25.
+  return static_cast<std::int32_t>(std::ceil(1.0 / cell_size - 1e-9));
+}
+
+std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
+  float f = std::floor(c / cell);
+  // Clamp in float before converting: points outside the cube (and NaN) land in border cells, and
+  // the float-to-int conversion never sees an out-of-range value.
+  if (!(f >= 0.0f)) f = 0.0f;
+  const float last = static_cast<float>(n - 1);
+  if (f > last) f = last;
+  return static_cast<std::int32_t>(f);
+}
+
+Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_t i) {
+  const std::int32_t a = topo.env_a[i], b = topo.env_b[i], c = topo.env_c[i];
+  return {(state.x[a] + state.x[b] + state.x[c]) / 3.0f, (state.y[a] + state.y[b] + state.y[c]) / 3.0f,
+          (state.t[a] + state.t[b] + state.t[c]) / 3.0f};
+}
+
+CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params) {
+  CollisionGrid g;
+  g.n = grid_cells_per_axis(params.cell_size);
+  g.cell = static_cast<float>(params.cell_size);
+  const std::int32_t count = topo.envelope_count();
+  const std::int32_t cells = g.n * g.n * g.n;
+  g.cx.resize(count);
+  g.cy.resize(count);
+  g.ct.resize(count);
+  g.triangle_cell.resize(count);
+
+  // Insert: centroid and cell of every triangle, and the number of triangles per cell.
+  std::vector<std::int32_t> cell_count(cells, 0);
+  for (std::int32_t i = 0; i < count; ++i) {
+    const Vec3f c = envelope_centroid(topo, state, i);
+    g.cx[i] = c.x;
+    g.cy[i] = c.y;
+    g.ct[i] = c.t;
+    const std::int32_t ix = grid_axis_cell(c.x, g.cell, g.n);
+    const std::int32_t iy = grid_axis_cell(c.y, g.cell, g.n);
+    const std::int32_t it = grid_axis_cell(c.t, g.cell, g.n);
+    g.triangle_cell[i] = (it * g.n + iy) * g.n + ix;
+    ++cell_count[g.triangle_cell[i]];
+  }
+
+  // Exclusive scan: where each cell's range starts; the extra last entry is the total.
+  g.cell_start.assign(cells + 1, 0);
+  for (std::int32_t c = 0; c < cells; ++c) g.cell_start[c + 1] = g.cell_start[c] + cell_count[c];
+
+  // Scatter in increasing triangle order, so each cell lists its triangles in increasing id (stable).
+  std::vector<std::int32_t> cursor(g.cell_start.begin(), g.cell_start.end() - 1);
+  g.sorted_triangles.resize(count);
+  for (std::int32_t i = 0; i < count; ++i) g.sorted_triangles[cursor[g.triangle_cell[i]]++] = i;
+  return g;
+}
+
+namespace {
+
+// Visits the cells of the (2r+1)³ block around q's cell whose Chebyshev distance from it is at least
+// `min_ring`, in dz, dy, dx ascending order, and collects their triangles of other elements.
+void collect(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+             std::int32_t r, std::int32_t min_ring, std::vector<std::int32_t>& out) {
+  out.clear();
+  const std::int32_t qx = grid_axis_cell(q.x, grid.cell, grid.n);
+  const std::int32_t qy = grid_axis_cell(q.y, grid.cell, grid.n);
+  const std::int32_t qt = grid_axis_cell(q.t, grid.cell, grid.n);
+  for (std::int32_t dz = -r; dz <= r; ++dz) {
+    for (std::int32_t dy = -r; dy <= r; ++dy) {
+      for (std::int32_t dx = -r; dx <= r; ++dx) {
+        const std::int32_t ring = std::max(std::abs(dz), std::max(std::abs(dy), std::abs(dx)));
+        if (ring < min_ring) continue;
+        const std::int32_t cx = qx + dx, cy = qy + dy, ct = qt + dz;
+        if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
+        const std::int32_t c = (ct * grid.n + cy) * grid.n + cx;
+        for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
+          const std::int32_t tri = grid.sorted_triangles[k];
+          if (topo.env_element[tri] != own_element) out.push_back(tri);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+                    std::vector<std::int32_t>& out) {
+  collect(grid, topo, q, own_element, 1, 0, out);
+}
+
+void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+                   std::vector<std::int32_t>& out) {
+  collect(grid, topo, q, own_element, 2, 2, out);
+}
+
+}  // namespace animpak::reference

@@ -1,0 +1,56 @@
+// Repulsion force, paper Eq. 1: F_rpl = k_rpl Σ_i u/|u| · 1/(ε + |u|²), u = x − x_i, on vertices of
+// slice boundaries. The x_i are, in this order, the exact closest points on the near envelope
+// triangles of other elements, then the centroids of the far ones (§5.1). All terms are summed, as
+// the authors' code does, in the grid's visiting order; k_rpl multiplies the sum once at the end.
+#include <cmath>
+
+#include "animpak/reference.hpp"
+
+namespace animpak::reference {
+
+namespace {
+
+// Adds one term of Eq. 1. A point exactly at x has no direction, so it adds nothing rather than NaN.
+void add_term(float ux, float uy, float ut, float eps, Vec3f& sum) {
+  const float d2 = ux * ux + uy * uy + ut * ut;
+  if (!(d2 > 0.0f)) return;
+  const float inv_len = 1.0f / std::sqrt(d2);
+  const float w = inv_len * (1.0f / (eps + d2));
+  sum.x = sum.x + ux * w;
+  sum.y = sum.y + uy * w;
+  sum.t = sum.t + ut * w;
+}
+
+}  // namespace
+
+RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
+                                const CollisionGrid& grid, std::int32_t v,
+                                const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
+                                bool inside) {
+  RepulsionResult r;
+  if ((topo.flags[v] & vertex_boundary) == 0) return r;
+  const Vec3f x{state.x[v], state.y[v], state.t[v]};
+  const float eps = static_cast<float>(params.repulsion_epsilon);
+  Vec3f sum;
+  float closest2 = std::numeric_limits<float>::infinity();
+  for (const std::int32_t tri : near) {
+    const std::int32_t a = topo.env_a[tri], b = topo.env_b[tri], c = topo.env_c[tri];
+    const Vec3f p = closest_point_on_triangle(x, {state.x[a], state.y[a], state.t[a]},
+                                              {state.x[b], state.y[b], state.t[b]},
+                                              {state.x[c], state.y[c], state.t[c]});
+    const float ux = x.x - p.x, uy = x.y - p.y, ut = x.t - p.t;
+    const float d2 = ux * ux + uy * uy + ut * ut;
+    if (d2 < closest2) closest2 = d2;
+    add_term(ux, uy, ut, eps, sum);
+  }
+  for (const std::int32_t tri : far) add_term(x.x - grid.cx[tri], x.y - grid.cy[tri], x.t - grid.ct[tri], eps, sum);
+
+  // The closest distance feeds growth and the stop test even while the vertex is inside.
+  r.closest = std::sqrt(closest2);
+  if (inside) return r;
+  const float k = static_cast<float>(params.k_repulsion);
+  r.force = {k * sum.x, k * sum.y, k * sum.t};
+  return r;
+}
+
+}  // namespace animpak::reference

@@ -1,0 +1,199 @@
+// Closed-form cases for Eq. 2, 4, 5, 6 and the target spring on two or three vertices.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "tiny_worlds.hpp"
+
+using namespace animpak;
+using namespace animpak::reference;
+using animpak::test::WorldBuilder;
+
+namespace {
+
+// Two vertices of one element, one spring of class c and rest length `rest` between them.
+test::World spring_pair(test::Ring ring, SpringClass c, float rest) {
+  WorldBuilder b;
+  b.add_element({{ring, 0.5f}}, false);
+  b.add_spring(0, 1, c, rest);
+  return b.build();
+}
+
+}  // namespace
+
+TEST_CASE("springs: Eq. 2, one stretched spring pulls both ends together with k (|u| - l)^2") {
+  const Params p;
+  // |u| = 0.625, l = 0.5: stretch 0.125, k = 10 → 10 · 0.015625 = 0.15625, all exact in float.
+  const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.5f);
+  const Vec3f fa = spring_force(w.topo, w.state, p, 0), fb = spring_force(w.topo, w.state, p, 1);
+  CHECK(fa.x == 0.15625f);
+  CHECK(fa.y == 0.0f);
+  CHECK(fa.t == 0.0f);
+  CHECK(fb.x == -0.15625f);
+}
+
+TEST_CASE("springs: a spring stretched by 0.1 with k = 10 gives 0.1 along the edge") {
+  const Params p;
+  const test::World w = spring_pair({{0.2f, 0.3f}, {0.2f, 0.9f}}, SpringClass::shear, 0.5f);
+  const Vec3f fa = spring_force(w.topo, w.state, p, 0);
+  CHECK(fa.x == 0.0f);
+  CHECK(fa.y == Approx(0.1f).margin(1e-6));
+}
+
+TEST_CASE("springs: a compressed spring pushes the ends apart") {
+  const Params p;
+  const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.75f);
+  CHECK(spring_force(w.topo, w.state, p, 0).x == -0.15625f);
+  CHECK(spring_force(w.topo, w.state, p, 1).x == 0.15625f);
+}
+
+TEST_CASE("springs: each class uses its own stiffness") {
+  const Params p;
+  const std::pair<SpringClass, double> classes[] = {{SpringClass::edge, p.k_edge},
+                                                    {SpringClass::shear, p.k_shear},
+                                                    {SpringClass::negative_space, p.k_negative_space},
+                                                    {SpringClass::time, p.k_time},
+                                                    {SpringClass::target, p.k_target}};
+  for (const auto& [c, k] : classes) {
+    INFO(static_cast<int>(c));
+    const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, c, 0.5f);
+    CHECK(spring_force(w.topo, w.state, p, 0).x == Approx(k * 0.015625).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("springs: a spring at rest or with coincident ends gives no force") {
+  const Params p;
+  const test::World rest = spring_pair({{0.25f, 0.5f}, {0.75f, 0.5f}}, SpringClass::edge, 0.5f);
+  CHECK(spring_force(rest.topo, rest.state, p, 0).x == 0.0f);
+  const test::World w = spring_pair({{0.5f, 0.5f}, {0.5f, 0.5f}}, SpringClass::edge, 0.5f);
+  const Vec3f f = spring_force(w.topo, w.state, p, 0);
+  CHECK((f.x == 0.0f && f.y == 0.0f && f.t == 0.0f));
+}
+
+TEST_CASE("springs: a time spring acts along t, summed over the CSR slots") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{{{0.5f, 0.5f}}, 0.25f}, {{{0.5f, 0.5f}}, 0.5f}, {{{0.5f, 0.5f}}, 0.75f}}, false);
+  b.add_spring(0, 1, SpringClass::time, 0.125f);  // stretched by 0.125: pulls vertex 1 down in t
+  b.add_spring(1, 2, SpringClass::time, 0.5f);    // compressed by 0.25: pushes vertex 1 down in t
+  const test::World w = b.build();
+  const Vec3f f = spring_force(w.topo, w.state, p, 1);
+  CHECK(f.t == Approx(-0.01 * 0.015625 - 0.01 * 0.0625).epsilon(1e-6));
+  CHECK(f.x == 0.0f);
+}
+
+TEST_CASE("target: a zero-length Eq. 2 spring from the anchor to its target point") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{{{0.5f, 0.5f}, {0.6f, 0.5f}}, 0.5f}}, false);
+  b.add_target(0, 0.5f, 0.75f, 0.5f);
+  const test::World w = b.build();
+  const Vec3f f = target_force(w.topo, w.state, p, 0);
+  CHECK(f.x == 0.0f);
+  CHECK(f.y == 0.625f);  // 10 · 0.25²
+  CHECK(f.t == 0.0f);
+  const Vec3f none = target_force(w.topo, w.state, p, 1);
+  CHECK((none.x == 0.0f && none.y == 0.0f && none.t == 0.0f));
+}
+
+TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
+  test::World w = b.build();
+  w.state.t[0] = 0.625f;
+  const Vec3f f = temporal_force(w.topo, w.state, p, 0);
+  CHECK(f.t == -0.125f);
+  CHECK((f.x == 0.0f && f.y == 0.0f));
+}
+
+TEST_CASE("boundary: Eq. 4 on a unit-square container") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{{{0.5f, 0.5f}, {1.25f, 0.5f}, {-0.5f, -0.25f}, {1.0f, 0.5f}}, 0.5f}}, false);
+  const test::World w = b.build();
+  const Vec3f inside = boundary_force(w.topo, w.state, p, 0);
+  CHECK((inside.x == 0.0f && inside.y == 0.0f && inside.t == 0.0f));
+  const Vec3f right = boundary_force(w.topo, w.state, p, 1);  // closest point (1, 0.5)
+  CHECK(right.x == -1.25f);
+  CHECK(right.y == 0.0f);
+  const Vec3f corner = boundary_force(w.topo, w.state, p, 2);  // closest point (0, 0)
+  CHECK(corner.x == 2.5f);
+  CHECK(corner.y == 1.25f);
+  CHECK(corner.t == 0.0f);
+  const Vec3f on_edge = boundary_force(w.topo, w.state, p, 3);
+  CHECK((on_edge.x == 0.0f && on_edge.y == 0.0f));
+}
+
+TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
+  const Params p;
+  WorldBuilder b;
+  b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
+  b.add_element({{{{0.5f, 0.5625f}, {0.25f, 0.5f}}, 0.5f}}, false);
+  const test::World w = b.build();
+  const Vec3f in_hole = boundary_force(w.topo, w.state, p, 0);  // nearest hole edge y = 0.625
+  CHECK(in_hole.x == 0.0f);
+  CHECK(in_hole.y == 0.3125f);
+  const Vec3f between = boundary_force(w.topo, w.state, p, 1);
+  CHECK((between.x == 0.0f && between.y == 0.0f));
+}
+
+TEST_CASE("torsion: Eq. 5 turns a slice rotated by +5 or -5 degrees back, with magnitude k_tor") {
+  const Params p;
+  const double pi = 3.14159265358979323846;
+  for (const double degrees : {5.0, -5.0}) {
+    INFO(degrees);
+    WorldBuilder b;
+    b.add_element({{test::square(0.5f, 0.5f, 0.125f), 0.5f}}, false);
+    test::World w = b.build();
+    const double a = degrees * pi / 180.0;
+    for (int v = 0; v < 4; ++v) {
+      const double ux = w.state.x[v] - 0.5, uy = w.state.y[v] - 0.5;
+      w.state.x[v] = static_cast<float>(0.5 + std::cos(a) * ux - std::sin(a) * uy);
+      w.state.y[v] = static_cast<float>(0.5 + std::sin(a) * ux + std::cos(a) * uy);
+    }
+    std::vector<float> cx, cy;
+    slice_centroids(w.topo, w.state, cx, cy);
+    CHECK(cx[0] == Approx(0.5f).margin(1e-6));
+    // Vertex 1 rests at (0.625, 0.375): direction −45° in the stored (y-down) coordinates.
+    const double now = (-45.0 + degrees) * pi / 180.0;
+    const double sign = degrees > 0 ? -1.0 : 1.0;  // always back towards −45°
+    const Vec3f f = torsion_force(w.topo, w.state, p, 1, cx[0], cy[0]);
+    CHECK(f.x == Approx(sign * 0.1 * -std::sin(now)).margin(1e-6));
+    CHECK(f.y == Approx(sign * 0.1 * std::cos(now)).margin(1e-6));
+    CHECK(f.t == 0.0f);
+    for (int v = 0; v < 4; ++v) {
+      const Vec3f g = torsion_force(w.topo, w.state, p, v, cx[0], cy[0]);
+      const double ux = w.state.x[v] - cx[0], uy = w.state.y[v] - cy[0];
+      CHECK(std::hypot(g.x, g.y) == Approx(0.1).epsilon(1e-5));
+      CHECK((-uy * g.x + ux * g.y) * degrees < 0.0);  // opposes the rotation
+    }
+  }
+}
+
+TEST_CASE("torsion: no force at the rest orientation") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{test::square(0.5f, 0.5f, 0.125f), 0.5f}}, false);
+  const test::World w = b.build();
+  std::vector<float> cx, cy;
+  slice_centroids(w.topo, w.state, cx, cy);
+  for (int v = 0; v < 4; ++v) {
+    const Vec3f f = torsion_force(w.topo, w.state, p, v, cx[0], cy[0]);
+    CHECK((f.x == 0.0f && f.y == 0.0f && f.t == 0.0f));
+  }
+}
+
+TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triangle centroids") {
+  const Params p;
+  WorldBuilder b;
+  b.add_element({{test::square(0.5f, 0.5f, 0.5f), 0.5f}});  // fan (0,1,2), (0,2,3) over (0,0)..(1,1)
+  const test::World w = b.build();
+  const Vec3f f1 = overlap_force(w.topo, w.state, p, 1);  // only in (0,1,2): centroid (2/3, 1/3)
+  CHECK(f1.x == Approx(-5.0 / 3.0).epsilon(1e-6));
+  CHECK(f1.y == Approx(5.0 / 3.0).epsilon(1e-6));
+  CHECK(f1.t == 0.0f);
+  const Vec3f f0 = overlap_force(w.topo, w.state, p, 0);  // both: (2/3, 1/3) + (1/3, 2/3)
+  CHECK(f0.x == Approx(5.0).epsilon(1e-6));
+  CHECK(f0.y == Approx(5.0).epsilon(1e-6));
+}
