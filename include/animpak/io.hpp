@@ -70,6 +70,9 @@ ArtShape parse_svg(const std::string& text, const std::string& name, const SvgOp
 /// (the file's last path first), each with its source_index and path_type.
 ArtShape load_path_file(const std::filesystem::path& file);
 
+/// Parses `.path` text already in memory; `name` stands for the file in messages.
+ArtShape parse_path_text(const std::string& text, const std::string& name);
+
 /// Chooses the reader by extension (.svg, .path); anything else is an InputError.
 ArtShape load_art(const std::filesystem::path& file, const SvgOptions& options = {});
 
