@@ -9,6 +9,7 @@
 #include <boost/mpl/fold.hpp>
 #include <boost/mpl/insert.hpp>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -86,6 +87,7 @@ struct ContextFactories {
 // Invalid input must never abort the walk half-way with a bare `false`: unknown and misplaced
 // elements are skipped, unknown attributes ignored, and only unparsable geometry is an error.
 struct LenientErrors {
+  using context_type = Reporter;
   struct NeverThrown {};
   using intercepted_exception_type = NeverThrown;
   template <class C, class X, class N>
@@ -136,8 +138,7 @@ using Traversal = svgpp::document_traversal<
     svgpp::context_factories<ContextFactories>, svgpp::error_policy<LenientErrors>,
     svgpp::viewport_policy<svgpp::policy::viewport::as_transform>,
     svgpp::length_policy<svgpp::policy::length::forward_to_method<BaseContext>>,
-    svgpp::document_traversal_control_policy<TraversalControl>,
-    svgpp::path_policy<svgpp::policy::path::no_shorthands>>;
+    svgpp::document_traversal_control_policy<TraversalControl>>;  // paths: svgpp's default no_shorthands
 
 using GradientTraversal = svgpp::document_traversal<
     svgpp::processed_elements<mpl::set<tag::element::linearGradient, tag::element::radialGradient, tag::element::stop>::type>,
@@ -188,7 +189,7 @@ std::optional<Rgba> gradient_color(State& state, xmlNode* node) {
   for (int hop = 0; node && hop < 8; ++hop) {
     const bool linear = xmlStrEqual(node->name, BAD_CAST "linearGradient");
     if (!linear && !xmlStrEqual(node->name, BAD_CAST "radialGradient")) return std::nullopt;
-    GradientContext gradient(state);
+    GradientContext gradient(state, node);
     if (linear) GradientTraversal::load_expected_element(node, gradient, tag::element::linearGradient());
     else GradientTraversal::load_expected_element(node, gradient, tag::element::radialGradient());
     if (auto c = gradient.average()) return c;
@@ -291,7 +292,7 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
   const Document doc(text, name);
   ArtShape out;
   out.source = name;
-  State state{doc, options, out};
+  State state(doc, options, out);
   GroupContext root(state, doc.root());
   try {
     Traversal::load_document(doc.root(), root);
@@ -331,10 +332,10 @@ ArtShape load_svg(const std::filesystem::path& file, const SvgOptions& options) 
                                   "simplify the art, or raise the limit if the file is trusted"));
   }
   std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  if (!in || !(text << in.rdbuf()))
-    throw InputError(svg::message(name, "file", "cannot be read", "check the path and its permissions"));
-  return parse_svg(text.str(), name, options);
+  if (!in) throw InputError(svg::message(name, "file", "cannot be opened", "check the path and its permissions"));
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(svg::message(name, "file", "read failed", "check the disk and the file"));
+  return parse_svg(text, name, options);
 }
 
 }  // namespace animpak

@@ -17,6 +17,7 @@ using Color = svgpp::factory::color::default_factory::color_type;
 
 /// Whole-document bookkeeping: output, warnings, the `use` chain and the work budget.
 struct State {
+  State(const Document& d, const SvgOptions& o, ArtShape& a) : doc(d), options(o), out(a) {}
   const Document& doc;
   const SvgOptions& options;
   ArtShape& out;
@@ -42,6 +43,8 @@ struct State {
 
 struct PaintSpec {
   enum class Kind { none, color, current_color, url };
+  PaintSpec() = default;
+  explicit PaintSpec(Kind k, Rgba c = {}, std::string id = {}) : kind(k), color(c), iri(std::move(id)) {}
   Kind kind = Kind::none;
   Rgba color;
   std::string iri;
@@ -55,14 +58,14 @@ inline Rgba to_rgba(Color c) {
 
 // svgpp's paint events, one overload per form `fill`/`stroke` can take.
 inline void assign(PaintSpec& p, tag::value::none) { p = {}; }
-inline void assign(PaintSpec& p, tag::value::currentColor) { p = {PaintSpec::Kind::current_color}; }
+inline void assign(PaintSpec& p, tag::value::currentColor) { p = PaintSpec(PaintSpec::Kind::current_color); }
 inline void assign(PaintSpec&, tag::value::inherit) {}
-inline void assign(PaintSpec& p, Color c) { p = {PaintSpec::Kind::color, to_rgba(c)}; }
+inline void assign(PaintSpec& p, Color c) { p = PaintSpec(PaintSpec::Kind::color, to_rgba(c)); }
 template <class Icc>
 void assign(PaintSpec& p, Color c, const Icc&) { assign(p, c); }
 template <class R>
 void assign(PaintSpec& p, tag::iri_fragment, const R& id) {
-  p = {PaintSpec::Kind::url, {}, std::string(boost::begin(id), boost::end(id))};
+  p = PaintSpec(PaintSpec::Kind::url, {}, std::string(boost::begin(id), boost::end(id)));
 }
 template <class R, class... Fallback>
 void assign(PaintSpec& p, tag::iri_fragment, const R& id, const Fallback&... fallback) {
@@ -81,7 +84,7 @@ void assign(PaintSpec& p, const R&, const Fallback&... fallback) {
 }
 
 struct Style {
-  PaintSpec fill{PaintSpec::Kind::color};
+  PaintSpec fill = PaintSpec(PaintSpec::Kind::color);
   PaintSpec stroke;
   double stroke_width = 1.0;
   double fill_opacity = 1.0;
@@ -96,13 +99,25 @@ size_t path_error_offset(const std::string& d);
 std::string css_property(const xmlNode* node, const char* name);
 std::optional<Rgba> gradient_color(struct State& state, xmlNode* node);
 
-class BaseContext {
+/// What every context offers svgpp's error policy: somewhere to warn, and the element to name.
+class Reporter {
+ public:
+  Reporter(State& state, xmlNode* node) : state_(&state), node_(node) {}
+  State& state() const { return *state_; }
+  std::string what() const { return node_ ? describe(node_) : "gradient"; }
+
+ protected:
+  State* state_;
+  xmlNode* node_;
+};
+
+class BaseContext : public Reporter {
  public:
   using length_factory_type = svgpp::factory::length::unitless<>;
 
   /// The root <svg>: percentages resolve against its viewBox (or 100 × 100 user units without one,
   /// as there is no enclosing window to measure).
-  BaseContext(State& state, xmlNode* node) : state_(&state), node_(node) {
+  BaseContext(State& state, xmlNode* node) : Reporter(state, node) {
     std::string vb = attribute(node, "viewBox");
     std::replace(vb.begin(), vb.end(), ',', ' ');
     std::istringstream in(vb);
@@ -112,7 +127,7 @@ class BaseContext {
     read_paint_order();
   }
   BaseContext(BaseContext& parent, xmlNode* node)
-      : state_(parent.state_), node_(node), style_(parent.style_), transform_(parent.transform_),
+      : Reporter(*parent.state_, node), style_(parent.style_), transform_(parent.transform_),
         opacity_(parent.opacity_), lengths_(parent.lengths_), ref_width_(parent.use_width_),
         ref_height_(parent.use_height_) {
     state_->spend(node, 1, 0);
@@ -126,12 +141,12 @@ class BaseContext {
     read_paint_order();
   }
 
-  State& state() const { return *state_; }
-  std::string what() const { return describe(node_); }
   const length_factory_type& length_factory() const { return lengths_; }
   bool descend() const { return rendered(); }
   bool next_child() const { return !(is_switch_ && switch_chosen_); }
   void on_exit_element() {}
+  template <class Range>
+  void set_text(const Range&) {}  // character data is never drawn (text elements are skipped)
 
   void transform_matrix(const boost::array<double, 6>& m);
   void set_viewport(double, double, double w, double h) { lengths_.set_viewport_size(w, h); }
@@ -184,8 +199,6 @@ class BaseContext {
                                                                  : PaintOrder::fill_then_stroke;
   }
 
-  State* state_;
-  xmlNode* node_;
   Style style_;
   Affine transform_;
   double opacity_ = 1.0;  // group opacities multiplied down the tree, folded into the paint alpha
@@ -261,11 +274,9 @@ class UseContext : public BaseContext {
 bool load_reference(xmlNode* target, UseContext& use);
 
 /// Collects a gradient's stops to reduce it to one representative colour.
-class GradientContext {
+class GradientContext : public Reporter {
  public:
-  explicit GradientContext(State& state) : state_(&state) {}
-  State& state() const { return *state_; }
-  std::string what() const { return "gradient"; }
+  GradientContext(State& state, xmlNode* node) : Reporter(state, node) {}
   template <class Tag, class... A>
   void set(Tag, const A&...) {}
   void add_stop(Rgba c) { stops_.push_back(c); }
@@ -278,15 +289,12 @@ class GradientContext {
   }
 
  private:
-  State* state_;
   std::vector<Rgba> stops_;
 };
 
-class StopContext {
+class StopContext : public Reporter {
  public:
-  StopContext(GradientContext& parent, xmlNode* node) : parent_(&parent), node_(node) {}
-  State& state() const { return parent_->state(); }
-  std::string what() const { return describe(node_); }
+  StopContext(GradientContext& parent, xmlNode* node) : Reporter(parent.state(), node), parent_(&parent) {}
   void set(tag::attribute::stop_color, Color c) { color_ = to_rgba(c); }
   template <class Icc>
   void set(tag::attribute::stop_color, Color c, const Icc&) { color_ = to_rgba(c); }
@@ -299,7 +307,6 @@ class StopContext {
 
  private:
   GradientContext* parent_;
-  xmlNode* node_;
   Rgba color_;
   double opacity_ = 1.0;
 };
