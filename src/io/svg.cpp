@@ -307,7 +307,10 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
     out.warnings.push_back(name + ": gradients reduced to their average stop colour: " + ids);
   }
   if (out.paths.empty()) {
-    throw InputError(message(name, "<svg>", "no drawable geometry (no filled or stroked path or shape is rendered)",
+    // The warnings usually say why (a pattern fill, text only), so the first one travels along.
+    const std::string why = out.warnings.empty() ? "" : "; first of " + std::to_string(out.warnings.size()) +
+                                                            " warnings: " + out.warnings.front();
+    throw InputError(message(name, "<svg>", "no drawable geometry (no filled or stroked path or shape is rendered" + why + ")",
                              "convert text and images to paths and make sure something is visible"));
   }
   return out;

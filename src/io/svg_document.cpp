@@ -59,8 +59,9 @@ std::string attribute(const xmlNode* node, const char* name, const char* ns_href
 std::string describe(const xmlNode* node) {
   const std::string id = attribute(node, "id");
   if (!id.empty()) return id;
-  return "<" + std::string(reinterpret_cast<const char*>(node->name)) + "> at line " +
-         std::to_string(xmlGetLineNo(node));
+  std::string text = "<";
+  text.append(reinterpret_cast<const char*>(node->name)).append("> at line ");
+  return text.append(std::to_string(xmlGetLineNo(node)));
 }
 
 Document::Document(const std::string& text, const std::string& name) : name_(name) {
@@ -94,6 +95,9 @@ Document::Document(const std::string& text, const std::string& name) : name_(nam
     throw InputError(message(name, "<" + tag + ">", "the root element is not <svg>",
                              "give an SVG file (its outermost element must be <svg>)"));
   }
+  // Old Inkscape files declare only xmlns:svg and leave their elements un-namespaced; editors
+  // still draw them, so they are read as SVG rather than refused as empty.
+  if (!root_->ns) svg_ns_ = xmlNewNs(root_, BAD_CAST "http://www.w3.org/2000/svg", nullptr);
   index(root_, 0);
   apply_class_styles();
 }
@@ -110,6 +114,7 @@ void Document::index(xmlNode* node, int depth) {
     throw InputError(message(name_, describe(node), "elements nested deeper than " + std::to_string(kMaxDepth),
                              "flatten the groups in an editor"));
   }
+  if (!node->ns && svg_ns_) xmlSetNs(node, svg_ns_);
   const std::string id = attribute(node, "id");
   if (!id.empty()) by_id_.emplace(id, node);  // the first element with an id wins, as in browsers
   for (xmlNode* c = node->children; c; c = c->next)

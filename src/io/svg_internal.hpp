@@ -71,6 +71,7 @@ class Document {
   std::string name_;
   xmlDoc* doc_ = nullptr;
   xmlNode* root_ = nullptr;
+  xmlNs* svg_ns_ = nullptr;
   std::map<std::string, xmlNode*> by_id_;
 };
 
