@@ -1,0 +1,174 @@
+// Safe parsing of untrusted SVG text with libxml2, the id index `use` and `url(#…)` need, and
+// Illustrator's class stylesheets folded into `style` attributes so svgpp sees them.
+#include <libxml/parser.h>
+#include <libxml/xmlerror.h>
+
+#include <sstream>
+
+#include "animpak/error.hpp"
+#include "svg_internal.hpp"
+
+namespace animpak::svg {
+
+namespace {
+
+// Elements nested deeper than this are not clip art; refusing them bounds every recursion below.
+constexpr int kMaxDepth = 256;
+
+// Untrusted input must never read another file or the network: every external entity or DTD
+// fails to load, whatever its URL.
+xmlParserInputPtr refuse_external(const char*, const char*, xmlParserCtxtPtr) { return nullptr; }
+
+class LoaderGuard {
+ public:
+  LoaderGuard() : previous_(xmlGetExternalEntityLoader()) { xmlSetExternalEntityLoader(refuse_external); }
+  ~LoaderGuard() { xmlSetExternalEntityLoader(previous_); }
+  LoaderGuard(const LoaderGuard&) = delete;
+  LoaderGuard& operator=(const LoaderGuard&) = delete;
+
+ private:
+  xmlExternalEntityLoader previous_;
+};
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return {};
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+bool is_svg_element(const xmlNode* n, const char* tag) {
+  return n->type == XML_ELEMENT_NODE && xmlStrEqual(n->name, BAD_CAST tag);
+}
+
+}  // namespace
+
+std::string message(const std::string& file, const std::string& what, const std::string& problem,
+                    const std::string& fix) {
+  return file + ": " + what + ": " + problem + "; " + fix;
+}
+
+std::string attribute(const xmlNode* node, const char* name, const char* ns_href) {
+  xmlChar* v = ns_href ? xmlGetNsProp(node, BAD_CAST name, BAD_CAST ns_href)
+                       : xmlGetNoNsProp(node, BAD_CAST name);
+  if (!v) return {};
+  std::string s(reinterpret_cast<const char*>(v));
+  xmlFree(v);
+  return s;
+}
+
+std::string describe(const xmlNode* node) {
+  const std::string id = attribute(node, "id");
+  if (!id.empty()) return id;
+  std::string text = "<";
+  text.append(reinterpret_cast<const char*>(node->name)).append("> at line ");
+  return text.append(std::to_string(xmlGetLineNo(node)));
+}
+
+Document::Document(const std::string& text, const std::string& name) : name_(name) {
+  xmlParserCtxtPtr ctxt = xmlNewParserCtxt();
+  if (!ctxt) throw InputError(message(name, "document", "out of memory starting the XML parser", "retry"));
+  {
+    const LoaderGuard guard;
+    // NOENT expands Illustrator's internal entities (xmlns="&ns_svg;"); external ones hit the loader
+    // above and NONET forbids the network. No HUGE: libxml2's limits stop entity bombs.
+    doc_ = xmlCtxtReadMemory(ctxt, text.data(), static_cast<int>(text.size()), name.c_str(), nullptr,
+                             XML_PARSE_NONET | XML_PARSE_NOENT | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+  }
+  const xmlError* err = xmlCtxtGetLastError(ctxt);
+  std::string problem;
+  int line = 0;
+  if (err && err->level >= XML_ERR_ERROR) {
+    problem = err->message ? trim(err->message) : "malformed XML";
+    line = err->line;
+  }
+  xmlFreeParserCtxt(ctxt);
+  if (!doc_ || !problem.empty()) {
+    if (doc_) xmlFreeDoc(doc_);
+    doc_ = nullptr;
+    throw InputError(message(name, "line " + std::to_string(line), "not well-formed XML (" + problem + ")",
+                             "check that the file is an SVG saved as plain XML"));
+  }
+  root_ = xmlDocGetRootElement(doc_);
+  if (!root_ || !is_svg_element(root_, "svg")) {
+    const std::string tag = root_ ? reinterpret_cast<const char*>(root_->name) : "(empty)";
+    xmlFreeDoc(doc_);
+    throw InputError(message(name, "<" + tag + ">", "the root element is not <svg>",
+                             "give an SVG file (its outermost element must be <svg>)"));
+  }
+  // Old Inkscape files declare only xmlns:svg and leave their elements un-namespaced; editors
+  // still draw them, so they are read as SVG rather than refused as empty.
+  if (!root_->ns) svg_ns_ = xmlNewNs(root_, BAD_CAST "http://www.w3.org/2000/svg", nullptr);
+  index(root_, 0);
+  apply_class_styles();
+}
+
+Document::~Document() { xmlFreeDoc(doc_); }
+
+xmlNode* Document::find(const std::string& id) const {
+  const auto it = by_id_.find(id);
+  return it == by_id_.end() ? nullptr : it->second;
+}
+
+void Document::index(xmlNode* node, int depth) {
+  if (depth > kMaxDepth) {
+    throw InputError(message(name_, describe(node), "elements nested deeper than " + std::to_string(kMaxDepth),
+                             "flatten the groups in an editor"));
+  }
+  if (!node->ns && svg_ns_) xmlSetNs(node, svg_ns_);
+  const std::string id = attribute(node, "id");
+  if (!id.empty()) by_id_.emplace(id, node);  // the first element with an id wins, as in browsers
+  for (xmlNode* c = node->children; c; c = c->next)
+    if (c->type == XML_ELEMENT_NODE) index(c, depth + 1);
+}
+
+void Document::apply_class_styles() {
+  // Illustrator writes `<style>.st0{fill:#F00;}</style>` and class="st0". Class rules outrank
+  // presentation attributes and lose to the inline style, which is exactly where prefixing the
+  // `style` attribute puts them. Only `.class` selectors (Illustrator's only kind) are applied.
+  std::map<std::string, std::string> rules;
+  std::vector<xmlNode*> stack{root_};
+  std::vector<xmlNode*> classed;
+  while (!stack.empty()) {
+    xmlNode* n = stack.back();
+    stack.pop_back();
+    if (is_svg_element(n, "style")) {
+      xmlChar* content = xmlNodeGetContent(n);
+      std::string css = content ? reinterpret_cast<const char*>(content) : "";
+      xmlFree(content);
+      for (auto c = css.find("/*"); c != std::string::npos; c = css.find("/*")) {
+        const auto e = css.find("*/", c + 2);
+        css.erase(c, e == std::string::npos ? std::string::npos : e + 2 - c);
+      }
+      std::istringstream in(css);
+      std::string block;
+      while (std::getline(in, block, '}')) {
+        const auto brace = block.find('{');
+        if (brace == std::string::npos) continue;
+        const std::string decls = trim(block.substr(brace + 1));
+        std::istringstream selectors(block.substr(0, brace));
+        std::string sel;
+        while (std::getline(selectors, sel, ',')) {
+          sel = trim(sel);
+          if (sel.size() > 1 && sel[0] == '.' && sel.find_first_of(" .:#>[") == 0 &&
+              sel.find_first_of(" .:#>[", 1) == std::string::npos)
+            rules[sel.substr(1)] += decls + ";";
+        }
+      }
+    }
+    if (!attribute(n, "class").empty()) classed.push_back(n);
+    for (xmlNode* c = n->children; c; c = c->next)
+      if (c->type == XML_ELEMENT_NODE) stack.push_back(c);
+  }
+  if (rules.empty()) return;
+  for (xmlNode* n : classed) {
+    std::istringstream classes(attribute(n, "class"));
+    std::string cls, prefix;
+    while (classes >> cls)
+      if (auto it = rules.find(cls); it != rules.end()) prefix += it->second;
+    if (prefix.empty()) continue;
+    const std::string style = prefix + attribute(n, "style");
+    xmlSetProp(n, BAD_CAST "style", BAD_CAST style.c_str());
+  }
+}
+
+}  // namespace animpak::svg

@@ -1,0 +1,86 @@
+// Pieces of the SVG importer that do not need svgpp, shared by svg.cpp (the only svgpp translation
+// unit, slow to compile) with svg_flatten.cpp and svg_document.cpp.
+#pragma once
+
+#include <libxml/tree.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "animpak/io.hpp"
+
+namespace animpak::svg {
+
+/// 2D affine map [a c e; b d f] as in SVG's matrix(a b c d e f).
+struct Affine {
+  double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+  Vec2 apply(Vec2 p) const { return {a * p.x + c * p.y + e, b * p.x + d * p.y + f}; }
+  double det() const { return a * d - b * c; }
+};
+/// The map that applies `inner` first, then `outer`.
+Affine compose(const Affine& outer, const Affine& inner);
+
+/// Turns one element's path events (user units) into polylines in art units, within `tolerance`
+/// measured after `transform`, so a scaled-up curve gets proportionally more points.
+class PathFlattener {
+ public:
+  PathFlattener(const Affine& transform, double tolerance) : m_(transform), tol_(tolerance) {}
+  void move_to(Vec2 p);
+  void line_to(Vec2 p);
+  void quadratic_to(Vec2 c, Vec2 p);
+  void cubic_to(Vec2 c1, Vec2 c2, Vec2 p);
+  void arc_to(double rx, double ry, double x_axis_rotation_deg, bool large_arc, bool sweep, Vec2 p);
+  void close();
+  Vec2 current() const { return cur_; }
+  /// Finished subpaths; subpaths with fewer than two distinct points are dropped (they draw nothing).
+  std::vector<Polyline> take();
+  size_t point_count() const { return points_; }
+
+ private:
+  void emit(Vec2 art_point);
+  void end_subpath(bool closed);
+  void cubic_art(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, int depth);
+  Affine m_;
+  double tol_;
+  Vec2 start_{}, cur_{};  // user units, for the next relative command and for close()
+  Polyline open_;
+  bool has_open_ = false;
+  std::vector<Polyline> done_;
+  size_t points_ = 0;
+};
+
+/// A parsed document kept alive for the traversal, with every element by id.
+class Document {
+ public:
+  /// Reads `text` with external entities and network access refused; throws InputError.
+  Document(const std::string& text, const std::string& name);
+  ~Document();
+  Document(const Document&) = delete;
+  Document& operator=(const Document&) = delete;
+
+  xmlNode* root() const { return root_; }
+  xmlNode* find(const std::string& id) const;
+  const std::string& name() const { return name_; }
+
+ private:
+  void index(xmlNode* node, int depth);
+  void apply_class_styles();
+  std::string name_;
+  xmlDoc* doc_ = nullptr;
+  xmlNode* root_ = nullptr;
+  xmlNs* svg_ns_ = nullptr;
+  std::map<std::string, xmlNode*> by_id_;
+};
+
+/// `<name>: <what>: <problem>; <fix>` as every importer message reads.
+std::string message(const std::string& file, const std::string& what, const std::string& problem,
+                    const std::string& fix);
+/// "id" when the element has one, else "<tag> at line N".
+std::string describe(const xmlNode* node);
+/// An attribute's value, or empty (libxml2's strings freed here).
+std::string attribute(const xmlNode* node, const char* name, const char* ns_href = nullptr);
+
+}  // namespace animpak::svg
