@@ -1,5 +1,8 @@
 // Every constant of the paper, in one value passed down explicitly (never a global). Defaults are the
-// paper's values unless docs/parameters.md says why ours differ. A scene file may override any of them
+// paper's values where they are unit-free; the force constants are the paper's (and the authors'
+// code's) values converted from the authors' 500-unit artboard to the unit container, because taken
+// literally in unit space they give a repulsion that no longer falls off with distance. The
+// conversion and every other difference are in docs/parameters.md. A scene file may override any of them
 // by the name in param_table().
 #pragma once
 
@@ -21,24 +24,24 @@ struct Params {
   double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
 
   // §5 forces
-  double k_repulsion = 10.0;        ///< Eq. 1
-  double repulsion_epsilon = 1.0;   ///< ε of Eq. 1
-  double k_edge = 10.0;             ///< Eq. 2, slice edge springs
-  double k_shear = 10.0;            ///< Eq. 2, shear springs
-  double k_negative_space = 0.1;    ///< Eq. 2, negative-space springs
-  double k_time = 0.01;             ///< Eq. 2, time springs
-  double k_target = 10.0;           ///< Eq. 2, target-point springs of guided elements
+  double k_repulsion = 8e-8;        ///< Eq. 1
+  double repulsion_epsilon = 4e-6;   ///< ε of Eq. 1
+  double k_edge = 5000.0;             ///< Eq. 2, slice edge springs
+  double k_shear = 5000.0;            ///< Eq. 2, shear springs
+  double k_negative_space = 50.0;    ///< Eq. 2, negative-space springs
+  double k_time = 5.0;             ///< Eq. 2, time springs
+  double k_target = 5000.0;           ///< Eq. 2, target-point springs of guided elements
   double k_overlap = 5.0;           ///< Eq. 3
   double k_boundary = 5.0;          ///< Eq. 4
-  double k_torsion = 0.1;           ///< Eq. 5
+  double k_torsion = 2e-4;           ///< Eq. 5
   double k_temporal = 1.0;          ///< Eq. 6
-  double dt = 0.01;                 ///< Δt_sim, explicit Euler step
-  double velocity_cap = 10.0;       ///< speeds are capped at velocity_cap · Δt_sim
+  double dt = 0.05;                 ///< Δt_sim, explicit Euler step
+  double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
   double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
   int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
 
   // §5.3 growth and stopping
-  double growth_rate = 0.001;       ///< g grows by growth_rate · Δt_sim per step on a free slice
+  double growth_rate = 0.01;       ///< g grows by growth_rate · Δt_sim per step on a free slice
   double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
   double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
   int max_iterations = 100000;      ///< hard cap on steps

@@ -31,7 +31,8 @@ class Picture {
 
   /// Paints the art's paths in drawing order, each fill and stroke in its paint order.
   /// `points` replaces the art's own coordinates (e.g. replayed on a deformed slice).
-  void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0);
+  /// `stroke_scale` multiplies the art's stroke widths (an element drawn at a fraction of its size).
+  void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0, double stroke_scale = 1.0);
   /// Line segments between positions[e[0]] and positions[e[1]]; width in pixels.
   void draw_edges(const std::vector<Vec2>& positions, const std::vector<Edge>& edges, Rgba color,
                   double width_px, bool dashed = false);
@@ -57,6 +58,10 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
 /// Slice vertex positions of element instance `element` at frame time tf (paper §6): linear
 /// interpolation between the two consecutive slices whose current t values bracket tf.
 std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf);
+
+/// How large element `element` is drawn for these slice positions relative to its library size (the
+/// square root of the boundary's area ratio): stroke widths follow it.
+double element_scale(const World& world, int element, const std::vector<Vec2>& positions);
 
 /// The frame times of a `count`-frame animation: i / count when looping (frame `count` would repeat
 /// frame 0), i / (count − 1) otherwise.

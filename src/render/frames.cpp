@@ -29,6 +29,13 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   return out;
 }
 
+double element_scale(const World& world, int element, const std::vector<Vec2>& positions) {
+  const SliceMesh& rest = world.library[world.elements[element].library].slice;
+  const int B = rest.boundary_count;
+  const std::vector<Vec2> now(positions.begin(), positions.begin() + B), before(rest.vertices.begin(), rest.vertices.begin() + B);
+  return std::sqrt(std::abs(signed_area(now)) / std::max(std::abs(signed_area(before)), 1e-300));
+}
+
 namespace {
 
 Box container_box(const World& world) {
@@ -46,7 +53,8 @@ Picture draw_frame(const World& world, const SimState& state, double tf, const F
   Picture pic(width, height, box, style.background, 0.02 * style.size);
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
     const SpacetimeElement& lib = world.library[world.elements[i].library];
-    pic.draw_art(lib.art.art, replay_art(lib.binding, lib.slice, element_at(world, state, int(i), tf)));
+    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
+    pic.draw_art(lib.art.art, replay_art(lib.binding, lib.slice, positions), 1.0, element_scale(world, int(i), positions));
   }
   if (style.draw_container) {
     const double w = std::max(1.0, style.size / 400.0);

@@ -41,7 +41,8 @@ double coverage(const World& world, const SimState& state, double tf) {
       p.fill.color.a = 1.0;
       p.stroke.color.a = 1.0;
     }
-    art.draw_art(opaque, replay_art(lib.binding, lib.slice, element_at(world, state, int(i), tf)));
+    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
+    art.draw_art(opaque, replay_art(lib.binding, lib.slice, positions), 1.0, element_scale(world, int(i), positions));
   }
   const std::vector<unsigned char> a = inside.rgba8(), b = art.rgba8();
   std::size_t container_pixels = 0, covered = 0;

@@ -34,7 +34,9 @@ void write_svg(const World& world, const SimState& state, double tf, const Frame
       << style.size << "\">\n<rect width=\"1\" height=\"1\" fill=\"" << hex(style.background) << "\"/>\n";
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
     const SpacetimeElement& lib = world.library[world.elements[i].library];
-    const ArtPoints points = replay_art(lib.binding, lib.slice, element_at(world, state, int(i), tf));
+    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
+    const double stroke_scale = element_scale(world, int(i), positions);
+    const ArtPoints points = replay_art(lib.binding, lib.slice, positions);
     for (std::size_t p = 0; p < lib.art.art.paths.size(); ++p) {
       const ArtPath& path = lib.art.art.paths[p];
       out << "<path d=\"";
@@ -47,7 +49,7 @@ void write_svg(const World& world, const SimState& state, double tf, const Frame
       if (path.fill.enabled && path.fill.color.a < 1) out << " fill-opacity=\"" << path.fill.color.a << "\"";
       if (path.fill_rule == FillRule::evenodd) out << " fill-rule=\"evenodd\"";
       if (path.stroke.enabled && path.stroke_width > 0)
-        out << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << path.stroke_width
+        out << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << path.stroke_width * stroke_scale
             << "\" stroke-linejoin=\"round\"";
       if (path.paint_order == PaintOrder::stroke_then_fill) out << " paint-order=\"stroke\"";
       out << "/>\n";
