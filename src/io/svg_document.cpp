@@ -3,6 +3,7 @@
 #include <libxml/parser.h>
 #include <libxml/xmlerror.h>
 
+#include <limits>
 #include <sstream>
 
 #include "animpak/error.hpp"
@@ -65,6 +66,8 @@ std::string describe(const xmlNode* node) {
 }
 
 Document::Document(const std::string& text, const std::string& name) : name_(name) {
+  if (text.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+    throw InputError(message(name, "file", "too large for the XML parser", "simplify the art"));
   xmlParserCtxtPtr ctxt = xmlNewParserCtxt();
   if (!ctxt) throw InputError(message(name, "document", "out of memory starting the XML parser", "retry"));
   {
