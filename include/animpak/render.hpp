@@ -81,9 +81,9 @@ Picture draw_frame(const World& world, const SimState& state, double tf, const F
 struct FrameMetrics {
   double t = 0.0;
   double coverage = 0.0;   ///< share of the container's area covered by elements' art
-  double min_gap = 0.0;    ///< smallest distance between two elements' boundaries
-  double mean_gap = 0.0;   ///< mean over elements of the distance to the nearest other element
-  int overlapping_pairs = 0;
+  double min_gap = 0.0;    ///< smallest distance between two elements' offset outlines (0: channels touch)
+  double mean_gap = 0.0;   ///< mean over elements of that distance to the nearest other element
+  int overlapping_pairs = 0;  ///< pairs of elements whose art shares pixels
 };
 FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
 

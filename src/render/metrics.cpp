@@ -15,12 +15,28 @@ Box container_box(const World& world) {
   return box;
 }
 
-// Coverage on a raster: the container (outline minus holes, even–odd) against every element's art
-// painted opaque; the ratio of covered container pixels.
+// Every element's art painted opaque (colours do not matter, only coverage).
+void paint_opaque(Picture& pic, const World& world, const SimState& state, double tf, int element) {
+  const SpacetimeElement& lib = world.library[world.elements[element].library];
+  ArtShape opaque = lib.art.art;
+  for (ArtPath& p : opaque.paths) {
+    p.fill.color.a = 1.0;
+    p.stroke.color.a = 1.0;
+  }
+  const std::vector<Vec2> positions = element_at(world, state, element, tf);
+  pic.draw_art(opaque, replay_art(lib.binding, lib.slice, positions), 1.0, element_scale(world, element, positions));
+}
+
+std::pair<int, int> raster_size(const Box& box) {
+  const int h = coverage_size;
+  return {std::max(1, static_cast<int>(std::lround(h * box.width() / std::max(box.height(), 1e-9)))), h};
+}
+
+// Coverage on a raster: the container (outline minus holes, even–odd) against every element's art;
+// the ratio of covered container pixels.
 double coverage(const World& world, const SimState& state, double tf) {
   const Box box = container_box(world);
-  const int h = coverage_size;
-  const int w = std::max(1, static_cast<int>(std::lround(h * box.width() / std::max(box.height(), 1e-9))));
+  const auto [w, h] = raster_size(box);
   ArtShape region;
   ArtPath path;
   path.fill = {true, {0, 0, 0, 1}};
@@ -34,16 +50,7 @@ double coverage(const World& world, const SimState& state, double tf) {
   Picture inside(w, h, box, {0, 0, 0, 0}, 0.0);
   inside.draw_art(region, region_points);
   Picture art(w, h, box, {0, 0, 0, 0}, 0.0);
-  for (std::size_t i = 0; i < world.elements.size(); ++i) {
-    const SpacetimeElement& lib = world.library[world.elements[i].library];
-    ArtShape opaque = lib.art.art;
-    for (ArtPath& p : opaque.paths) {
-      p.fill.color.a = 1.0;
-      p.stroke.color.a = 1.0;
-    }
-    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
-    art.draw_art(opaque, replay_art(lib.binding, lib.slice, positions), 1.0, element_scale(world, int(i), positions));
-  }
+  for (std::size_t i = 0; i < world.elements.size(); ++i) paint_opaque(art, world, state, tf, int(i));
   const std::vector<unsigned char> a = inside.rgba8(), b = art.rgba8();
   std::size_t container_pixels = 0, covered = 0;
   for (std::size_t k = 3; k < a.size(); k += 4) {
@@ -52,6 +59,20 @@ double coverage(const World& world, const SimState& state, double tf) {
     covered += b[k] >= 128;
   }
   return container_pixels ? double(covered) / double(container_pixels) : 0.0;
+}
+
+// Whether two elements' art shares pixels: their offset outlines may overlap by up to the channel
+// without the art touching, so only the art decides.
+bool art_overlaps(const World& world, const SimState& state, double tf, int i, int j) {
+  const Box box = container_box(world);
+  const auto [w, h] = raster_size(box);
+  Picture a(w, h, box, {0, 0, 0, 0}, 0.0), b(w, h, box, {0, 0, 0, 0}, 0.0);
+  paint_opaque(a, world, state, tf, i);
+  paint_opaque(b, world, state, tf, j);
+  const std::vector<unsigned char> pa = a.rgba8(), pb = b.rgba8();
+  for (std::size_t k = 3; k < pa.size(); k += 4)
+    if (pa[k] >= 128 && pb[k] >= 128) return true;
+  return false;
 }
 
 }  // namespace
@@ -77,7 +98,7 @@ FrameMetrics measure_frame(const World& world, const SimState& state, double tf)
       const double dy = std::max({0.0, boxes[j].min.y - boxes[i].max.y, boxes[i].min.y - boxes[j].max.y});
       if (std::hypot(dx, dy) > std::max(nearest[i], nearest[j])) continue;
       const double gap = ring_gap(rings[i], rings[j]);
-      m.overlapping_pairs += gap == 0.0;
+      if (gap == 0.0) m.overlapping_pairs += art_overlaps(world, state, tf, int(i), int(j));
       nearest[i] = std::min(nearest[i], gap);
       nearest[j] = std::min(nearest[j], gap);
     }

@@ -22,7 +22,7 @@ test::World spring_pair(test::Ring ring, SpringClass c, float rest) {
 }  // namespace
 
 TEST_CASE("springs: Eq. 2, one stretched spring pulls both ends together with k (|u| - l)^2") {
-  const Params p;
+  const Params p = test::paper_params();
   // |u| = 0.625, l = 0.5: stretch 0.125, k = 10 → 10 · 0.015625 = 0.15625, all exact in float.
   const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.5f);
   const Vec3f fa = spring_force(w.topo, w.state, p, 0), fb = spring_force(w.topo, w.state, p, 1);
@@ -33,7 +33,7 @@ TEST_CASE("springs: Eq. 2, one stretched spring pulls both ends together with k 
 }
 
 TEST_CASE("springs: a spring stretched by 0.1 with k = 10 gives 0.1 along the edge") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World w = spring_pair({{0.2f, 0.3f}, {0.2f, 0.9f}}, SpringClass::shear, 0.5f);
   const Vec3f fa = spring_force(w.topo, w.state, p, 0);
   CHECK(fa.x == 0.0f);
@@ -41,14 +41,14 @@ TEST_CASE("springs: a spring stretched by 0.1 with k = 10 gives 0.1 along the ed
 }
 
 TEST_CASE("springs: a compressed spring pushes the ends apart") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.75f);
   CHECK(spring_force(w.topo, w.state, p, 0).x == -0.15625f);
   CHECK(spring_force(w.topo, w.state, p, 1).x == 0.15625f);
 }
 
 TEST_CASE("springs: each class uses its own stiffness") {
-  const Params p;
+  const Params p = test::paper_params();
   const std::pair<SpringClass, double> classes[] = {{SpringClass::edge, p.k_edge},
                                                     {SpringClass::shear, p.k_shear},
                                                     {SpringClass::negative_space, p.k_negative_space},
@@ -62,7 +62,7 @@ TEST_CASE("springs: each class uses its own stiffness") {
 }
 
 TEST_CASE("springs: a spring at rest or with coincident ends gives no force") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World rest = spring_pair({{0.25f, 0.5f}, {0.75f, 0.5f}}, SpringClass::edge, 0.5f);
   CHECK(spring_force(rest.topo, rest.state, p, 0).x == 0.0f);
   const test::World w = spring_pair({{0.5f, 0.5f}, {0.5f, 0.5f}}, SpringClass::edge, 0.5f);
@@ -71,7 +71,7 @@ TEST_CASE("springs: a spring at rest or with coincident ends gives no force") {
 }
 
 TEST_CASE("springs: a time spring acts along t, summed over the CSR slots") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}}, 0.25f}, {{{0.5f, 0.5f}}, 0.5f}, {{{0.5f, 0.5f}}, 0.75f}}, false);
   b.add_spring(0, 1, SpringClass::time, 0.125f);  // stretched by 0.125: pulls vertex 1 down in t
@@ -83,7 +83,7 @@ TEST_CASE("springs: a time spring acts along t, summed over the CSR slots") {
 }
 
 TEST_CASE("target: a zero-length Eq. 2 spring from the anchor to its target point") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {0.6f, 0.5f}}, 0.5f}}, false);
   b.add_target(0, 0.5f, 0.75f, 0.5f);
@@ -97,7 +97,7 @@ TEST_CASE("target: a zero-length Eq. 2 spring from the anchor to its target poin
 }
 
 TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
   test::World w = b.build();
@@ -108,7 +108,7 @@ TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
 }
 
 TEST_CASE("boundary: Eq. 4 on a unit-square container") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {1.25f, 0.5f}, {-0.5f, -0.25f}, {1.0f, 0.5f}}, 0.5f}}, false);
   const test::World w = b.build();
@@ -126,7 +126,7 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
 }
 
 TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.5f, 0.5625f}, {0.25f, 0.5f}}, 0.5f}}, false);
@@ -139,7 +139,7 @@ TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
 }
 
 TEST_CASE("torsion: Eq. 5 turns a slice rotated by +5 or -5 degrees back, with magnitude k_tor") {
-  const Params p;
+  const Params p = test::paper_params();
   const double pi = 3.14159265358979323846;
   for (const double degrees : {5.0, -5.0}) {
     INFO(degrees);
@@ -172,7 +172,7 @@ TEST_CASE("torsion: Eq. 5 turns a slice rotated by +5 or -5 degrees back, with m
 }
 
 TEST_CASE("torsion: no force at the rest orientation") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{test::square(0.5f, 0.5f, 0.125f), 0.5f}}, false);
   const test::World w = b.build();
@@ -185,7 +185,7 @@ TEST_CASE("torsion: no force at the rest orientation") {
 }
 
 TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triangle centroids") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{test::square(0.5f, 0.5f, 0.5f), 0.5f}});  // fan (0,1,2), (0,2,3) over (0,0)..(1,1)
   const test::World w = b.build();

@@ -30,7 +30,7 @@ test::World loose_points(int n) {
 }  // namespace
 
 TEST_CASE("integrate: velocity first, then position from the new velocity") {
-  Params p;
+  Params p = test::paper_params();
   p.dt = 0.5;           // exact in float, so the expected values are exact
   p.velocity_cap = 10;  // cap 5: not reached
   test::World w = loose_points(1);
@@ -45,7 +45,7 @@ TEST_CASE("integrate: velocity first, then position from the new velocity") {
 }
 
 TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
-  const Params p;
+  const Params p = test::paper_params();
   const float cap = static_cast<float>(p.velocity_cap * p.dt);
   std::mt19937 rng(99);
   std::uniform_real_distribution<float> force(-1000.0f, 1000.0f);

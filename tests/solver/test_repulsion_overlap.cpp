@@ -50,7 +50,7 @@ test::Ring diamond(float x, float y, float r) { return {{x, y}, {x + r, y - r}, 
 }  // namespace
 
 TEST_CASE("repulsion: Eq. 1 from the exact closest point of a near triangle") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World w = vertex_and_triangle(0.53125f);  // centroid one cell above in t
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
@@ -69,7 +69,7 @@ TEST_CASE("repulsion: Eq. 1 from the exact closest point of a near triangle") {
 }
 
 TEST_CASE("repulsion: Eq. 1 from the centroid of a far triangle") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World w = vertex_and_triangle(0.59375f);  // centroid two cells above in t
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
@@ -85,7 +85,7 @@ TEST_CASE("repulsion: Eq. 1 from the centroid of a far triangle") {
 }
 
 TEST_CASE("repulsion: interior vertices get none") {
-  const Params p;
+  const Params p = test::paper_params();
   test::World w = vertex_and_triangle(0.53125f);
   w.topo.flags[0] = 0;
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
@@ -96,7 +96,7 @@ TEST_CASE("repulsion: interior vertices get none") {
 }
 
 TEST_CASE("overlap: found inside a second element even when a third element's triangle is nearer") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   const auto times = times26();
   b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));  // A: vertex 12·4 + 1 is (0.5, 0.49)
@@ -131,7 +131,7 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
 }
 
 TEST_CASE("overlap: the other element's boundary is interpolated linearly between its slices") {
-  const Params p;
+  const Params p = test::paper_params();
   const auto times = times26();
   // B grows with t: half-size h(t) = 0.02 + 0.08 t on each slice. The query sits 0.05 right of B's
   // centre, so it is inside exactly when h(t) > 0.05, i.e. t > 0.375 — between slices 0.36 and 0.40.
@@ -151,7 +151,7 @@ TEST_CASE("overlap: the other element's boundary is interpolated linearly betwee
 }
 
 TEST_CASE("overlap: never inside one's own element, and interior vertices are not tested") {
-  const Params p;
+  const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element(test::square_tube(0.5f, 0.5f, 0.06f, times26()));
   test::World w = b.build();

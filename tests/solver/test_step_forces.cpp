@@ -42,7 +42,7 @@ bool same(Vec3f a, Vec3f b) { return a.x == b.x && a.y == b.y && a.t == b.t; }
 }  // namespace
 
 TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its own function") {
-  const Params p;
+  const Params p = test::paper_params();
   const test::World w = two_tubes(0.52f, 0.05f, 5);  // 0.02 apart
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   ForceBreakdown parts;
@@ -81,7 +81,7 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
 }
 
 TEST_CASE("step_forces: a vertex inside another element gets overlap instead of repulsion") {
-  const Params p;
+  const Params p = test::paper_params();
   // Element 1 spans [0.40, 0.54] × [0.43, 0.57]: element 0's two right corners are 0.02 inside it.
   const test::World w = two_tubes(0.47f, 0.07f, 6);
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);

@@ -12,6 +12,28 @@
 
 namespace animpak::test {
 
+/// The paper's constants as printed (§5), taken literally: round numbers that make the expected values
+/// in these tests checkable by hand. The library's defaults are these converted to the unit container
+/// (docs/parameters.md), which would hide the arithmetic behind factors of 500.
+inline animpak::Params paper_params() {
+  animpak::Params p;
+  p.k_repulsion = 10.0;
+  p.repulsion_epsilon = 1.0;
+  p.k_edge = 10.0;
+  p.k_shear = 10.0;
+  p.k_negative_space = 0.1;
+  p.k_time = 0.01;
+  p.k_target = 10.0;
+  p.k_overlap = 5.0;
+  p.k_boundary = 5.0;
+  p.k_torsion = 0.1;
+  p.k_temporal = 1.0;
+  p.dt = 0.01;
+  p.velocity_cap = 10.0;
+  p.growth_rate = 0.001;
+  return p;
+}
+
 using Ring = std::vector<std::array<float, 2>>;
 
 struct TinySlice {
