@@ -76,9 +76,10 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
   if (fill) {
     seeds = free_seeds(container, spacing, margin, guided, rng);
   } else if (wanted > 0) {
-    // Start from the spacing of a hexagonal packing of `wanted` discs and tighten until they fit.
-    spacing = std::sqrt(0.8 * container.area() / wanted);
-    for (int attempt = 0; attempt < 60; ++attempt, spacing *= 0.93) {
+    // Start looser than `wanted` discs can fill and tighten in small steps, so the first spacing that
+    // fits gives only a few extra seeds: dropping many random extras would leave holes.
+    spacing = std::sqrt(1.6 * container.area() / wanted);
+    for (int attempt = 0; attempt < 120; ++attempt, spacing *= 0.97) {
       Rng trial = rng.split();
       seeds = free_seeds(container, spacing, margin, guided, trial);
       if (static_cast<int>(seeds.size()) >= wanted) break;
