@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# README quick start, command 1: installs what is missing, builds, and runs the default example.
+# README quick start, command 1: installs what is missing, builds, and packs the default example to a
+# finished animation in out/default/ (animation.gif, frames/, state.bin, stats.json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
-./build/release/animpak inspect examples/default/scene.json --out out/default
-echo "quickstart: pictures in out/default/"
+./build/release/animpak pack examples/default/scene.json --out out/default --frames 60 --size 400
+echo "quickstart: the animation is out/default/animation.gif"
