@@ -50,6 +50,10 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
   return worlds;
 }
 
+constexpr double PhaseTimes::*phase_members[] = {&PhaseTimes::grid,        &PhaseTimes::forces, &PhaseTimes::integrate,
+                                                 &PhaseTimes::constraints, &PhaseTimes::loop,   &PhaseTimes::growth,
+                                                 &PhaseTimes::statistics,  &PhaseTimes::transfer};
+
 nlohmann::json phases_json(const PhaseTimes& p) {
   return {{"grid", p.grid},   {"forces", p.forces}, {"integrate", p.integrate}, {"constraints", p.constraints},
           {"loop", p.loop},   {"growth", p.growth}, {"statistics", p.statistics}, {"transfer", p.transfer}};
@@ -74,7 +78,8 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
     const LinearFit f = fit_synthetic(rows, d);
     if (f.points >= 2)
       fits.push_back({{"device", d}, {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
-                      {"cost_ratio_largest_to_smallest", f.cost_ratio}});
+                      {"cost_ratio_largest_to_smallest", f.cost_ratio},
+                      {"phase_cost_ratios", phases_json(f.phase_ratios)}});
   }
   std::ofstream out(file);
   if (!out) throw InputError(file.string() + ": cannot write; check that the folder exists and is writable");
@@ -118,6 +123,11 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
   const BenchRow* lo = *std::min_element(pts.begin(), pts.end(), by_size);
   const BenchRow* hi = *std::max_element(pts.begin(), pts.end(), by_size);
   f.cost_ratio = (hi->timing.ms_per_iter / hi->vertices) / (lo->timing.ms_per_iter / lo->vertices);
+  auto ratio = [&](double PhaseTimes::*phase) {
+    const double small = lo->timing.phases_ms.*phase / lo->vertices;
+    return small > 0 ? (hi->timing.phases_ms.*phase / hi->vertices) / small : 0.0;
+  };
+  for (double PhaseTimes::*phase : phase_members) f.phase_ratios.*phase = ratio(phase);
   return f;
 }
 
@@ -152,6 +162,10 @@ int bench(const BenchOptions& options) {
     // A ratio near 1 means the cost per vertex does not grow with size: no quadratic step.
     std::printf("%s: %.4f ms per 1k vertices (intercept %.3f ms); per-vertex cost, largest / smallest size: %.2f\n",
                 d.c_str(), f.slope_ms_per_kvertex, f.intercept_ms, f.cost_ratio);
+    const PhaseTimes& r = f.phase_ratios;
+    std::printf("%s: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, constraints %.2f, "
+                "loop %.2f, growth %.2f, statistics %.2f\n",
+                d.c_str(), r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
   }
   if (options.json) write_json(rows, devices, *options.json);
   if (options.plot) write_bench_plot(rows, *options.plot);

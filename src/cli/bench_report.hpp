@@ -25,6 +25,7 @@ struct LinearFit {
   double slope_ms_per_kvertex = 0.0;
   double intercept_ms = 0.0;
   double cost_ratio = 0.0;  ///< ms per vertex at the largest size over ms per vertex at the smallest
+  PhaseTimes phase_ratios;  ///< the same ratio phase by phase: locates a step that grows faster than linear
 };
 LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& device);
 
