@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "animpak/element.hpp"
@@ -39,6 +40,11 @@ class Picture {
   /// A closed polygon outline.
   void draw_ring(const std::vector<Vec2>& ring, Rgba color, double width_px);
   void draw_dots(const std::vector<Vec2>& positions, Rgba color, double radius_px);
+  /// An open polyline; width in pixels.
+  void draw_polyline(const std::vector<Vec2>& points, Rgba color, double width_px);
+  /// One line of text in Cairo's default sans face. `align` places the anchor on the text's box:
+  /// (0, 0) its top-left, (0.5, 0.5) its centre, (1, 1) its bottom-right.
+  void draw_text(Vec2 anchor, const std::string& text, double size_px, Rgba color, Vec2 align = {0.0, 0.0});
   /// Straight (non-premultiplied) 8-bit RGBA, row-major, top row first.
   std::vector<unsigned char> rgba8() const;
   /// Writes any format OpenImageIO knows by extension (.png, .exr, .tif, …).

@@ -47,6 +47,20 @@ struct RenderOptions {
 
 int render(const RenderOptions& options);
 
+struct BenchOptions {
+  std::vector<std::string> devices{"reference"};
+  std::vector<int> sizes{10000, 50000, 100000};  ///< target vertex counts of the synthetic worlds
+  int steps = 20;                                 ///< timed steps per world
+  int warmup = 3;                                 ///< untimed steps first (caches, allocations)
+  int slices = 20;                                ///< n_s of the synthetic worlds
+  std::filesystem::path examples = "examples";    ///< the element art and the example scenes
+  bool example_scenes = true;                     ///< also time examples/{default,aquarium,annulus}
+  std::optional<std::filesystem::path> json;
+  std::optional<std::filesystem::path> plot;
+};
+
+int bench(const BenchOptions& options);
+
 /// Parses the command line and runs the chosen subcommand; never throws.
 int run(int argc, char** argv);
 

@@ -60,6 +60,23 @@ int run(int argc, char** argv) {
   render_cmd->add_option("DIR", render_options.dir, "folder written by animpak pack")->required();
   add_frame_options(render_cmd, render_options.frames);
 
+  BenchOptions bench_options;
+  CLI::App* bench_cmd =
+      app.add_subcommand("bench", "Time solver steps per phase on synthetic worlds and the example scenes");
+  bench_cmd->add_option("--device", bench_options.devices, "solvers to time: reference")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"reference"}));
+  bench_cmd->add_option("--sizes", bench_options.sizes, "target vertex counts of the synthetic worlds")
+      ->delimiter(',')
+      ->check(CLI::Range(100, 10000000));
+  bench_cmd->add_option("--steps", bench_options.steps, "timed steps per world")->check(CLI::Range(1, 100000));
+  bench_cmd->add_option("--warmup", bench_options.warmup, "untimed steps before timing")->check(CLI::Range(0, 100000));
+  bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the synthetic worlds")->check(CLI::Range(2, 1000));
+  bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");
+  bench_cmd->add_flag("!--no-example-scenes", bench_options.example_scenes, "time only the synthetic worlds");
+  bench_cmd->add_option("--json", bench_options.json, "write the results as JSON");
+  bench_cmd->add_option("--plot", bench_options.plot, "draw ms/iteration against vertices into this PNG");
+
   try {
     app.parse(argc, argv);
     if (pack_cmd->parsed()) {
@@ -78,6 +95,7 @@ int run(int argc, char** argv) {
     if (inspect_cmd->parsed()) return inspect(inspect_options);
     if (pack_cmd->parsed()) return pack(pack_options);
     if (render_cmd->parsed()) return render(render_options);
+    if (bench_cmd->parsed()) return bench(bench_options);
     return fail(ExitCode::usage, "no command given; see animpak --help");
   } catch (const UsageError& e) {
     return fail(ExitCode::usage, e.what());

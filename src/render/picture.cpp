@@ -137,6 +137,34 @@ void Picture::draw_dots(const std::vector<Vec2>& positions, Rgba color, double r
   cairo_fill(cr);
 }
 
+void Picture::draw_polyline(const std::vector<Vec2>& points, Rgba color, double width_px) {
+  if (points.size() < 2) return;
+  cairo_t* cr = impl_->cr;
+  cairo_new_path(cr);
+  for (const Vec2& p : points) {
+    const Vec2 px = to_pixel(p);
+    cairo_line_to(cr, px.x, px.y);
+  }
+  cairo_set_line_width(cr, width_px);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  set_colour(cr, color, 1.0);
+  cairo_stroke(cr);
+}
+
+void Picture::draw_text(Vec2 anchor, const std::string& text, double size_px, Rgba color, Vec2 align) {
+  cairo_t* cr = impl_->cr;
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size_px);
+  cairo_text_extents_t box;
+  cairo_text_extents(cr, text.c_str(), &box);
+  const Vec2 px = to_pixel(anchor);
+  // Extents are relative to the baseline origin; shift so that `align` of the ink box sits on px.
+  cairo_move_to(cr, px.x - box.x_bearing - align.x * box.width, px.y - box.y_bearing - align.y * box.height);
+  set_colour(cr, color, 1.0);
+  cairo_show_text(cr, text.c_str());
+  cairo_new_path(cr);
+}
+
 std::vector<unsigned char> Picture::rgba8() const {
   cairo_surface_flush(impl_->surface);
   const int w = width(), h = height(), stride = cairo_image_surface_get_stride(impl_->surface);

@@ -1,0 +1,175 @@
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "animpak/error.hpp"
+#include "bench_report.hpp"
+#include "commands.hpp"
+
+namespace animpak::cli {
+namespace {
+
+struct BenchWorld {
+  std::string scene;
+  bool synthetic = false;
+  int elements = 0;
+  World world;
+};
+
+// Every device animpak can time; a new backend adds one branch here and one name in run.cpp.
+std::unique_ptr<Backend> make_backend(const std::string& device, const World& world) {
+  if (device == "reference") return make_reference_backend(world.topology, world.state, world.params);
+  throw UsageError("--device " + device + ": not available in this build; use reference");
+}
+
+std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
+  const auto star = options.examples / "default" / "star.svg";
+  if (!std::filesystem::exists(star))
+    throw InputError(star.string() + ": not found; run from the source folder or pass --examples DIR");
+  std::vector<BenchWorld> worlds;
+  for (int size : options.sizes) {
+    SyntheticSpec spec;
+    spec.element_art = star;
+    spec.target_vertices = size;
+    spec.slices = options.slices;
+    SyntheticWorld s = make_synthetic_world(spec);
+    std::cerr << "animpak: synthetic-" << size << ": " << s.elements << " stars x " << options.slices
+              << " slices at initial scale " << s.initial_scale << "\n";
+    worlds.push_back({"synthetic-" + std::to_string(size), true, s.elements, std::move(s.world)});
+  }
+  if (options.example_scenes)
+    for (const char* name : {"default", "aquarium", "annulus"}) {
+      World w = make_world(load_scene(options.examples / name / "scene.json"));
+      const int elements = static_cast<int>(w.elements.size());
+      worlds.push_back({name, false, elements, std::move(w)});
+    }
+  return worlds;
+}
+
+constexpr double PhaseTimes::*phase_members[] = {&PhaseTimes::grid,        &PhaseTimes::forces, &PhaseTimes::integrate,
+                                                 &PhaseTimes::constraints, &PhaseTimes::loop,   &PhaseTimes::growth,
+                                                 &PhaseTimes::statistics,  &PhaseTimes::transfer};
+
+nlohmann::json phases_json(const PhaseTimes& p) {
+  return {{"grid", p.grid},   {"forces", p.forces}, {"integrate", p.integrate}, {"constraints", p.constraints},
+          {"loop", p.loop},   {"growth", p.growth}, {"statistics", p.statistics}, {"transfer", p.transfer}};
+}
+
+void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string>& devices,
+                const std::filesystem::path& file) {
+  nlohmann::json results = nlohmann::json::array();
+  for (const BenchRow& r : rows)
+    results.push_back({{"device", r.device},
+                       {"scene", r.scene},
+                       {"synthetic", r.synthetic},
+                       {"vertices", r.vertices},
+                       {"elements", r.elements},
+                       {"steps", r.timing.steps},
+                       {"ms_per_iter", r.timing.ms_per_iter},
+                       {"reference_ms_per_iter", r.reference_ms_per_iter},
+                       {"speedup", r.reference_ms_per_iter / r.timing.ms_per_iter},
+                       {"phases", phases_json(r.timing.phases_ms)}});
+  nlohmann::json fits = nlohmann::json::array();
+  for (const std::string& d : devices) {
+    const LinearFit f = fit_synthetic(rows, d);
+    if (f.points >= 2)
+      fits.push_back({{"device", d}, {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
+                      {"cost_ratio_largest_to_smallest", f.cost_ratio},
+                      {"phase_cost_ratios", phases_json(f.phase_ratios)}});
+  }
+  std::ofstream out(file);
+  if (!out) throw InputError(file.string() + ": cannot write; check that the folder exists and is writable");
+  out << nlohmann::json{{"results", results}, {"fits", fits}}.dump(2) << "\n";
+  if (!out) throw InputError(file.string() + ": writing failed; check free disk space");
+}
+
+void print_table(const std::vector<BenchRow>& rows) {
+  std::printf("%-18s %-10s %8s %5s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem",
+              "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth", "statistics");
+  for (const BenchRow& r : rows) {
+    const PhaseTimes& p = r.timing.phases_ms;
+    std::printf("%-18s %-10s %8d %5d %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
+                r.device.c_str(), r.vertices, r.elements, r.timing.ms_per_iter,
+                r.reference_ms_per_iter / r.timing.ms_per_iter, p.grid, p.forces, p.integrate, p.constraints, p.loop,
+                p.growth, p.statistics);
+  }
+}
+
+}  // namespace
+
+LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& device) {
+  std::vector<const BenchRow*> pts;
+  for (const BenchRow& r : rows)
+    if (r.synthetic && r.device == device) pts.push_back(&r);
+  LinearFit f;
+  f.points = static_cast<int>(pts.size());
+  if (f.points < 2) return f;
+  double mx = 0, my = 0;
+  for (const BenchRow* r : pts) mx += r->vertices / 1000.0, my += r->timing.ms_per_iter;
+  mx /= f.points, my /= f.points;
+  double sxy = 0, sxx = 0;
+  for (const BenchRow* r : pts) {
+    const double dx = r->vertices / 1000.0 - mx;
+    sxy += dx * (r->timing.ms_per_iter - my);
+    sxx += dx * dx;
+  }
+  f.slope_ms_per_kvertex = sxx > 0 ? sxy / sxx : 0.0;
+  f.intercept_ms = my - f.slope_ms_per_kvertex * mx;
+  auto by_size = [](const BenchRow* a, const BenchRow* b) { return a->vertices < b->vertices; };
+  const BenchRow* lo = *std::min_element(pts.begin(), pts.end(), by_size);
+  const BenchRow* hi = *std::max_element(pts.begin(), pts.end(), by_size);
+  f.cost_ratio = (hi->timing.ms_per_iter / hi->vertices) / (lo->timing.ms_per_iter / lo->vertices);
+  auto ratio = [&](double PhaseTimes::*phase) {
+    const double small = lo->timing.phases_ms.*phase / lo->vertices;
+    return small > 0 ? (hi->timing.phases_ms.*phase / hi->vertices) / small : 0.0;
+  };
+  for (double PhaseTimes::*phase : phase_members) f.phase_ratios.*phase = ratio(phase);
+  return f;
+}
+
+int bench(const BenchOptions& options) {
+  // The reference backend is always timed: it is the baseline every speedup is measured against.
+  std::vector<std::string> devices{"reference"};
+  for (const std::string& d : options.devices)
+    if (std::find(devices.begin(), devices.end(), d) == devices.end()) devices.push_back(d);
+
+  std::vector<BenchRow> rows;
+  for (const BenchWorld& w : bench_worlds(options)) {
+    double reference_ms = 0.0;
+    for (const std::string& d : devices) {
+      std::cerr << "animpak: timing " << w.scene << " (" << w.world.topology.vertex_count() << " vertices) on " << d
+                << "\n";
+      auto backend = make_backend(d, w.world);
+      BenchRow row{d, w.scene, w.synthetic, w.world.topology.vertex_count(), w.elements,
+                   time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0};
+      if (d == "reference") reference_ms = row.timing.ms_per_iter;
+      row.reference_ms_per_iter = reference_ms;
+      rows.push_back(row);
+    }
+  }
+
+  print_table(rows);
+  for (const std::string& d : devices) {
+    const LinearFit f = fit_synthetic(rows, d);
+    if (f.points < 2) {
+      std::printf("%s: linear fit needs two or more --sizes\n", d.c_str());
+      continue;
+    }
+    // A ratio near 1 means the cost per vertex does not grow with size: no quadratic step.
+    std::printf("%s: %.4f ms per 1k vertices (intercept %.3f ms); per-vertex cost, largest / smallest size: %.2f\n",
+                d.c_str(), f.slope_ms_per_kvertex, f.intercept_ms, f.cost_ratio);
+    const PhaseTimes& r = f.phase_ratios;
+    std::printf("%s: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, constraints %.2f, "
+                "loop %.2f, growth %.2f, statistics %.2f\n",
+                d.c_str(), r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
+  }
+  if (options.json) write_json(rows, devices, *options.json);
+  if (options.plot) write_bench_plot(rows, *options.plot);
+  return 0;
+}
+
+}  // namespace animpak::cli

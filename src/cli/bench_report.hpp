@@ -1,0 +1,36 @@
+// Results of `animpak bench`, shared by the table, the JSON and the plot.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "animpak/bench.hpp"
+
+namespace animpak::cli {
+
+struct BenchRow {
+  std::string device;
+  std::string scene;      ///< "synthetic-<target>" or the example's folder name
+  bool synthetic = false;
+  int vertices = 0;
+  int elements = 0;
+  StepTiming timing;
+  double reference_ms_per_iter = 0.0;  ///< the reference backend's ms per step on the same world
+};
+
+/// Least-squares line of ms per step against thousands of vertices over one device's synthetic rows.
+struct LinearFit {
+  int points = 0;
+  double slope_ms_per_kvertex = 0.0;
+  double intercept_ms = 0.0;
+  double cost_ratio = 0.0;  ///< ms per vertex at the largest size over ms per vertex at the smallest
+  PhaseTimes phase_ratios;  ///< the same ratio phase by phase: locates a step that grows faster than linear
+};
+LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& device);
+
+/// ms per step against vertices, one line per device over its synthetic rows, example scenes as
+/// labelled squares; axes with ticks and a legend.
+void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::path& file);
+
+}  // namespace animpak::cli

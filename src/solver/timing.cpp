@@ -1,0 +1,47 @@
+#include <algorithm>
+#include <chrono>
+
+#include "animpak/bench.hpp"
+
+namespace animpak {
+namespace {
+
+PhaseTimes per_step_ms(const PhaseTimes& after, const PhaseTimes& before, int steps) {
+  const double k = 1000.0 / steps;
+  PhaseTimes d;
+  d.grid = (after.grid - before.grid) * k;
+  d.forces = (after.forces - before.forces) * k;
+  d.integrate = (after.integrate - before.integrate) * k;
+  d.constraints = (after.constraints - before.constraints) * k;
+  d.loop = (after.loop - before.loop) * k;
+  d.growth = (after.growth - before.growth) * k;
+  d.statistics = (after.statistics - before.statistics) * k;
+  d.transfer = (after.transfer - before.transfer) * k;
+  return d;
+}
+
+}  // namespace
+
+StepTiming time_steps(Backend& backend, const Params& params, int warmup, int steps) {
+  const auto interval = static_cast<std::uint64_t>(std::max(1, params.check_interval));
+  // The statistics check belongs to every real run's cost, so it is timed at run_simulation's rate;
+  // the iteration is counted here because reading it back from a device would cost a transfer.
+  std::uint64_t iteration = backend.statistics().iteration;
+  auto advance = [&] {
+    backend.step();
+    if (++iteration % interval == 0) backend.statistics();
+  };
+  for (int i = 0; i < warmup; ++i) advance();
+
+  StepTiming timing;
+  timing.steps = std::max(1, steps);
+  const PhaseTimes before = backend.times();
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < timing.steps; ++i) advance();
+  const auto stop = std::chrono::steady_clock::now();
+  timing.ms_per_iter = std::chrono::duration<double, std::milli>(stop - start).count() / timing.steps;
+  timing.phases_ms = per_step_ms(backend.times(), before, timing.steps);
+  return timing;
+}
+
+}  // namespace animpak

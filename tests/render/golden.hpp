@@ -1,0 +1,31 @@
+// Golden-image comparison in the manner of OpenImageIO's idiff: layered thresholds (a per-channel
+// difference that makes a pixel "differing", a share of differing pixels that is still a pass, and a
+// hard cap no pixel may exceed), a report that names the worst pixel, and on failure the expected,
+// actual and diff pictures written beside the test binary. ANIMPAK_UPDATE_GOLDEN=1 rewrites the
+// references instead of comparing.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "animpak/render.hpp"
+
+struct GoldenThresholds {
+  int pixel = 16;              ///< a channel off by more than this (0–255) makes its pixel differ
+  double max_share = 0.005;    ///< share of differing pixels still accepted
+  int hard = 230;              ///< no channel of any pixel may be off by more than this
+};
+
+struct GoldenResult {
+  bool pass = false;
+  bool updated = false;   ///< the reference was (re)written
+  std::string report;     ///< one paragraph: counts, worst pixel, files written on failure
+};
+
+/// ANIMPAK_UPDATE_GOLDEN=1 is set: references are written, not compared.
+bool golden_update_requested();
+
+/// Compares `actual` with tests/golden/<case_name>/ref/<image>.png.
+GoldenResult compare_golden(const animpak::Picture& actual, const std::string& case_name, const std::string& image,
+                            const GoldenThresholds& thresholds = {});
