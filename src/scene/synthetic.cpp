@@ -23,17 +23,6 @@ ArtShape square_art() {
   return art;
 }
 
-// Largest distance of a boundary vertex from the rest centroid over all slices: the copy's radius
-// at scale 1, whatever its orientation.
-double element_radius(const SpacetimeElement& e) {
-  const Vec2 c = scene_detail::rest_centroid(e);
-  double radius = 0.0;
-  for (int s = 0; s < e.slice_count; ++s)
-    for (int v = 0; v < e.slice.boundary_count; ++v)
-      radius = std::max(radius, norm(Vec2{e.x[e.id(s, v)], e.y[e.id(s, v)]} - c));
-  return radius;
-}
-
 }  // namespace
 
 SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
@@ -56,10 +45,7 @@ SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
   element.count = count;
   scene.elements.push_back(element);
 
-  // Discs of radius scale·radius covering `fill` of the unit square; capped so that one or two
-  // copies stay well inside it.
-  const double radius = element_radius(e);
-  double scale = std::min(0.3, std::sqrt(spec.fill / (M_PI * count)) / radius);
+  double scale = spec.element_scale;
   const Container container = make_container(square_art(), scene.container);
   for (int attempt = 0;; ++attempt) {
     scene.params.initial_scale = scale;
