@@ -18,11 +18,15 @@ struct SceneExtras {
   std::string params;  ///< members of "params", without braces, e.g. R"("initial_scale": 0.1)"
 };
 
-/// `count` rotating stars in the heart (count 0: none unguided, e.g. for guided-only scenes).
-inline std::string star_scene(int count, int slices, std::uint64_t seed, const SceneExtras& extras = {}) {
+inline constexpr const char* rotating = R"({"preset": "rotate", "turns": 1})";
+
+/// `count` stars in the heart (count 0: none unguided, e.g. for guided-only scenes), each with the
+/// `animation` object, by default one turn per loop.
+inline std::string star_scene(int count, int slices, std::uint64_t seed, const SceneExtras& extras = {},
+                              const std::string& animation = rotating) {
   return R"({"container": {"art": ")" + example_file("shapes/heart-container.path") +
          R"("}, "elements": [{"name": "star", "art": ")" + example_file("default/star.svg") +
-         R"(", "count": )" + std::to_string(count) + R"(, "animation": {"preset": "rotate", "turns": 1}}])" +
+         R"(", "count": )" + std::to_string(count) + R"(, "animation": )" + animation + "}]" +
          extras.top + R"(, "seed": )" + std::to_string(seed) + R"(, "slices": )" + std::to_string(slices) +
          R"(, "params": {)" + extras.params + "}}";
 }
