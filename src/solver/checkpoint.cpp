@@ -1,5 +1,6 @@
 #include "animpak/checkpoint.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -111,8 +112,12 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   if (!in) throw InputError(file.string() + ": cannot read the state file; give the folder `animpak pack --out` wrote");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string name = file.string();
-  if (bytes.size() < sizeof magic + 4 + 8 || std::memcmp(bytes.data(), magic, sizeof magic) != 0)
+  // A file cut inside or right after the header still starts like a state file: it is truncated,
+  // not foreign.
+  if (std::memcmp(bytes.data(), magic, std::min(bytes.size(), sizeof magic)) != 0 || bytes.empty())
     throw InputError(name + ": not an animpak state file (wrong magic bytes)");
+  if (bytes.size() < sizeof magic + 4 + 8)
+    throw InputError(name + ": ends early (truncated); the state file is damaged, pack the scene again");
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
   if (version != checkpoint_version)

@@ -1,0 +1,169 @@
+// animpak pack / render as a user runs them: resume equals an uninterrupted run byte for byte, every
+// damaged or missing state and an impossible scene is refused with its own message and exit code 2,
+// and a rendered pack writes exactly the frames and statistics it promises.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iterator>
+
+#include "run_animpak.hpp"
+#include "scene/tiny_scenes.hpp"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// A fresh folder per test case, holding scene.json (three stars, five slices).
+class Sandbox {
+ public:
+  explicit Sandbox(const std::string& name, const std::string& scene = animpak::test::star_scene(3, 5, 2))
+      : dir_(fs::temp_directory_path() / ("animpak-pack-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "scene.json") << scene;
+  }
+  ~Sandbox() { fs::remove_all(dir_); }
+  std::string scene() const { return (dir_ / "scene.json").string(); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+ private:
+  fs::path dir_;
+};
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const fs::path& file, const std::string& bytes) {
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+/// `render` of a folder holding `state` as its state.bin: exit code 2 and the message on stderr.
+CommandResult render_state(const Sandbox& box, const std::string& state) {
+  fs::create_directories(box.path("damaged"));
+  write_bytes(box.path("damaged") + "/state.bin", state);
+  return run_animpak("render " + box.path("damaged") + " --frames 1 --size 16 --format svg");
+}
+
+}  // namespace
+
+TEST_CASE("animpak pack --resume: 60 + 60 iterations equal 120 uninterrupted, state.bin byte for byte") {
+  const Sandbox box("resume");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d1") + " --max-iterations 60 --no-render").code == 0);
+  const std::string halfway = bytes_of(box.path("d1") + "/state.bin");
+  const CommandResult resumed = run_animpak("pack --resume " + box.path("d1") + " --max-iterations 120 --no-render");
+  INFO(resumed.err);
+  REQUIRE(resumed.code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d2") + " --max-iterations 120 --no-render").code == 0);
+  const std::string a = bytes_of(box.path("d1") + "/state.bin"), b = bytes_of(box.path("d2") + "/state.bin");
+  REQUIRE(a.size() > 1000);
+  CHECK(a != halfway);  // the resumed run did continue
+  CHECK(a == b);
+}
+
+TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer states exit 2 with their message") {
+  const Sandbox box("damaged");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("good") + " --max-iterations 10 --no-render").code == 0);
+  const std::string good = bytes_of(box.path("good") + "/state.bin");
+  REQUIRE(good.size() > 100);
+
+  fs::create_directories(box.path("empty"));
+  for (const std::string& args : {"pack --resume " + box.path("empty"), "render " + box.path("empty")}) {
+    INFO(args);
+    const CommandResult r = run_animpak(args);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains(box.path("empty") + "/state.bin") && Contains("cannot read the state file"));
+  }
+
+  std::string foreign = good;
+  foreign[0] = 'X';
+  const CommandResult magic = render_state(box, foreign);
+  CHECK(magic.code == 2);
+  CHECK_THAT(magic.err, Contains("wrong magic bytes"));
+
+  for (const std::size_t length : {good.size() / 2, good.size() - 1, std::size_t{16}}) {
+    INFO("cut to " << length << " bytes");
+    const CommandResult cut = render_state(box, good.substr(0, length));
+    CHECK(cut.code == 2);
+    CHECK_THAT(cut.err, Contains("truncated"));
+  }
+
+  std::string flipped = good;
+  flipped[good.size() / 2] ^= 0x20;
+  const CommandResult checksum = render_state(box, flipped);
+  CHECK(checksum.code == 2);
+  CHECK_THAT(checksum.err, Contains("checksum mismatch"));
+
+  std::string newer = good;
+  newer[8] = 2;  // the little-endian u32 version right after the 8 magic bytes
+  const CommandResult version = render_state(box, newer);
+  CHECK(version.code == 2);
+  CHECK_THAT(version.err, Contains("state format version 2") && Contains("reads version 1"));
+}
+
+TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them; no SCENE nor --resume exits 1") {
+  const Sandbox box("overlap", animpak::test::star_scene(0, 5, 1, {R"(, "guided": [
+      {"name": "left-star", "element": "star", "targets": [{"x": 230, "y": 280, "t": 0}, {"x": 230, "y": 280, "t": 1}]},
+      {"name": "right-star", "element": "star", "targets": [{"x": 270, "y": 280, "t": 0}, {"x": 270, "y": 280, "t": 1}]}])",
+                                                                   R"("initial_scale": 0.3)"}));
+  const CommandResult overlap = run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --no-render");
+  CHECK(overlap.code == 2);
+  CHECK_THAT(overlap.err, Contains("elements left-star and right-star overlap") && Contains("initial_scale"));
+
+  const CommandResult nothing = run_animpak("pack --out " + box.path("out"));
+  CHECK(nothing.code == 1);
+  CHECK_THAT(nothing.err, Contains("pack needs SCENE"));
+}
+
+TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a complete stats.json") {
+  const Sandbox box("render");
+  const CommandResult r =
+      run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 20 --frames 4 --format png,svg --size 64");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const fs::path frames = box.path("out") + "/frames";
+  for (int i = 0; i < 4; ++i)
+    for (const char* ext : {".png", ".svg"}) {
+      const fs::path file = frames / ("frame_000" + std::to_string(i) + ext);
+      INFO(file);
+      CHECK(fs::is_regular_file(file));
+      CHECK(fs::file_size(file) > 50);
+    }
+  CHECK_FALSE(fs::exists(frames / "frame_0004.png"));
+  CHECK_FALSE(fs::exists(frames / "frame_0004.svg"));
+
+  const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
+  CHECK(stats["iterations"] == 20);
+  CHECK(stats["stop_reason"] == "max_iterations");
+  for (const char* phase : {"setup", "simulation", "grid", "forces", "integrate", "constraints", "loop", "growth"}) {
+    INFO(phase);
+    REQUIRE(stats["seconds"].contains(phase));
+    CHECK(stats["seconds"][phase].get<double>() >= 0.0);
+  }
+  REQUIRE(stats["final_growth"].size() == 3);
+  for (const auto& g : stats["final_growth"]) {
+    CHECK_THAT(g["element"].get<std::string>(), Contains("star#"));
+    // 20 free steps at the default rate add at most 20 · 0.01 · 0.05 to g = 1.
+    CHECK(g["min"].get<double>() >= 1.0);
+    CHECK(g["max"].get<double>() <= 1.0 + 20 * 0.01 * 0.05 + 1e-6);
+    CHECK(g["mean"].get<double>() >= g["min"].get<double>());
+  }
+  // The scene loops, so frame 4 would repeat frame 0: the 4 frames sit at i / 4.
+  REQUIRE(stats["frames"].size() == 4);
+  for (int i = 0; i < 4; ++i) {
+    const auto& f = stats["frames"][i];
+    INFO("frame " << i);
+    CHECK(f["t"].get<double>() == Approx(i / 4.0));
+    CHECK(f["coverage"].get<double>() > 0.0);
+    CHECK(f["coverage"].get<double>() < 0.2);  // 3 stars at 7 % of full size
+    CHECK(f["min_gap"].get<double>() > 0.0);
+    CHECK(f["mean_gap"].get<double>() >= f["min_gap"].get<double>());
+    CHECK(f["overlapping_pairs"] == 0);
+  }
+}

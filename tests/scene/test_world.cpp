@@ -1,0 +1,206 @@
+// World set-up (paper §4): guided anchors on their targets, loop pairs, the assembled CSR springs,
+// reference centroids and rest lengths, containment, the set-up errors, determinism and orientation.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <set>
+#include <utility>
+
+#include "animpak/error.hpp"
+#include "animpak/scene.hpp"
+#include "scene/tiny_scenes.hpp"
+
+using namespace animpak;
+using animpak::test::SceneExtras;
+using animpak::test::star_scene;
+using Catch::Matchers::Contains;
+
+namespace {
+
+World world_of(const std::string& text) { return make_world(parse_scene(text, "tiny.json", "/")); }
+
+std::string error_of(const std::string& text) {
+  try {
+    world_of(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+const SceneExtras kSwap = animpak::test::swapping_pair();
+constexpr int kSlices = 5;
+
+}  // namespace
+
+TEST_CASE("build_world: a guided anchor sits on the targets interpolated at every slice's t") {
+  const World w = world_of(star_scene(1, kSlices, 3, kSwap));
+  const Topology& topo = w.topology;
+  // Targets of "up" in art units; slice s lies at t = s / (n − 1), halfway between targets for odd s.
+  const Vec2 art[kSlices] = {{220, 250}, {235, 225}, {250, 200}, {265, 225}, {280, 250}};
+  const ElementInstance& up = w.elements[0];
+  REQUIRE(up.name == "up");
+  for (int s = 0; s < kSlices; ++s) {
+    INFO("slice " << s);
+    const std::int32_t slice = up.slice_begin + s;
+    std::vector<std::int32_t> anchors;
+    for (std::int32_t v = topo.slice_begin[slice]; v < topo.slice_begin[slice + 1]; ++v)
+      if (topo.flags[v] & vertex_anchor) anchors.push_back(v);
+    REQUIRE(anchors.size() == 1);
+    const std::int32_t v = anchors[0];
+    const Vec2 expected = w.container.frame.to_unit(art[s]);
+    CHECK(w.state.x[v] == Approx(expected.x).margin(1e-6));
+    CHECK(w.state.y[v] == Approx(expected.y).margin(1e-6));
+    REQUIRE(topo.target[v] >= 0);
+    CHECK(topo.target_x[topo.target[v]] == Approx(expected.x).margin(1e-6));
+    CHECK(topo.target_y[topo.target[v]] == Approx(expected.y).margin(1e-6));
+    CHECK(topo.target_t[topo.target[v]] == static_cast<float>(s) / (kSlices - 1));
+  }
+}
+
+TEST_CASE("build_world: loop pairs join an unguided element to itself and loop_to partners across") {
+  const World w = world_of(star_scene(1, kSlices, 3, kSwap));
+  const Topology& topo = w.topology;
+  REQUIRE(w.elements.size() == 3);
+  std::set<std::pair<std::int32_t, std::int32_t>> pairs;
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i) pairs.insert({topo.loop_end[i], topo.loop_start[i]});
+  CHECK(pairs.size() == topo.loop_end.size());
+
+  std::set<std::pair<std::int32_t, std::int32_t>> expected;
+  auto join = [&](const ElementInstance& from, const ElementInstance& to) {
+    const SpacetimeElement& e = w.library[from.library];
+    for (int v = 0; v < e.vertices_per_slice(); ++v)
+      expected.insert({from.vertex_begin + e.id(kSlices - 1, v), to.vertex_begin + v});
+  };
+  join(w.elements[0], w.elements[1]);  // up → down
+  join(w.elements[1], w.elements[0]);  // down → up
+  REQUIRE_FALSE(w.elements[2].guided);
+  join(w.elements[2], w.elements[2]);
+  CHECK(pairs == expected);
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
+    CHECK((topo.flags[topo.loop_end[i]] & vertex_last_slice));
+    CHECK((topo.flags[topo.loop_start[i]] & vertex_first_slice));
+  }
+
+  const World open = world_of(star_scene(2, kSlices, 3, {R"(, "loop": false)", ""}));
+  CHECK(open.topology.loop_end.empty());
+}
+
+TEST_CASE("build_world: each element's CSR springs are its library element's, offset by its vertex base") {
+  const World w = world_of(star_scene(1, kSlices, 3, kSwap));
+  const Topology& topo = w.topology;
+  std::int32_t next_vertex = 0;
+  for (const ElementInstance& inst : w.elements) {
+    INFO(inst.name);
+    const SpacetimeElement& e = w.library[inst.library];
+    CHECK(inst.vertex_begin == next_vertex);
+    next_vertex += e.vertex_count();
+    for (int v = 0; v < e.vertex_count(); ++v) {
+      const std::int32_t g = inst.vertex_begin + v;
+      REQUIRE(topo.spring_begin[g + 1] - topo.spring_begin[g] == e.springs.offsets[v + 1] - e.springs.offsets[v]);
+      for (int k = e.springs.offsets[v]; k < e.springs.offsets[v + 1]; ++k) {
+        const std::int32_t slot = topo.spring_begin[g] + (k - e.springs.offsets[v]);
+        CHECK(topo.spring_other[slot] == inst.vertex_begin + e.springs.neighbors[k]);
+        CHECK(topo.spring_class[slot] == static_cast<std::uint8_t>(e.springs.classes[k]));
+      }
+    }
+  }
+  CHECK(next_vertex == topo.vertex_count());
+}
+
+TEST_CASE("build_world: reference centroids are slice means and initial rest lengths are g = 1 references") {
+  const World w = world_of(star_scene(3, kSlices, 5));
+  const Topology& topo = w.topology;
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    double sx = 0, sy = 0;
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) sx += topo.ref_x[v], sy += topo.ref_y[v];
+    const double n = topo.slice_begin[s + 1] - topo.slice_begin[s];
+    CHECK(topo.slice_ref_cx[s] == Approx(sx / n).margin(1e-6));
+    CHECK(topo.slice_ref_cy[s] == Approx(sy / n).margin(1e-6));
+  }
+  const std::vector<float> ones(topo.slice_count(), 1.0f);
+  CHECK(w.state.growth == ones);
+  REQUIRE(w.state.spring_rest.size() == topo.spring_other.size());
+  int mismatches = 0;
+  for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
+    for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
+      mismatches += w.state.spring_rest[k] != reference_rest_length(topo, ones, v, k);
+  CHECK(mismatches == 0);
+}
+
+TEST_CASE("build_world: every vertex of every element starts inside the container") {
+  for (const std::string& text : {star_scene(4, kSlices, 11), star_scene(1, kSlices, 3, kSwap)}) {
+    const World w = world_of(text);
+    int outside = 0;
+    for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v) outside += !w.container.contains({w.state.x[v], w.state.y[v]});
+    CHECK(outside == 0);
+  }
+}
+
+TEST_CASE("build_world: overlapping shrunken elements and guided paths leaving the container are errors") {
+  const SceneExtras crowded{R"(, "guided": [
+      {"name": "left-star", "element": "star", "targets": [{"x": 230, "y": 280, "t": 0}, {"x": 230, "y": 280, "t": 1}]},
+      {"name": "right-star", "element": "star", "targets": [{"x": 270, "y": 280, "t": 0}, {"x": 270, "y": 280, "t": 1}]}])",
+                            R"("initial_scale": 0.3)"};
+  const std::string overlap = error_of(star_scene(0, kSlices, 1, crowded));
+  CHECK_THAT(overlap, Contains("left-star") && Contains("right-star") && Contains("overlap"));
+
+  const SceneExtras runaway{R"(, "guided": [
+      {"name": "runaway", "element": "star",
+       "targets": [{"x": 250, "y": 280, "t": 0}, {"x": 700, "y": 280, "t": 0.5}, {"x": 250, "y": 280, "t": 1}]}])",
+                            ""};
+  const std::string outside = error_of(star_scene(0, kSlices, 1, runaway));
+  CHECK_THAT(outside, Contains("runaway") && Contains("outside the container"));
+}
+
+TEST_CASE("build_world: the same scene and seed give identical bytes; another seed moves the seeds") {
+  const World a = world_of(star_scene(3, kSlices, 7)), b = world_of(star_scene(3, kSlices, 7));
+  const Topology &p = a.topology, &q = b.topology;
+  CHECK(same_bytes(p.element, q.element));
+  CHECK(same_bytes(p.slice, q.slice));
+  CHECK(same_bytes(p.flags, q.flags));
+  CHECK(same_bytes(p.rest_t, q.rest_t));
+  CHECK(same_bytes(p.rest_dir_x, q.rest_dir_x));
+  CHECK(same_bytes(p.rest_dir_y, q.rest_dir_y));
+  CHECK(same_bytes(p.spring_begin, q.spring_begin));
+  CHECK(same_bytes(p.spring_other, q.spring_other));
+  CHECK(same_bytes(p.spring_class, q.spring_class));
+  CHECK(same_bytes(p.tri_list, q.tri_list));
+  CHECK(same_bytes(p.env_a, q.env_a));
+  CHECK(same_bytes(p.loop_end, q.loop_end));
+  CHECK(same_bytes(p.ref_x, q.ref_x));
+  CHECK(same_bytes(p.ref_y, q.ref_y));
+  CHECK(same_bytes(p.slice_ref_cx, q.slice_ref_cx));
+  CHECK(same_bytes(p.container.ax, q.container.ax));
+  const SimState &s = a.state, &r = b.state;
+  for (auto m : {&SimState::x, &SimState::y, &SimState::t, &SimState::vx, &SimState::spring_rest, &SimState::growth})
+    CHECK(same_bytes(s.*m, r.*m));
+
+  const World other = world_of(star_scene(3, kSlices, 8));
+  REQUIRE(other.elements.size() == a.elements.size());
+  bool moved = false;
+  for (std::size_t i = 0; i < a.elements.size(); ++i)
+    moved = moved || a.elements[i].position.x != other.elements[i].position.x ||
+            a.elements[i].position.y != other.elements[i].position.y;
+  CHECK(moved);
+}
+
+TEST_CASE("build_world: fixed orientation turns every unguided element alike; tangential follows the field") {
+  const World fixed = world_of(star_scene(3, kSlices, 2, {R"(, "orientation": {"mode": "fixed", "angle": 30})", ""}));
+  for (const ElementInstance& e : fixed.elements) CHECK(e.angle == Approx(30.0 * std::numbers::pi / 180.0));
+
+  const World field = world_of(star_scene(
+      3, kSlices, 2, {R"(, "orientation": {"mode": "field", "field": {"kind": "tangential", "center": [250, 280]}})", ""}));
+  const Vec2 c = field.container.frame.to_unit({250, 280});
+  for (const ElementInstance& e : field.elements) {
+    INFO(e.name);
+    CHECK(e.angle == Approx(std::atan2(e.position.y - c.y, e.position.x - c.x) + 0.5 * std::numbers::pi));
+  }
+}
