@@ -66,7 +66,7 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
     results.push_back({{"device", r.device},
                        {"scene", r.scene},
                        {"synthetic", r.synthetic},
-                       {"vertices", r.vertices},
+                       {"vertices", r.vertices}, {"neighbour_visits", r.neighbour_visits},
                        {"elements", r.elements},
                        {"steps", r.timing.steps},
                        {"ms_per_iter", r.timing.ms_per_iter},
@@ -78,7 +78,7 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
     const LinearFit f = fit_synthetic(rows, d);
     if (f.points >= 2)
       fits.push_back({{"device", d}, {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
-                      {"cost_ratio_largest_to_smallest", f.cost_ratio},
+                      {"cost_ratio_largest_to_smallest", f.cost_ratio}, {"visit_cost_ratio", f.visit_cost_ratio},
                       {"phase_cost_ratios", phases_json(f.phase_ratios)}});
   }
   std::ofstream out(file);
@@ -88,12 +88,12 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
 }
 
 void print_table(const std::vector<BenchRow>& rows) {
-  std::printf("%-18s %-10s %8s %5s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem",
+  std::printf("%-18s %-10s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem", "visits/v",
               "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth", "statistics");
   for (const BenchRow& r : rows) {
     const PhaseTimes& p = r.timing.phases_ms;
-    std::printf("%-18s %-10s %8d %5d %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
-                r.device.c_str(), r.vertices, r.elements, r.timing.ms_per_iter,
+    std::printf("%-18s %-10s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
+                r.device.c_str(), r.vertices, r.elements, double(r.neighbour_visits) / r.vertices, r.timing.ms_per_iter,
                 r.reference_ms_per_iter / r.timing.ms_per_iter, p.grid, p.forces, p.integrate, p.constraints, p.loop,
                 p.growth, p.statistics);
   }
@@ -128,6 +128,16 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
     return small > 0 ? (hi->timing.phases_ms.*phase / hi->vertices) / small : 0.0;
   };
   for (double PhaseTimes::*phase : phase_members) f.phase_ratios.*phase = ratio(phase);
+  // Rows whose elements have no neighbour in reach cost only springs; compare the ones that visit.
+  std::vector<const BenchRow*> visiting;
+  for (const BenchRow* r : pts)
+    if (r->neighbour_visits > 0) visiting.push_back(r);
+  if (visiting.size() >= 2) {
+    const BenchRow* vlo = *std::min_element(visiting.begin(), visiting.end(), by_size);
+    const BenchRow* vhi = *std::max_element(visiting.begin(), visiting.end(), by_size);
+    f.visit_cost_ratio = (vhi->timing.phases_ms.forces / double(vhi->neighbour_visits)) /
+                         (vlo->timing.phases_ms.forces / double(vlo->neighbour_visits));
+  }
   return f;
 }
 
@@ -147,6 +157,7 @@ int bench(const BenchOptions& options) {
       BenchRow row{d, w.scene, w.synthetic, w.world.topology.vertex_count(), w.elements,
                    time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0};
       if (d == "reference") reference_ms = row.timing.ms_per_iter;
+      row.neighbour_visits = neighbour_visits(w.world.topology, backend->state(), w.world.params);
       row.reference_ms_per_iter = reference_ms;
       rows.push_back(row);
     }
@@ -166,6 +177,9 @@ int bench(const BenchOptions& options) {
     std::printf("%s: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, constraints %.2f, "
                 "loop %.2f, growth %.2f, statistics %.2f\n",
                 d.c_str(), r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
+    std::printf("%s: forces cost per neighbour visit, largest / smallest size: %.2f (near 1: the force phase "
+                "grows with the neighbours it must visit, not with an accidental quadratic loop)\n",
+                d.c_str(), f.visit_cost_ratio);
   }
   if (options.json) write_json(rows, devices, *options.json);
   if (options.plot) write_bench_plot(rows, *options.plot);

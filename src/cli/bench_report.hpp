@@ -17,6 +17,7 @@ struct BenchRow {
   int elements = 0;
   StepTiming timing;
   double reference_ms_per_iter = 0.0;  ///< the reference backend's ms per step on the same world
+  std::int64_t neighbour_visits = 0;   ///< envelope triangles the repulsion queries visit per step
 };
 
 /// Least-squares line of ms per step against thousands of vertices over one device's synthetic rows.
@@ -26,6 +27,9 @@ struct LinearFit {
   double intercept_ms = 0.0;
   double cost_ratio = 0.0;  ///< ms per vertex at the largest size over ms per vertex at the smallest
   PhaseTimes phase_ratios;  ///< the same ratio phase by phase: locates a step that grows faster than linear
+  /// Forces ms per neighbour visit at the largest size over the smallest: near 1 when the force phase
+  /// costs what its neighbourhoods hold, i.e. when any growth of cost per vertex is density, not code.
+  double visit_cost_ratio = 0.0;
 };
 LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& device);
 

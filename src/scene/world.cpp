@@ -138,6 +138,16 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
                          "\" has a non-looping animation but the scene loops; set its animation.loop to true or the "
                          "scene's loop to false");
 
+  // Envelope-triangle centroids sit a third of a slice gap off each slice; the 3×3×3 block reaches at
+  // least one cell, so slices more than three cells apart in t never see each other's envelopes.
+  const double slice_gap = 1.0 / (scene.params.slices - 1);
+  if (slice_gap > 3.0 * scene.params.cell_size)
+    world.notes.push_back("warning: slices are " + std::to_string(slice_gap) + " apart in t, more than three " +
+                          "collision-grid cells (cell_size " + std::to_string(scene.params.cell_size) +
+                          "): elements will not see each other; use at least " +
+                          std::to_string(static_cast<int>(std::ceil(1.0 / (3.0 * scene.params.cell_size))) + 1) +
+                          " slices or params.cell_size >= " + std::to_string(slice_gap / 3.0));
+
   Rng rng(scene.seed);
   std::vector<Placement> placements = scene_detail::place_guided(scene, container, library, world.notes);
   std::vector<Placement> unguided =

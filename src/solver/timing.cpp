@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "animpak/bench.hpp"
+#include "animpak/reference.hpp"
 
 namespace animpak {
 namespace {
@@ -42,6 +43,20 @@ StepTiming time_steps(Backend& backend, const Params& params, int warmup, int st
   timing.ms_per_iter = std::chrono::duration<double, std::milli>(stop - start).count() / timing.steps;
   timing.phases_ms = per_step_ms(backend.times(), before, timing.steps);
   return timing;
+}
+
+std::int64_t neighbour_visits(const Topology& topology, const SimState& state, const Params& params) {
+  const reference::CollisionGrid grid = reference::build_collision_grid(topology, state, params);
+  std::vector<std::int32_t> near, far;
+  std::int64_t visits = 0;
+  for (std::int32_t v = 0; v < topology.vertex_count(); ++v) {
+    if ((topology.flags[v] & vertex_boundary) == 0) continue;
+    const Vec3f q{state.x[v], state.y[v], state.t[v]};
+    reference::near_triangles(grid, topology, q, topology.element[v], near);
+    reference::far_triangles(grid, topology, q, topology.element[v], far);
+    visits += static_cast<std::int64_t>(near.size() + far.size());
+  }
+  return visits;
 }
 
 }  // namespace animpak

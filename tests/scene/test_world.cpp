@@ -204,3 +204,13 @@ TEST_CASE("build_world: fixed orientation turns every unguided element alike; ta
     CHECK(e.angle == Approx(std::atan2(e.position.y - c.y, e.position.x - c.x) + 0.5 * std::numbers::pi));
   }
 }
+
+TEST_CASE("build_world: warns when slices are farther apart in t than the collision grid reaches") {
+  auto warned = [](const World& w) {
+    return std::any_of(w.notes.begin(), w.notes.end(),
+                       [](const std::string& n) { return n.rfind("warning: slices are", 0) == 0; });
+  };
+  CHECK(warned(world_of(star_scene(2, 5, 1))));   // 0.25 apart, grid reach 0.12
+  CHECK_FALSE(warned(world_of(star_scene(2, 20, 1))));
+  CHECK_FALSE(warned(world_of(star_scene(2, 5, 1, {"", R"("cell_size": 0.1)"}))));
+}
