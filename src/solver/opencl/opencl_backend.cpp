@@ -3,6 +3,7 @@
 // counting sort (count → exclusive scan → scatter) and uploads the cell ranges; statistics are per-slice
 // reductions read on demand, and the full state comes back only in state().
 #include <chrono>
+#include <deque>
 #include <limits>
 #include <stdexcept>
 
@@ -58,10 +59,11 @@ class DeviceBackend final : public OpenclBackend {
     cell_start_.resize(static_cast<std::size_t>(grid_.cells) + 1);
     sorted_.resize(grid_.triangles);
 
-    auto in = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_ONLY); };
+    // clSetKernelArg does not retain a buffer, so every buffer a kernel reads lives in a member.
+    auto in = [&](const auto& v, const char* name) { return held_.emplace_back(upload(v, name, CL_MEM_READ_ONLY)); };
     auto rw = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_WRITE); };
     auto work = [&](std::size_t bytes, const char* name) {
-      return opencl::make_buffer(context_, CL_MEM_READ_WRITE, bytes, name);
+      return held_.emplace_back(opencl::make_buffer(context_, CL_MEM_READ_WRITE, bytes, name));
     };
     x_ = rw(initial.x, "x"), y_ = rw(initial.y, "y"), t_ = rw(initial.t, "t");
     vx_ = rw(initial.vx, "vx"), vy_ = rw(initial.vy, "vy"), vt_ = rw(initial.vt, "vt");
@@ -319,6 +321,7 @@ class DeviceBackend final : public OpenclBackend {
   std::size_t spring_count_ = 0;
   cl::Context context_;
   cl::CommandQueue queue_;
+  std::deque<cl::Buffer> held_;       ///< read-only inputs and scratch, held for the kernels' arguments
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, inside_, grew_, breakdown_, slice_gap_, slice_inside_, slice_bad_;
