@@ -2,6 +2,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "animpak/error.hpp"
 #include "equivalence_support.hpp"
 
@@ -43,7 +45,7 @@ TEST_CASE("try_build_kernels: every device builds; a broken kernel reports its l
     CHECK(ok.ok);
   }
   // A copy of the kernels with one syntax error, loaded through ANIMPAK_KERNEL_DIR.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "animpak-broken-kernels";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("animpak-broken-kernels-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ANIMPAK_SOURCE_DIR) / "kernels"))
     std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
