@@ -75,3 +75,23 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
 }
 
 }  // namespace animpak::test
+
+namespace animpak::test {
+
+TEST_CASE("steps: one element alone, and a world without envelope triangles", "[equivalence][opencl]") {
+  WorldBuilder alone;
+  alone.add_element(square_tube(0.5f, 0.5f, 0.1f, {0.0f, 0.3f, 0.6f, 1.0f}));
+  World w = alone.build();
+  fill_reference_copy(w);
+  check_steps(w.topo, w.state, paper_params(), 10, 1, "alone");
+
+  WorldBuilder flat;  // one slice per element: nothing to extrude an envelope from
+  flat.add_element(square_tube(0.3f, 0.3f, 0.1f, {0.5f}));
+  flat.add_element(square_tube(0.35f, 0.3f, 0.1f, {0.5f}));
+  World f = flat.build();
+  fill_reference_copy(f);
+  REQUIRE(f.topo.envelope_count() == 0);
+  check_steps(f.topo, f.state, paper_params(), 10, 1, "no envelope");
+}
+
+}  // namespace animpak::test
