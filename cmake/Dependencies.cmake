@@ -10,6 +10,7 @@ find_package(CGAL 5.5 REQUIRED)                      # constrained Delaunay tria
 pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)   # union and offset
 add_library(animpak::polyclipping ALIAS PkgConfig::POLYCLIPPING)
 find_package(CLI11 2.1 REQUIRED)                     # command line
+find_package(OpenCL 1.2 REQUIRED)                    # the OpenCL backend (ICD loader; headers incl. CL/opencl.hpp)
 
 if(ANIMPAK_RENDERING)
   pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)    # anti-aliased vector rasterisation

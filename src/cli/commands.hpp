@@ -33,12 +33,19 @@ struct PackOptions {
   std::optional<std::filesystem::path> resume;  ///< continue from DIR/state.bin
   std::optional<std::uint64_t> seed;
   std::optional<std::uint64_t> max_iterations;
-  std::string device = "reference";
+  std::string device;  ///< empty: the default rule (first GPU, else PoCL, else the reference)
   bool render = true;
   FrameOptions frames;
 };
 
 int pack(const PackOptions& options);
+
+struct DevicesOptions {
+  bool verbose = false;  ///< print every device's kernel build log
+};
+
+/// Lists every OpenCL platform and device and whether animpak's kernels build on it.
+int devices(const DevicesOptions& options);
 
 struct RenderOptions {
   std::filesystem::path dir;  ///< a folder `animpak pack` wrote

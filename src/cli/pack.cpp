@@ -10,6 +10,7 @@
 
 #include "animpak/checkpoint.hpp"
 #include "animpak/error.hpp"
+#include "animpak/opencl.hpp"
 #include "animpak/render.hpp"
 #include "animpak/run.hpp"
 #include "commands.hpp"
@@ -81,11 +82,32 @@ std::string read_whole(const std::filesystem::path& file) {
   return s.str();
 }
 
+// The device by --device or the default rule, said in one line. A device asked for by name must work;
+// one picked by the default rule falls back to the reference with the first lines of its error.
+std::unique_ptr<Backend> make_backend(const std::string& request, const World& world, std::string& driver) {
+  const DeviceChoice choice = choose_device(request);
+  std::cerr << "animpak: device: " << choice.reason << "\n";
+  if (!choice.reference) {
+    try {
+      auto backend = make_opencl_backend(world.topology, world.state, world.params, choice);
+      driver = choice.device.driver + " (" + choice.device.platform_version + ")";
+      return backend;
+    } catch (const OpenclError& e) {
+      if (choice.explicit_request) throw;
+      std::istringstream lines(e.what());
+      std::string line, summary;
+      for (int i = 0; i < 6 && std::getline(lines, line); ++i) summary += "\n  " + line;
+      std::cerr << "animpak: " << choice.device.name << " cannot run the kernels; using the reference solver:"
+                << summary << "\n";
+    }
+  }
+  driver = "scalar reference (no OpenCL)";
+  return make_reference_backend(world.topology, world.state, world.params);
+}
+
 }  // namespace
 
 int pack(const PackOptions& options) {
-  if (options.device != "reference")
-    throw UsageError("--device " + options.device + ": only the reference solver is available in this build");
   Checkpoint checkpoint;
   std::filesystem::path out = options.out;
   if (options.resume) {
@@ -105,9 +127,10 @@ int pack(const PackOptions& options) {
   for (const std::string& note : world.notes) std::cerr << "animpak: " << note << "\n";
   std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
             << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
-            << " envelope triangles; solver: reference (scalar)\n";
+            << " envelope triangles\n";
 
-  auto backend = make_reference_backend(world.topology, world.state, world.params);
+  std::string driver;
+  std::unique_ptr<Backend> backend = make_backend(options.device, world, driver);
   Progress progress(static_cast<std::uint64_t>(world.params.max_iterations), world.params.stop_gap);
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(world.params.max_iterations);
@@ -126,6 +149,7 @@ int pack(const PackOptions& options) {
   world.state = result.last_good;
 
   PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds};
+  report.driver = driver;
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;

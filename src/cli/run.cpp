@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "animpak/error.hpp"
+#include "animpak/opencl.hpp"
 #include "commands.hpp"
 
 namespace animpak::cli {
@@ -51,9 +52,16 @@ int run(int argc, char** argv) {
   pack_cmd->add_option("--seed", pack_options.seed, "seed (overrides the scene's)");
   pack_cmd->add_option("--max-iterations", pack_options.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
-  pack_cmd->add_option("--device", pack_options.device, "solver: reference");
+  pack_cmd->add_option("--device", pack_options.device,
+                       "solver: 'reference', or part of an OpenCL device's name (pocl, nvidia; see animpak devices); "
+                       "default: the first GPU, else PoCL, else the reference");
   pack_cmd->add_flag("!--no-render", pack_options.render, "do not render frames");
   add_frame_options(pack_cmd, pack_options.frames);
+
+  DevicesOptions devices_options;
+  CLI::App* devices_cmd =
+      app.add_subcommand("devices", "List the OpenCL platforms and devices and whether animpak's kernels build on each");
+  devices_cmd->add_flag("--verbose", devices_options.verbose, "print every device's kernel build log");
 
   RenderOptions render_options;
   CLI::App* render_cmd = app.add_subcommand("render", "Render the frames of a saved packing again");
@@ -96,11 +104,14 @@ int run(int argc, char** argv) {
     if (pack_cmd->parsed()) return pack(pack_options);
     if (render_cmd->parsed()) return render(render_options);
     if (bench_cmd->parsed()) return bench(bench_options);
+    if (devices_cmd->parsed()) return devices(devices_options);
     return fail(ExitCode::usage, "no command given; see animpak --help");
   } catch (const UsageError& e) {
     return fail(ExitCode::usage, e.what());
   } catch (const InputError& e) {
     return fail(ExitCode::bad_input, e.what());
+  } catch (const OpenclError& e) {
+    return fail(ExitCode::internal, std::string("OpenCL: ") + e.what() + "\n(try --device reference)");
   } catch (const std::bad_alloc&) {
     return fail(ExitCode::internal, "out of memory; try a smaller scene (fewer slices or elements)");
   } catch (const std::exception& e) {

@@ -5,7 +5,7 @@
 #include "run_animpak.hpp"
 
 TEST_CASE("animpak: --help for the program and every command exits 0 and describes it") {
-  for (const std::string args : {"--help", "inspect --help"}) {
+  for (const std::string args : {"--help", "inspect --help", "devices --help"}) {
     INFO(args);
     const CommandResult r = run_animpak(args);
     CHECK(r.code == 0);
@@ -73,4 +73,24 @@ TEST_CASE("animpak inspect: the default example scene builds every library eleme
   const nlohmann::json report = nlohmann::json::parse(r.out);
   REQUIRE(report["elements"].size() >= 1);
   for (const auto& e : report["elements"]) CHECK(e["vertices"].get<int>() > 0);
+}
+
+TEST_CASE("animpak devices: lists each device with its build result and the default choice") {
+  const CommandResult r = run_animpak("devices");
+  CHECK(r.code == 0);
+  CHECK(r.out.find("Default for pack: ") != std::string::npos);
+  // Every device line is followed by whether the kernels build on it.
+  std::size_t devices = 0, builds = 0;
+  for (std::size_t at = 0; (at = r.out.find("  Device: ", at)) != std::string::npos; ++at) ++devices;
+  for (std::size_t at = 0; (at = r.out.find("    kernels: ", at)) != std::string::npos; ++at) ++builds;
+  CHECK(devices == builds);
+}
+
+TEST_CASE("animpak pack --device: a name no device has is a usage error naming it") {
+  const auto scene = std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/scene.json";
+  const auto out = std::filesystem::temp_directory_path() / ("animpak-cli-device-" + std::to_string(::getpid()));
+  const CommandResult r = run_animpak("pack " + scene + " --out " + out.string() + " --device no-such-device --no-render");
+  std::filesystem::remove_all(out);
+  CHECK(r.code == 1);
+  CHECK(r.err.find("no-such-device") != std::string::npos);
 }

@@ -1,0 +1,64 @@
+/* Structs and constants shared by the OpenCL kernels and the C++ host (design.md "Layout"). The
+ * kernels see this file first in every program; the host includes it from src/solver/opencl. Only
+ * 4-byte scalars, so both compilers lay the structs out alike; the host static_asserts the sizes and
+ * offsets (src/solver/opencl/layout.cpp) and that the constants match VertexFlag and SpringClass. */
+#ifndef ANIMPAK_KERNELS_SHARED_TYPES_H
+#define ANIMPAK_KERNELS_SHARED_TYPES_H
+
+#ifdef __OPENCL_VERSION__
+typedef int ap_int;
+typedef float ap_float;
+#else
+#include <cstdint>
+typedef std::int32_t ap_int;
+typedef float ap_float;
+#endif
+
+/* VertexFlag bits (solver.hpp). */
+#define AP_VERTEX_BOUNDARY 1
+#define AP_VERTEX_ANCHOR 2
+
+/* SpringClass values (element.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
+#define AP_SPRING_CLASSES 5
+
+/* Work-group size of every kernel: PoCL compiles one kernel per local size, so it never varies. */
+#define AP_LOCAL_SIZE 64
+
+/* The collision grid (reference::CollisionGrid without its arrays), passed to every grid kernel. */
+typedef struct {
+  ap_int n;              /* cells per axis */
+  ap_float cell;         /* cell edge */
+  ap_int triangles;      /* envelope triangles */
+  ap_int cells;          /* n * n * n */
+} GridInfo;
+
+/* Every Params constant a kernel uses, converted once to float by the host exactly as the reference
+ * converts it (static_cast<float>, products formed in double first). */
+typedef struct {
+  ap_float k_repulsion, repulsion_epsilon;
+  ap_float k_spring[AP_SPRING_CLASSES]; /* by SpringClass */
+  ap_float k_target, k_overlap, k_boundary, k_torsion, k_temporal;
+  ap_float dt;
+  ap_float velocity_cap;                /* velocity_cap * dt */
+  ap_float growth_step;                 /* growth_rate * dt */
+  ap_float max_growth;
+} ForceParams;
+
+/* Sizes of the world, passed to every kernel that walks more than one array. */
+typedef struct {
+  ap_int vertices, slices, elements, loops;
+  ap_int segments;  /* container segments */
+  ap_int breakdown; /* 1: the forces kernel also writes every force separately (equivalence tests) */
+} WorldInfo;
+
+/* Force components in the breakdown buffer, each 3 * vertices floats (x, then y, then t). */
+#define AP_FORCE_REPULSION 0
+#define AP_FORCE_SPRINGS 1
+#define AP_FORCE_TARGET 2
+#define AP_FORCE_BOUNDARY 3
+#define AP_FORCE_OVERLAP 4
+#define AP_FORCE_TORSION 5
+#define AP_FORCE_TEMPORAL 6
+#define AP_FORCE_COMPONENTS 7
+
+#endif

@@ -1,0 +1,44 @@
+// The thin layer over CL/opencl.hpp (design.md "OpenCL host conventions"): the bindings are used
+// without their exceptions, every returned cl_int goes through check(), which throws OpenclError with
+// the call's text and the error's name.
+#pragma once
+
+#define CL_HPP_TARGET_OPENCL_VERSION 120
+#define CL_HPP_MINIMUM_OPENCL_VERSION 120
+#include <CL/opencl.hpp>
+
+#include <string>
+#include <vector>
+
+#include "animpak/opencl.hpp"
+#include "shared_types.h"
+
+namespace animpak::opencl {
+
+/// Throws OpenclError(call, err) unless err is CL_SUCCESS.
+void check(cl_int err, const std::string& call);
+
+/// A buffer of `bytes` (at least 1: OpenCL refuses empty buffers) named in every error about it.
+cl::Buffer make_buffer(const cl::Context& context, cl_mem_flags flags, std::size_t bytes, const std::string& name);
+
+struct FoundDevice {
+  cl::Device device;
+  DeviceInfo info;
+};
+
+/// Every device of every platform; empty (not an error) when the ICD loader finds no platform.
+std::vector<FoundDevice> find_devices();
+
+/// The cl::Device described by `info` (same platform and device name). OpenclError when gone.
+cl::Device device_for(const DeviceInfo& info);
+
+/// Builds program_source() for `device`; OpenclError carrying the device name and full log on failure.
+cl::Program build_program(const cl::Context& context, const cl::Device& device);
+
+/// Params as the kernels see them: each double converted once to float exactly as the reference does.
+ForceParams force_params(const Params& params);
+
+/// The grid description for `triangles` envelope triangles (cells per axis as reference::grid_cells_per_axis).
+GridInfo grid_info(const Params& params, std::int32_t triangles);
+
+}  // namespace animpak::opencl

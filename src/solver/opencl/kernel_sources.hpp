@@ -1,0 +1,20 @@
+// The kernels' sources: embedded at build time (cmake/EmbedKernels.cmake), or read from the folder in
+// ANIMPAK_KERNEL_DIR when it is set (kernel development without a rebuild).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace animpak::opencl {
+
+/// The embedded text of kernels/<name>, or empty when there is no such file.
+std::string_view embedded_kernel_source(std::string_view name);
+
+/// One OpenCL program: the FP_CONTRACT pragma, shared_types.h, then every kernel file in dependency
+/// order, each behind a #line so build logs name the file. InputError when ANIMPAK_KERNEL_DIR lacks a file.
+std::string program_source();
+
+/// Options every build uses (design.md "Equivalence by construction").
+inline constexpr const char* build_options = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
+
+}  // namespace animpak::opencl

@@ -1,0 +1,46 @@
+// The host side of kernels/shared_types.h: the layouts and constants the kernels rely on are checked
+// here at compile time, and Params is converted to the kernels' floats in exactly one place.
+#include <cstddef>
+
+#include "animpak/element.hpp"
+#include "cl_host.hpp"
+
+namespace animpak::opencl {
+
+static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
+static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
+static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
+static_assert(sizeof(ForceParams) == 16 * 4 && offsetof(ForceParams, k_spring) == 8 &&
+              offsetof(ForceParams, k_target) == 28 && offsetof(ForceParams, max_growth) == 60);
+static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor);
+static_assert(AP_SPRING_CLASSES == spring_class_count);
+static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
+
+ForceParams force_params(const Params& params) {
+  ForceParams p{};
+  p.k_repulsion = static_cast<float>(params.k_repulsion);
+  p.repulsion_epsilon = static_cast<float>(params.repulsion_epsilon);
+  for (int c = 0; c < AP_SPRING_CLASSES; ++c) p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
+  p.k_target = static_cast<float>(params.k_target);
+  p.k_overlap = static_cast<float>(params.k_overlap);
+  p.k_boundary = static_cast<float>(params.k_boundary);
+  p.k_torsion = static_cast<float>(params.k_torsion);
+  p.k_temporal = static_cast<float>(params.k_temporal);
+  p.dt = static_cast<float>(params.dt);
+  // Products in double first, then one conversion (integrate.cpp, growth.cpp).
+  p.velocity_cap = static_cast<float>(params.velocity_cap * params.dt);
+  p.growth_step = static_cast<float>(params.growth_rate * params.dt);
+  p.max_growth = static_cast<float>(params.max_growth);
+  return p;
+}
+
+GridInfo grid_info(const Params& params, std::int32_t triangles) {
+  GridInfo g{};
+  g.n = reference::grid_cells_per_axis(params.cell_size);
+  g.cell = static_cast<float>(params.cell_size);
+  g.triangles = triangles;
+  g.cells = g.n * g.n * g.n;
+  return g;
+}
+
+}  // namespace animpak::opencl

@@ -1,0 +1,345 @@
+// The OpenCL backend: the reference backend's step (src/solver/reference/backend.cpp) with the state
+// on the device. Per step the host reads back only the envelope triangles' cell ids, runs the stable
+// counting sort (count → exclusive scan → scatter) and uploads the cell ranges; statistics are per-slice
+// reductions read on demand, and the full state comes back only in state().
+#include <chrono>
+#include <deque>
+#include <limits>
+#include <stdexcept>
+
+#include "kernel.hpp"
+
+namespace animpak {
+namespace {
+
+using opencl::check;
+using opencl::Kernel;
+
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+void validate(const Topology& topo) {
+  const std::int32_t n = topo.vertex_count();
+  if (topo.slice_begin.empty() || topo.slice_begin.front() != 0 || topo.slice_begin.back() != n)
+    throw std::invalid_argument("opencl backend: the slices must cover the vertices in order");
+  std::vector<std::uint8_t> used(n, 0);
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i)
+    for (const std::int32_t v : {topo.loop_end[i], topo.loop_start[i]}) {
+      if (used[v]) throw std::invalid_argument("opencl backend: vertex " + std::to_string(v) + " is in two loop pairs");
+      used[v] = 1;
+    }
+}
+
+class DeviceBackend final : public OpenclBackend {
+ public:
+  DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info)
+      : topo_(topology), info_(info), iteration_(initial.iteration), rebuild_(params.grid_rebuild_interval) {
+    validate(topo_);
+    const cl::Device device = opencl::device_for(info);
+    cl_int err = CL_SUCCESS;
+    context_ = cl::Context(device, nullptr, nullptr, nullptr, &err);
+    check(err, "clCreateContext(" + info.name + ")");
+    queue_ = cl::CommandQueue(context_, device, CL_QUEUE_PROFILING_ENABLE, &err);
+    check(err, "clCreateCommandQueue(" + info.name + ")");
+    const cl::Program program = opencl::build_program(context_, device);
+
+    const std::int32_t n = topo_.vertex_count(), slices = topo_.slice_count();
+    world_ = {n, slices, topo_.element_count(), static_cast<std::int32_t>(topo_.loop_end.size()),
+              static_cast<std::int32_t>(topo_.container.ax.size()), 0};
+    grid_ = opencl::grid_info(params, topo_.envelope_count());
+    const ForceParams p = opencl::force_params(params);
+    cells_.resize(grid_.triangles);
+    cell_start_.resize(static_cast<std::size_t>(grid_.cells) + 1);
+    sorted_.resize(grid_.triangles);
+
+    // clSetKernelArg does not retain a buffer, so every buffer a kernel reads lives in a member.
+    auto in = [&](const auto& v, const char* name) { return held_.emplace_back(upload(v, name, CL_MEM_READ_ONLY)); };
+    auto rw = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_WRITE); };
+    auto work = [&](std::size_t bytes, const char* name) {
+      return held_.emplace_back(opencl::make_buffer(context_, CL_MEM_READ_WRITE, bytes, name));
+    };
+    x_ = rw(initial.x, "x"), y_ = rw(initial.y, "y"), t_ = rw(initial.t, "t");
+    vx_ = rw(initial.vx, "vx"), vy_ = rw(initial.vy, "vy"), vt_ = rw(initial.vt, "vt");
+    rest_ = rw(initial.spring_rest, "spring_rest");
+    growth_ = rw(initial.growth, "growth");
+    const cl::Buffer element = in(topo_.element, "element"), slice = in(topo_.slice, "slice"),
+                     flags = in(topo_.flags, "flags"), rest_t = in(topo_.rest_t, "rest_t"),
+                     rest_dx = in(topo_.rest_dir_x, "rest_dir_x"), rest_dy = in(topo_.rest_dir_y, "rest_dir_y"),
+                     target = in(topo_.target, "target"), spring_begin = in(topo_.spring_begin, "spring_begin"),
+                     spring_other = in(topo_.spring_other, "spring_other"),
+                     spring_class = in(topo_.spring_class, "spring_class"), tri_a = in(topo_.tri_a, "tri_a"),
+                     tri_b = in(topo_.tri_b, "tri_b"), tri_c = in(topo_.tri_c, "tri_c"),
+                     tri_begin = in(topo_.tri_begin, "tri_begin"), tri_list = in(topo_.tri_list, "tri_list"),
+                     slice_begin = in(topo_.slice_begin, "slice_begin"),
+                     slice_boundary = in(topo_.slice_boundary, "slice_boundary"),
+                     slice_element = in(topo_.slice_element, "slice_element"),
+                     element_slices = in(topo_.element_slice_begin, "element_slice_begin"),
+                     env_a = in(topo_.env_a, "env_a"), env_b = in(topo_.env_b, "env_b"),
+                     env_c = in(topo_.env_c, "env_c"), env_element = in(topo_.env_element, "env_element"),
+                     target_x = in(topo_.target_x, "target_x"), target_y = in(topo_.target_y, "target_y"),
+                     target_t = in(topo_.target_t, "target_t"), seg_ax = in(topo_.container.ax, "container.ax"),
+                     seg_ay = in(topo_.container.ay, "container.ay"), seg_bx = in(topo_.container.bx, "container.bx"),
+                     seg_by = in(topo_.container.by, "container.by"), loop_end = in(topo_.loop_end, "loop_end"),
+                     loop_start = in(topo_.loop_start, "loop_start"), ref_x = in(topo_.ref_x, "ref_x"),
+                     ref_y = in(topo_.ref_y, "ref_y"), ref_t = in(topo_.ref_t, "ref_t"),
+                     ref_cx = in(topo_.slice_ref_cx, "slice_ref_cx"), ref_cy = in(topo_.slice_ref_cy, "slice_ref_cy");
+    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles;
+    env_cx_ = work(ft, "env_cx"), env_cy_ = work(ft, "env_cy"), env_ct_ = work(ft, "env_ct");
+    triangle_cell_ = work(sizeof(std::int32_t) * grid_.triangles, "triangle_cell");
+    cell_start_buf_ = work(sizeof(std::int32_t) * cell_start_.size(), "cell_start");
+    sorted_buf_ = work(sizeof(std::int32_t) * grid_.triangles, "sorted_triangles");
+    const cl::Buffer slice_cx = work(fs, "slice_cx"), slice_cy = work(fs, "slice_cy");
+    fx_ = work(fn, "fx"), fy_ = work(fn, "fy"), ft_ = work(fn, "ft");
+    // Before the first step the statistics see what the reference starts from: no gap, no overlap.
+    closest_ = rw(std::vector<float>(n, std::numeric_limits<float>::infinity()), "closest");
+    inside_ = rw(std::vector<std::uint8_t>(n, 0), "inside");
+    grew_ = rw(std::vector<std::uint8_t>(slices, 0), "grew");
+    breakdown_ = work(1, "breakdown (unused)");
+    slice_gap_ = work(fs, "slice_gap");
+    slice_inside_ = work(sizeof(std::int32_t) * slices, "slice_inside");
+    slice_bad_ = work(sizeof(std::int32_t) * slices, "slice_bad");
+
+    envelope_cells_ = Kernel(program, "envelope_cells");
+    envelope_cells_.bind(grid_, env_a, env_b, env_c, x_, y_, t_, env_cx_, env_cy_, env_ct_, triangle_cell_);
+    slice_centroids_ = Kernel(program, "slice_centroids");
+    slice_centroids_.bind(world_, slice_begin, x_, y_, slice_cx, slice_cy);
+    forces_ = Kernel(program, "step_forces");
+    breakdown_arg_ =
+        forces_.bind(world_, grid_, p, x_, y_, t_, element, slice, flags, rest_t, rest_dx, rest_dy, target,
+                     spring_begin, spring_other, spring_class, rest_, tri_a, tri_b, tri_c, tri_begin, tri_list,
+                     slice_begin, slice_boundary, element_slices, env_a, env_b, env_c, env_element, cell_start_buf_,
+                     sorted_buf_, env_cx_, env_cy_, env_ct_, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx,
+                     seg_by, slice_cx, slice_cy, fx_, fy_, ft_, closest_, inside_, breakdown_) - 1;
+    integrate_ = Kernel(program, "integrate");
+    integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
+    constraints_ = Kernel(program, "slice_constraints");
+    constraints_.bind(world_, slice_begin, slice_element, element_slices, t_);
+    loop_ = Kernel(program, "loop_constraint");
+    loop_.bind(world_, loop_end, loop_start, x_, y_);
+    grow_ = Kernel(program, "grow_slices");
+    grow_.bind(world_, p, slice_begin, inside_, growth_, grew_);
+    rest_lengths_ = Kernel(program, "update_rest_lengths");
+    rest_lengths_.bind(world_, slice, spring_begin, spring_other, grew_, growth_, ref_x, ref_y, ref_t, ref_cx, ref_cy,
+                       rest_);
+    statistics_ = Kernel(program, "slice_statistics");
+    statistics_.bind(world_, slice_begin, closest_, inside_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_inside_,
+                     slice_bad_);
+    spring_count_ = initial.spring_rest.size();
+    check(queue_.finish(), "clFinish(upload)");
+  }
+
+  std::string name() const override { return info_.name; }
+  const DeviceInfo& device() const override { return info_; }
+  const PhaseTimes& times() const override { return times_; }
+
+  void step() override {
+    if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
+    timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
+    timed(times_.forces, forces_.run(queue_, world_.vertices));
+    timed(times_.integrate, integrate_.run(queue_, world_.vertices));
+    timed(times_.constraints, constraints_.run(queue_, world_.slices));
+    timed(times_.loop, loop_.run(queue_, world_.loops));
+    timed(times_.growth, grow_.run(queue_, world_.slices));
+    timed(times_.growth, rest_lengths_.run(queue_, world_.vertices));
+    ++iteration_;
+  }
+
+  StepStatistics statistics() override {
+    const std::int32_t slices = world_.slices;
+    timed(times_.statistics, statistics_.run(queue_, slices));
+    std::vector<float> gap(slices), growth(slices);
+    std::vector<std::int32_t> inside(slices), bad(slices);
+    std::vector<std::uint8_t> grew(slices);
+    read(slice_gap_, gap, "slice_gap");
+    read(slice_inside_, inside, "slice_inside");
+    read(slice_bad_, bad, "slice_bad");
+    read(growth_, growth, "growth");
+    read(grew_, grew, "grew", true);
+    settle_times();
+    Stopwatch w(times_.statistics);
+    // The same reductions, in the same order, as the reference backend's statistics().
+    StepStatistics st;
+    st.iteration = iteration_;
+    st.max_slice_gap = 0.0f;
+    st.min_slice_gap = std::numeric_limits<float>::infinity();
+    std::int32_t grown = 0;
+    for (std::int32_t s = 0; s < slices; ++s) {
+      st.max_slice_gap = gap[s] > st.max_slice_gap ? gap[s] : st.max_slice_gap;
+      st.min_slice_gap = gap[s] < st.min_slice_gap ? gap[s] : st.min_slice_gap;
+      grown += grew[s];
+      st.overlapping_vertices += inside[s];
+      if (st.finite && bad[s] >= 0) st.finite = false, st.first_bad_vertex = bad[s];
+    }
+    st.growing_share = slices ? double(grown) / slices : 0.0;
+    st.min_growth = st.max_growth = growth.empty() ? 1.0f : growth[0];
+    for (float g : growth) {
+      st.min_growth = g < st.min_growth ? g : st.min_growth;
+      st.max_growth = g > st.max_growth ? g : st.max_growth;
+    }
+    return st;
+  }
+
+  SimState state() override {
+    SimState s;
+    const std::size_t n = static_cast<std::size_t>(world_.vertices);
+    s.x.resize(n), s.y.resize(n), s.t.resize(n), s.vx.resize(n), s.vy.resize(n), s.vt.resize(n);
+    s.spring_rest.resize(spring_count_);
+    s.growth.resize(world_.slices);
+    read(x_, s.x, "x"), read(y_, s.y, "y"), read(t_, s.t, "t");
+    read(vx_, s.vx, "vx"), read(vy_, s.vy, "vy"), read(vt_, s.vt, "vt");
+    read(rest_, s.spring_rest, "spring_rest");
+    read(growth_, s.growth, "growth", true);
+    settle_times();
+    s.iteration = iteration_;
+    return s;
+  }
+
+  reference::StepForces debug_forces(reference::ForceBreakdown* out) override {
+    build_grid();
+    const std::int32_t n = world_.vertices;
+    if (out != nullptr) {
+      breakdown_ = opencl::make_buffer(context_, CL_MEM_READ_WRITE, sizeof(float) * 3 * AP_FORCE_COMPONENTS * n,
+                                       "breakdown");
+      forces_.set(breakdown_arg_, breakdown_);
+    }
+    WorldInfo world = world_;
+    world.breakdown = out != nullptr ? 1 : 0;
+    forces_.set(0, world);
+    slice_centroids_.run(queue_, world_.slices);
+    forces_.run(queue_, n);
+    forces_.set(0, world_);
+    reference::StepForces r;
+    r.total.assign(n);
+    r.closest.resize(n);
+    r.inside.resize(n);
+    read(fx_, r.total.x, "fx"), read(fy_, r.total.y, "fy"), read(ft_, r.total.t, "ft");
+    read(closest_, r.closest, "closest");
+    read(inside_, r.inside, "inside", true);
+    if (out != nullptr) {
+      std::vector<float> all(static_cast<std::size_t>(3) * AP_FORCE_COMPONENTS * n);
+      read(breakdown_, all, "breakdown", true);
+      reference::ForceField* fields[AP_FORCE_COMPONENTS] = {};
+      fields[AP_FORCE_REPULSION] = &out->repulsion, fields[AP_FORCE_SPRINGS] = &out->springs;
+      fields[AP_FORCE_TARGET] = &out->target, fields[AP_FORCE_BOUNDARY] = &out->boundary;
+      fields[AP_FORCE_OVERLAP] = &out->overlap, fields[AP_FORCE_TORSION] = &out->torsion;
+      fields[AP_FORCE_TEMPORAL] = &out->temporal;
+      for (int c = 0; c < AP_FORCE_COMPONENTS; ++c) {
+        const auto at = [&](int axis) { return all.begin() + (static_cast<std::ptrdiff_t>(c) * 3 + axis) * n; };
+        fields[c]->x.assign(at(0), at(1));
+        fields[c]->y.assign(at(1), at(2));
+        fields[c]->t.assign(at(2), at(3));
+      }
+    }
+    pending_.clear();
+    return r;
+  }
+
+  reference::CollisionGrid debug_grid() override {
+    build_grid();
+    reference::CollisionGrid g;
+    g.n = grid_.n;
+    g.cell = grid_.cell;
+    g.cx.resize(grid_.triangles), g.cy.resize(grid_.triangles), g.ct.resize(grid_.triangles);
+    read(env_cx_, g.cx, "env_cx"), read(env_cy_, g.cy, "env_cy"), read(env_ct_, g.ct, "env_ct", true);
+    g.triangle_cell = cells_;
+    g.cell_start = cell_start_;
+    g.sorted_triangles = sorted_;
+    pending_.clear();
+    return g;
+  }
+
+ private:
+  template <typename T>
+  cl::Buffer upload(const std::vector<T>& data, const char* name, cl_mem_flags flags) {
+    cl::Buffer b = opencl::make_buffer(context_, flags, sizeof(T) * data.size(), name);
+    if (!data.empty())
+      check(queue_.enqueueWriteBuffer(b, CL_TRUE, 0, sizeof(T) * data.size(), data.data()),
+            std::string("clEnqueueWriteBuffer(") + name + ")");
+    return b;
+  }
+
+  // Reads are non-blocking except the last of a batch: the queue is in order, so one wait covers all.
+  template <typename T>
+  void read(const cl::Buffer& b, std::vector<T>& out, const char* name, bool wait = false) {
+    if (out.empty()) return;
+    cl::Event e;
+    check(queue_.enqueueReadBuffer(b, wait ? CL_TRUE : CL_FALSE, 0, sizeof(T) * out.size(), out.data(), nullptr, &e),
+          std::string("clEnqueueReadBuffer(") + name + ")");
+    pending_.push_back({&times_.transfer, e});
+  }
+
+  void timed(double& sink, const cl::Event& e) {
+    if (e() != nullptr) pending_.push_back({&sink, e});
+  }
+
+  // Device time per phase from the profiling events. Callers have just waited on a read, so the
+  // finish is free; it covers batches whose reads were all empty (a world without envelope).
+  void settle_times() {
+    check(queue_.finish(), "clFinish");
+    for (const auto& [sink, event] : pending_) {
+      cl_ulong start = 0, end = 0;
+      check(event.getProfilingInfo(CL_PROFILING_COMMAND_START, &start), "clGetEventProfilingInfo(START)");
+      check(event.getProfilingInfo(CL_PROFILING_COMMAND_END, &end), "clGetEventProfilingInfo(END)");
+      *sink += static_cast<double>(end - start) * 1e-9;
+    }
+    pending_.clear();
+  }
+
+  // Centroids and cells on the device, the stable counting sort on the host (as grid.cpp).
+  void build_grid() {
+    timed(times_.grid, envelope_cells_.run(queue_, grid_.triangles));
+    read(triangle_cell_, cells_, "triangle_cell", true);
+    settle_times();
+    Stopwatch w(times_.grid);
+    std::fill(cell_start_.begin(), cell_start_.end(), 0);
+    for (const std::int32_t c : cells_) ++cell_start_[c + 1];
+    for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c) cell_start_[c + 1] += cell_start_[c];
+    std::vector<std::int32_t> cursor(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::int32_t i = 0; i < grid_.triangles; ++i) sorted_[cursor[cells_[i]]++] = i;
+    // The host vectors stay untouched until the next build, which first waits on this queue.
+    check(queue_.enqueueWriteBuffer(cell_start_buf_, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
+                                    cell_start_.data()),
+          "clEnqueueWriteBuffer(cell_start)");
+    if (!sorted_.empty())
+      check(queue_.enqueueWriteBuffer(sorted_buf_, CL_FALSE, 0, sizeof(std::int32_t) * sorted_.size(), sorted_.data()),
+            "clEnqueueWriteBuffer(sorted_triangles)");
+    grid_built_ = true;
+  }
+
+  Topology topo_;
+  DeviceInfo info_;
+  std::uint64_t iteration_;
+  int rebuild_;
+  bool grid_built_ = false;
+  WorldInfo world_{};
+  GridInfo grid_{};
+  std::size_t spring_count_ = 0;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  std::deque<cl::Buffer> held_;       ///< read-only inputs and scratch, held for the kernels' arguments
+  cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
+  cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
+  cl::Buffer fx_, fy_, ft_, closest_, inside_, grew_, breakdown_, slice_gap_, slice_inside_, slice_bad_;
+  Kernel envelope_cells_, slice_centroids_, forces_, integrate_, constraints_, loop_, grow_, rest_lengths_, statistics_;
+  cl_uint breakdown_arg_ = 0;
+  std::vector<std::int32_t> cells_, cell_start_, sorted_;
+  std::vector<std::pair<double*, cl::Event>> pending_;
+  PhaseTimes times_;
+};
+
+}  // namespace
+
+std::unique_ptr<OpenclBackend> make_opencl_backend(const Topology& topology, SimState initial, const Params& params,
+                                                   const DeviceChoice& choice) {
+  if (choice.reference) throw std::invalid_argument("make_opencl_backend: the choice is the reference solver");
+  return std::make_unique<DeviceBackend>(topology, std::move(initial), params, choice.device);
+}
+
+}  // namespace animpak

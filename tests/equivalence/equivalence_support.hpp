@@ -1,0 +1,177 @@
+// Shared pieces of the equivalence suite (design.md "Equivalence by construction"): the devices under
+// test, bit-for-bit comparison of arrays with the worst mismatch in ULPs, and seeded random worlds
+// built with the solver tests' WorldBuilder.
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "animpak/opencl.hpp"
+#include "solver/tiny_worlds.hpp"
+
+namespace animpak::test {
+
+/// The OpenCL devices to test: the one ANIMPAK_TEST_DEVICE names, or every device present.
+inline std::vector<DeviceChoice> devices_under_test() {
+  std::vector<DeviceChoice> out;
+  if (const char* wanted = std::getenv("ANIMPAK_TEST_DEVICE"); wanted != nullptr && *wanted != '\0') {
+    DeviceChoice c = choose_device(wanted);
+    if (!c.reference) out.push_back(c);
+    return out;
+  }
+  for (const DeviceInfo& d : list_devices()) {
+    DeviceChoice c;
+    c.reference = false;
+    c.device = d;
+    out.push_back(c);
+  }
+  return out;
+}
+
+/// Distance in units in the last place between two floats of the same sign region (0 when the bits match).
+inline std::int64_t ulp_distance(float a, float b) {
+  const auto ordered = [](float f) {
+    const std::int32_t i = std::bit_cast<std::int32_t>(f);
+    return i < 0 ? std::int64_t{INT32_MIN} - i : std::int64_t{i};
+  };
+  if (std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b)) return 0;
+  const std::int64_t d = ordered(a) - ordered(b);
+  return d < 0 ? -d : (d == 0 ? 1 : d);  // +0 vs -0: different bits, one step apart for our purposes
+}
+
+/// Empty when `actual` matches `expected` bit for bit; otherwise names the array, the number of
+/// differing entries, the first and the worst (index, both values, ULPs).
+template <typename T>
+std::string bit_difference(const std::string& what, const std::vector<T>& expected, const std::vector<T>& actual) {
+  std::ostringstream s;
+  s.precision(9);
+  if (expected.size() != actual.size()) {
+    s << what << ": " << expected.size() << " reference values, " << actual.size() << " device values";
+    return s.str();
+  }
+  std::size_t count = 0, first = 0, worst = 0;
+  std::int64_t worst_ulps = -1;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    std::int64_t ulps = 0;
+    if constexpr (std::is_same_v<T, float>)
+      ulps = ulp_distance(expected[i], actual[i]);
+    else
+      ulps = expected[i] == actual[i] ? 0 : 1;
+    if (ulps == 0) continue;
+    if (count++ == 0) first = i;
+    if (ulps > worst_ulps) worst_ulps = ulps, worst = i;
+  }
+  if (count == 0) return {};
+  auto entry = [&](std::size_t i) {
+    std::ostringstream e;
+    e.precision(9);
+    e << "[" << i << "] reference " << +expected[i] << " device " << +actual[i];
+    if constexpr (std::is_same_v<T, float>) e << " (" << ulp_distance(expected[i], actual[i]) << " ulp)";
+    return e.str();
+  };
+  s << what << ": " << count << " of " << expected.size() << " differ; first " << entry(first) << "; worst "
+    << entry(worst);
+  return s.str();
+}
+
+/// Compares every force component of two breakdowns; returns all differences, one line each.
+inline std::string breakdown_difference(const reference::ForceBreakdown& ref, const reference::ForceBreakdown& dev) {
+  const std::pair<const char*, const reference::ForceField reference::ForceBreakdown::*> forces[] = {
+      {"repulsion", &reference::ForceBreakdown::repulsion}, {"springs", &reference::ForceBreakdown::springs},
+      {"target", &reference::ForceBreakdown::target},       {"boundary", &reference::ForceBreakdown::boundary},
+      {"overlap", &reference::ForceBreakdown::overlap},     {"torsion", &reference::ForceBreakdown::torsion},
+      {"temporal", &reference::ForceBreakdown::temporal}};
+  std::string out;
+  for (const auto& [name, member] : forces) {
+    const std::string n(name);
+    for (const std::string& d : {bit_difference(n + ".x (vertex)", (ref.*member).x, (dev.*member).x),
+                                 bit_difference(n + ".y (vertex)", (ref.*member).y, (dev.*member).y),
+                                 bit_difference(n + ".t (vertex)", (ref.*member).t, (dev.*member).t)})
+      if (!d.empty()) out += d + "\n";
+  }
+  return out;
+}
+
+/// Compares every array of two states; returns all differences, one line each.
+inline std::string state_difference(const SimState& ref, const SimState& dev) {
+  std::string out;
+  for (const std::string& d :
+       {bit_difference("x", ref.x, dev.x), bit_difference("y", ref.y, dev.y), bit_difference("t", ref.t, dev.t),
+        bit_difference("vx", ref.vx, dev.vx), bit_difference("vy", ref.vy, dev.vy), bit_difference("vt", ref.vt, dev.vt),
+        bit_difference("spring_rest", ref.spring_rest, dev.spring_rest), bit_difference("growth", ref.growth, dev.growth)})
+    if (!d.empty()) out += d + "\n";
+  if (ref.iteration != dev.iteration) out += "iteration differs\n";
+  return out;
+}
+
+/// The reference copy growth scales (ref_x, slice_ref_cx, ...), taken from the state as built.
+inline void fill_reference_copy(World& w) {
+  w.topo.ref_x = w.state.x;
+  w.topo.ref_y = w.state.y;
+  w.topo.ref_t = w.state.t;
+  reference::slice_centroids(w.topo, w.state, w.topo.slice_ref_cx, w.topo.slice_ref_cy);
+}
+
+struct RandomWorldShape {
+  int elements = 4;
+  int slices = 5;
+  int ring = 6;          ///< boundary vertices per slice
+  float min_radius = 0.03f, max_radius = 0.12f;
+  bool hole = true;      ///< a square hole in the container
+  bool targets = true;   ///< a target point on element 0
+};
+
+/// Ring elements at random places (so some overlap, some cross the container or the hole), random
+/// extra springs of every class, random velocities and growth, loop pairs on every element.
+inline World random_world(std::uint64_t seed, const RandomWorldShape& shape = {}) {
+  std::mt19937 rng(static_cast<std::uint32_t>(seed));
+  auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+  WorldBuilder b;
+  if (shape.hole) b.set_container({square(0.5f, 0.5f, 0.5f), square(uniform(0.3f, 0.7f), uniform(0.3f, 0.7f), 0.08f)});
+  for (int e = 0; e < shape.elements; ++e) {
+    const float cx = uniform(0.0f, 1.0f), cy = uniform(0.0f, 1.0f), r = uniform(shape.min_radius, shape.max_radius);
+    std::vector<TinySlice> slices;
+    for (int s = 0; s < shape.slices; ++s) {
+      TinySlice sl;
+      const float base = shape.slices > 1 ? float(s) / float(shape.slices - 1) : 0.0f;
+      sl.t = std::min(1.0f, std::max(0.0f, base + uniform(-0.02f, 0.02f)));
+      const float dx = uniform(-0.03f, 0.03f), dy = uniform(-0.03f, 0.03f);
+      for (int k = 0; k < shape.ring; ++k) {
+        const float a = 6.2831853f * (float(k) + uniform(-0.2f, 0.2f)) / float(shape.ring);
+        const float rr = r * uniform(0.6f, 1.2f);
+        sl.ring.push_back({cx + dx + rr * std::cos(a), cy + dy + rr * std::sin(a)});
+      }
+      slices.push_back(sl);
+    }
+    b.add_element(slices);
+  }
+  const std::int32_t per_element = shape.slices * shape.ring;
+  for (int e = 0; e < shape.elements; ++e) {
+    const std::int32_t base = e * per_element;
+    for (int k = 0; k < shape.ring; ++k) b.add_loop(base + (shape.slices - 1) * shape.ring + k, base + k);
+    for (int s = 0; s < shape.slices; ++s) {
+      const std::int32_t first = base + s * shape.ring;
+      b.add_spring(first, first + shape.ring / 2, SpringClass::shear);
+      b.add_spring(first + 1, first + shape.ring / 2 + 1, SpringClass::negative_space, uniform(0.0f, 0.1f));
+    }
+  }
+  if (shape.targets && shape.elements > 0) b.add_target(0, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 0.0f);
+  World out = b.build();
+  fill_reference_copy(out);
+  for (std::size_t v = 0; v < out.state.x.size(); ++v) {
+    out.state.vx[v] = uniform(-0.001f, 0.001f);
+    out.state.vy[v] = uniform(-0.001f, 0.001f);
+    out.state.vt[v] = uniform(-0.001f, 0.001f);
+  }
+  for (float& g : out.state.growth) g = uniform(1.0f, 1.5f);
+  return out;
+}
+
+}  // namespace animpak::test

@@ -1,0 +1,63 @@
+// Device discovery and selection, error names and build failures: the host layer's contract.
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "animpak/error.hpp"
+#include "equivalence_support.hpp"
+
+namespace animpak::test {
+
+TEST_CASE("choose_device: reference by name, unknown names refused", "[opencl]") {
+  const DeviceChoice ref = choose_device("reference");
+  CHECK(ref.reference);
+  CHECK(ref.explicit_request);
+  CHECK_THROWS_AS(choose_device("no-such-device-anywhere"), UsageError);
+  const DeviceChoice def = choose_device("");
+  CHECK_FALSE(def.explicit_request);
+  CHECK_FALSE(def.reason.empty());
+  // The default is a device exactly when one qualifies: a GPU, else PoCL.
+  bool qualifies = false;
+  for (const DeviceInfo& d : list_devices())
+    qualifies = qualifies || d.gpu || d.platform.find("Portable Computing Language") != std::string::npos;
+  CHECK(def.reference == !qualifies);
+}
+
+TEST_CASE("opencl_error_name: codes become their names", "[opencl]") {
+  CHECK(std::string(opencl_error_name(-5)) == "CL_OUT_OF_RESOURCES");
+  CHECK(std::string(opencl_error_name(-4)) == "CL_MEM_OBJECT_ALLOCATION_FAILURE");
+  CHECK(std::string(opencl_error_name(-11)) == "CL_BUILD_PROGRAM_FAILURE");
+  CHECK(std::string(opencl_error_name(12345)) == "unknown OpenCL error");
+  const OpenclError e("clCreateBuffer", -4, "buffer 'x' of 4 bytes");
+  CHECK(std::string(e.what()).find("clCreateBuffer failed: CL_MEM_OBJECT_ALLOCATION_FAILURE (buffer 'x'") == 0);
+}
+
+TEST_CASE("try_build_kernels: every device builds; a broken kernel reports its log", "[opencl]") {
+  const std::vector<DeviceChoice> devices = devices_under_test();
+  if (devices.empty()) {
+    WARN("no OpenCL device: kernel builds not tested");
+    return;
+  }
+  for (const DeviceChoice& d : devices) {
+    const KernelBuild ok = try_build_kernels(d.device);
+    INFO(d.device.name << "\n" << ok.log);
+    CHECK(ok.ok);
+  }
+  // A copy of the kernels with one syntax error, loaded through ANIMPAK_KERNEL_DIR.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("animpak-broken-kernels-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ANIMPAK_SOURCE_DIR) / "kernels"))
+    std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
+                               std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "temporal.cl", std::ios::app) << "\nthis is not OpenCL C;\n";
+  ::setenv("ANIMPAK_KERNEL_DIR", dir.c_str(), 1);
+  const KernelBuild broken = try_build_kernels(devices.front().device);
+  ::unsetenv("ANIMPAK_KERNEL_DIR");
+  std::filesystem::remove_all(dir);
+  CHECK_FALSE(broken.ok);
+  INFO(broken.log);
+  CHECK(broken.log.find("temporal.cl") != std::string::npos);
+}
+
+}  // namespace animpak::test

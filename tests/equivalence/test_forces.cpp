@@ -1,0 +1,127 @@
+// Per-force equivalence: every component of Eq. 7 from the device against reference::step_forces, bit
+// for bit, on seeded random worlds and on hand-made edge cases. A failure names the force, the axis,
+// the vertex, both values and their distance in ULPs.
+#include "equivalence_support.hpp"
+
+namespace animpak::test {
+namespace {
+
+struct Coverage {
+  int inside = 0, boundary = 0, target = 0, repulsion = 0;
+};
+
+// Compares one world's forces on every device; returns what the world exercised.
+Coverage check_forces(const World& w, const Params& params, const std::string& label) {
+  const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+  reference::ForceBreakdown ref_parts;
+  const reference::StepForces ref = reference::step_forces(w.topo, w.state, params, grid, &ref_parts);
+  Coverage c;
+  for (std::size_t v = 0; v < ref.inside.size(); ++v) {
+    c.inside += ref.inside[v];
+    c.boundary += ref_parts.boundary.x[v] != 0.0f;
+    c.target += ref_parts.target.x[v] != 0.0f;
+    c.repulsion += ref_parts.repulsion.x[v] != 0.0f;
+  }
+  for (const DeviceChoice& d : devices_under_test()) {
+    auto backend = make_opencl_backend(w.topo, w.state, params, d);
+    reference::ForceBreakdown dev_parts;
+    const reference::StepForces dev = backend->debug_forces(&dev_parts);
+    const std::string diff = breakdown_difference(ref_parts, dev_parts) +
+                             bit_difference("total.x", ref.total.x, dev.total.x) +
+                             bit_difference("total.y", ref.total.y, dev.total.y) +
+                             bit_difference("total.t", ref.total.t, dev.total.t) +
+                             bit_difference("closest", ref.closest, dev.closest) +
+                             bit_difference("inside", ref.inside, dev.inside);
+    INFO(label << " on " << d.device.name << "\n" << diff);
+    CHECK(diff.empty());
+  }
+  return c;
+}
+
+bool have_devices() {
+  if (!devices_under_test().empty()) return true;
+  WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
+  return false;
+}
+
+// A ring of `count` vertices at the given points, repeated on every slice time.
+std::vector<TinySlice> tube(const Ring& ring, const std::vector<float>& times) {
+  std::vector<TinySlice> slices;
+  for (const float t : times) slices.push_back({ring, t});
+  return slices;
+}
+
+World finish(WorldBuilder& b) {
+  World w = b.build();
+  fill_reference_copy(w);
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("forces: random worlds, default and paper constants", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  Coverage total;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    RandomWorldShape shape;
+    shape.elements = 3 + static_cast<int>(seed % 4);
+    shape.max_radius = 0.2f;  // large enough that elements overlap and cross the container
+    const World w = random_world(seed, shape);
+    for (const Params& params : {Params{}, paper_params()}) {
+      const Coverage c = check_forces(w, params, "seed " + std::to_string(seed));
+      total.inside += c.inside, total.boundary += c.boundary, total.target += c.target, total.repulsion += c.repulsion;
+    }
+  }
+  // The worlds must exercise every branch that differs between forces, or the comparison says little.
+  CHECK(total.inside > 0);
+  CHECK(total.boundary > 0);
+  CHECK(total.target > 0);
+  CHECK(total.repulsion > 0);
+}
+
+TEST_CASE("forces: vertices on cell borders and the grid's edge", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  // Multiples of the 0.04 cell edge, where floor(c / cell) decides between two cells; t on 0 and 1.
+  b.add_element(tube({{0.40f, 0.40f}, {0.48f, 0.40f}, {0.48f, 0.48f}, {0.40f, 0.48f}}, {0.0f, 0.44f, 1.0f}));
+  b.add_element(tube({{0.52f, 0.40f}, {0.60f, 0.40f}, {0.60f, 0.48f}, {0.52f, 0.48f}}, {0.0f, 0.48f, 1.0f}));
+  // On and beyond the cube's faces: clamped into the border cells, and outside the container.
+  b.add_element(tube({{0.0f, 0.0f}, {0.04f, -0.01f}, {0.04f, 0.04f}, {-0.02f, 0.04f}}, {0.0f, 0.5f, 1.0f}));
+  b.add_element(tube({{0.96f, 0.96f}, {1.02f, 0.96f}, {1.0f, 1.0f}, {0.96f, 1.0f}}, {0.0f, 0.96f, 1.0f}));
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "cell borders");
+}
+
+TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  // Two slices 1e-7 apart in t and a nearly collinear ring: slivers in every Voronoi region.
+  b.add_element(tube({{0.30f, 0.30f}, {0.34f, 0.300001f}, {0.38f, 0.30f}, {0.34f, 0.34f}}, {0.0f, 0.5f, 0.5000001f, 1.0f}));
+  b.add_element(tube({{0.33f, 0.29f}, {0.37f, 0.29f}, {0.37f, 0.33f}, {0.33f, 0.33f}}, {0.0f, 0.5f, 1.0f}));
+  b.add_element(tube({{0.35f, 0.31f}, {0.35f, 0.31f}, {0.36f, 0.32f}, {0.35f, 0.32f}}, {0.0f, 0.49f, 1.0f}));
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "degenerate");
+}
+
+TEST_CASE("forces: elements touching the container and a hole", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.set_container({square(0.5f, 0.5f, 0.45f), square(0.5f, 0.5f, 0.1f), square(0.2f, 0.8f, 0.05f)});
+  b.add_element(square_tube(0.05f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));   // across the outline
+  b.add_element(square_tube(0.5f, 0.5f, 0.05f, {0.0f, 0.5f, 1.0f}));    // inside the hole
+  b.add_element(square_tube(0.62f, 0.5f, 0.04f, {0.0f, 0.5f, 1.0f}));   // across the hole's edge
+  b.add_element(square_tube(0.2f, 0.8f, 0.06f, {0.0f, 0.5f, 1.0f}));    // around the second hole
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
+}
+
+TEST_CASE("forces: one element alone", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.add_element(square_tube(0.5f, 0.5f, 0.1f, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}));
+  b.add_target(0, 0.3f, 0.3f, 0.0f);
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "alone");
+}
+
+}  // namespace animpak::test

@@ -1,0 +1,97 @@
+// Whole-step equivalence: the OpenCL backend against the reference backend, step after step, on
+// random worlds and on a small real scene (the default example's star in the heart container). Every
+// array of the state must match bit for bit, and so must the statistics of the stop test.
+#include "animpak/scene.hpp"
+#include "equivalence_support.hpp"
+
+namespace animpak::test {
+namespace {
+
+std::string statistics_difference(const StepStatistics& a, const StepStatistics& b) {
+  std::ostringstream s;
+  if (a.iteration != b.iteration) s << "iteration " << a.iteration << " vs " << b.iteration << "\n";
+  s << bit_difference("max_slice_gap", std::vector<float>{a.max_slice_gap}, std::vector<float>{b.max_slice_gap})
+    << bit_difference("min_slice_gap", std::vector<float>{a.min_slice_gap}, std::vector<float>{b.min_slice_gap})
+    << bit_difference("growth range", std::vector<float>{a.min_growth, a.max_growth},
+                      std::vector<float>{b.min_growth, b.max_growth});
+  if (a.growing_share != b.growing_share) s << "growing_share " << a.growing_share << " vs " << b.growing_share << "\n";
+  if (a.overlapping_vertices != b.overlapping_vertices)
+    s << "overlapping_vertices " << a.overlapping_vertices << " vs " << b.overlapping_vertices << "\n";
+  if (a.finite != b.finite || a.first_bad_vertex != b.first_bad_vertex) s << "finiteness differs\n";
+  return s.str();
+}
+
+// Runs `steps` steps on both backends, comparing the state every `compare_every` steps and the
+// statistics at the end; stops at the first step that differs so the message points at it.
+void check_steps(const Topology& topo, const SimState& initial, const Params& params, int steps, int compare_every,
+                 const std::string& label) {
+  const std::vector<DeviceChoice> devices = devices_under_test();
+  if (devices.empty()) {
+    WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
+    return;
+  }
+  for (const DeviceChoice& d : devices) {
+    auto ref = make_reference_backend(topo, initial, params);
+    auto dev = make_opencl_backend(topo, initial, params, d);
+    CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
+    for (int step = 1; step <= steps; ++step) {
+      ref->step();
+      dev->step();
+      if (step % compare_every != 0 && step != steps) continue;
+      const std::string diff = state_difference(ref->state(), dev->state());
+      INFO(label << " on " << d.device.name << ", after step " << step << "\n" << diff);
+      REQUIRE(diff.empty());
+    }
+    const std::string stats = statistics_difference(ref->statistics(), dev->statistics());
+    INFO(label << " on " << d.device.name << ": statistics\n" << stats);
+    CHECK(stats.empty());
+  }
+}
+
+}  // namespace
+
+TEST_CASE("steps: random worlds, 20 steps each", "[equivalence][opencl]") {
+  for (std::uint64_t seed = 11; seed <= 14; ++seed) {
+    RandomWorldShape shape;
+    shape.elements = 4;
+    shape.max_radius = 0.15f;
+    const World w = random_world(seed, shape);
+    Params params = paper_params();
+    params.grid_rebuild_interval = static_cast<int>(seed % 3) + 1;  // rebuilding every k steps, alike
+    check_steps(w.topo, w.state, params, 20, 1, "seed " + std::to_string(seed));
+  }
+}
+
+TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equivalence][opencl]") {
+  const std::string text = R"({
+    "container": {"art": "../shapes/heart-container.path"},
+    "elements": [{"name": "star", "art": "star.svg", "count": 4, "animation": {"preset": "rotate", "turns": 1}}],
+    "seed": 3, "loop": true, "slices": 6
+  })";
+  const std::filesystem::path dir = std::filesystem::path(ANIMPAK_SOURCE_DIR) / "examples" / "default";
+  const animpak::World world = make_world(parse_scene(text, dir / "scene.json", dir));
+  REQUIRE(world.elements.size() == 4);
+  check_steps(world.topology, world.state, world.params, 100, 10, "star scene");
+}
+
+}  // namespace animpak::test
+
+namespace animpak::test {
+
+TEST_CASE("steps: one element alone, and a world without envelope triangles", "[equivalence][opencl]") {
+  WorldBuilder alone;
+  alone.add_element(square_tube(0.5f, 0.5f, 0.1f, {0.0f, 0.3f, 0.6f, 1.0f}));
+  World w = alone.build();
+  fill_reference_copy(w);
+  check_steps(w.topo, w.state, paper_params(), 10, 1, "alone");
+
+  WorldBuilder flat;  // one slice per element: nothing to extrude an envelope from
+  flat.add_element(square_tube(0.3f, 0.3f, 0.1f, {0.5f}));
+  flat.add_element(square_tube(0.35f, 0.3f, 0.1f, {0.5f}));
+  World f = flat.build();
+  fill_reference_copy(f);
+  REQUIRE(f.topo.envelope_count() == 0);
+  check_steps(f.topo, f.state, paper_params(), 10, 1, "no envelope");
+}
+
+}  // namespace animpak::test
