@@ -53,7 +53,7 @@ TEST_CASE("animpak bench: JSON rows for every world, with phases, a fit and a wr
 }
 
 TEST_CASE("animpak bench: an unknown device is a usage error, a missing examples folder is bad input") {
-  CHECK(run_animpak("bench --device opencl --sizes 2000").code == 1);
+  CHECK(run_animpak("bench --device no-such-device --sizes 2000").code == 1);
   const CommandResult missing = run_animpak("bench --sizes 2000 --steps 1 --examples /nonexistent");
   CHECK(missing.code == 2);
   CHECK(missing.err.find("/nonexistent") != std::string::npos);
