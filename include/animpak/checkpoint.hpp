@@ -1,5 +1,7 @@
 // state.bin: everything needed to render or resume a packing. The scene text travels inside, so the
-// world can be rebuilt bit-identically (set-up is deterministic for scene + seed).
+// world can be rebuilt bit-identically (set-up is deterministic for scene + seed). It records nothing
+// about the device, so the reference and a bit-identical device write byte-identical files;
+// stats.json says which device ran.
 //
 // Layout (little-endian): "ANIMPAKS" magic, u32 version, then length-prefixed fields, the SimState
 // arrays, and an FNV-1a 64 checksum of everything before it.
@@ -18,7 +20,6 @@ struct Checkpoint {
   std::string scene_text;              ///< the scene file's contents when the packing started
   std::filesystem::path scene_file;    ///< where it was (messages, relative art paths)
   std::uint64_t seed = 0;              ///< the seed actually used (scene or --seed)
-  std::string backend;                 ///< device that produced the state
   std::string stop_reason;             ///< "running" when interrupted or still going
   SimState state;
 };

@@ -149,6 +149,9 @@ int bench(const BenchOptions& options) {
   for (const std::string& d : options.devices)
     if (std::find(devices.begin(), devices.end(), d) == devices.end()) devices.push_back(d);
 
+  // Resolve every device name before minutes of world building, so a typo fails at once.
+  for (const std::string& d : devices) (void)choose_device(d);
+
   std::vector<BenchRow> rows;
   for (const BenchWorld& w : bench_worlds(options)) {
     double reference_ms = 0.0;

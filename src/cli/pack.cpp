@@ -142,13 +142,13 @@ int pack(const PackOptions& options) {
   std::signal(SIGINT, previous);
   progress.finish();
 
-  checkpoint.backend = backend->name();
   checkpoint.stop_reason = stop_reason_name(result.reason);
   checkpoint.state = result.last_good;
   write_checkpoint(out / "state.bin", checkpoint);
   world.state = result.last_good;
 
   PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds};
+  report.device = backend->name();
   report.driver = driver;
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);

@@ -86,7 +86,7 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       {"commit", ANIMPAK_COMMIT},
       {"scene", r.checkpoint.scene_file.string()},
       {"seed", r.checkpoint.seed},
-      {"device", r.checkpoint.backend},
+      {"device", r.device},
       {"driver", r.driver},
       {"elements", w.elements.size()},
       {"vertices", w.topology.vertex_count()},

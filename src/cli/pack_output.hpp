@@ -28,6 +28,7 @@ struct PackReport {
   std::vector<FrameMetrics> frames;
   double setup_seconds = 0.0;
   double render_seconds = 0.0;
+  std::string device = "reference";
   std::string driver = "scalar reference (no OpenCL)";  ///< the device's driver and platform version
 };
 

@@ -90,7 +90,6 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put_string(c.scene_text);
   w.put_string(c.scene_file.string());
   w.put<std::uint64_t>(c.seed);
-  w.put_string(c.backend);
   w.put_string(c.stop_reason);
   w.put<std::uint64_t>(c.state.iteration);
   for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
@@ -133,7 +132,6 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   c.scene_text = r.get_string();
   c.scene_file = r.get_string();
   c.seed = r.get<std::uint64_t>();
-  c.backend = r.get_string();
   c.stop_reason = r.get_string();
   c.state.iteration = r.get<std::uint64_t>();
   for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,

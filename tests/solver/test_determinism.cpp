@@ -68,7 +68,6 @@ TEST_CASE("reference solver: N steps, state.bin, read back, M more steps equals 
   saved.scene_text = "{}";
   saved.scene_file = "tiny.json";
   saved.seed = w.seed;
-  saved.backend = before->name();
   saved.stop_reason = "running";
   saved.state = run_steps(*before, n);
   const auto file = std::filesystem::temp_directory_path() / ("animpak-resume-" + std::to_string(::getpid()) + ".bin");
