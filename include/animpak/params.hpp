@@ -14,26 +14,26 @@ namespace animpak {
 
 struct Params {
   // §3 spacetime elements
-  double offset = 0.04;            ///< Δs, channel of negative space around each element (unit square)
-  double boundary_spacing = 0.15;  ///< arc length between boundary samples of the offset outline
-  double interior_spacing = 0.15;  ///< minimum distance between interior (Poisson-disk) samples
-  int slices = 100;                ///< n_s, slices along the time axis
+  double offset = 0.04;             ///< Δs, channel of negative space around each element (unit square)
+  double boundary_spacing = 0.15;   ///< arc length between boundary samples of the offset outline
+  double interior_spacing = 0.15;   ///< minimum distance between interior (Poisson-disk) samples
+  int slices = 100;                 ///< n_s, slices along the time axis
 
   // §4 initial configuration
-  double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
-  double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
+  double initial_scale = 0.07;      ///< elements start at 5–10 % of their size
+  double seed_spacing = 0.2;        ///< blue-noise distance between unguided seeds when the scene fills
 
   // §5 forces
   double k_repulsion = 8e-8;        ///< Eq. 1
-  double repulsion_epsilon = 4e-6;   ///< ε of Eq. 1
-  double k_edge = 5000.0;             ///< Eq. 2, slice edge springs
-  double k_shear = 5000.0;            ///< Eq. 2, shear springs
-  double k_negative_space = 50.0;    ///< Eq. 2, negative-space springs
-  double k_time = 5.0;             ///< Eq. 2, time springs
-  double k_target = 5000.0;           ///< Eq. 2, target-point springs of guided elements
+  double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
+  double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
+  double k_shear = 5000.0;          ///< Eq. 2, shear springs
+  double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
+  double k_time = 5.0;              ///< Eq. 2, time springs
+  double k_target = 5000.0;         ///< Eq. 2, target-point springs of guided elements
   double k_overlap = 5.0;           ///< Eq. 3
   double k_boundary = 5.0;          ///< Eq. 4
-  double k_torsion = 2e-4;           ///< Eq. 5
+  double k_torsion = 2e-4;          ///< Eq. 5
   double k_temporal = 1.0;          ///< Eq. 6
   double dt = 0.05;                 ///< Δt_sim, explicit Euler step
   double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
@@ -41,7 +41,7 @@ struct Params {
   int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
 
   // §5.3 growth and stopping
-  double growth_rate = 0.01;       ///< g grows by growth_rate · Δt_sim per step on a free slice
+  double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
   double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
   double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
   int max_iterations = 100000;      ///< hard cap on steps

@@ -49,7 +49,7 @@ std::vector<Built> build_all(const InspectOptions& options) {
 int inspect(const InspectOptions& options) {
   const std::vector<Built> built = build_all(options);
 
-  nlohmann::json report = {{"elements", nlohmann::json::array()}};
+  nlohmann::ordered_json report = {{"elements", nlohmann::ordered_json::array()}};
   for (const Built& b : built) {
     for (const std::string& w : b.warnings) std::cerr << "animpak: warning: " << w << "\n";
     for (const std::string& n : b.element.notes) std::cerr << "animpak: note: " << b.element.name << ": " << n << "\n";
