@@ -7,7 +7,8 @@
 
 namespace animpak {
 
-enum class ExitCode : int { ok = 0, usage = 1, bad_input = 2, internal = 3, interrupted = 130 };
+/// `differs`: `animpak validate` found a device whose numbers are not bit for bit the reference's.
+enum class ExitCode : int { ok = 0, usage = 1, bad_input = 2, internal = 3, differs = 4, interrupted = 130 };
 
 /// Bad input: a file that cannot be read, a malformed or unsupported SVG/JSON/.path, degenerate art.
 /// The message names the file, the field or element, and what to do.

@@ -68,6 +68,18 @@ struct BenchOptions {
 
 int bench(const BenchOptions& options);
 
+struct ValidateOptions {
+  std::filesystem::path scene;
+  std::optional<std::string> device;  ///< part of a device name; unset: the device pack would choose
+  int steps = 20;
+  bool all_devices = false;  ///< every OpenCL device, one summary row each
+  bool json = false;
+};
+
+/// Steps the reference and OpenCL devices side by side and compares every force and state array bit
+/// for bit; 0 when identical, ExitCode::differs when not.
+int validate(const ValidateOptions& options);
+
 /// Parses the command line and runs the chosen subcommand; never throws.
 int run(int argc, char** argv);
 

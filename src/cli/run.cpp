@@ -21,7 +21,8 @@ int run(int argc, char** argv) {
   CLI::App app{"animpak: packs animated vector elements into a container (AnimationPak)", "animpak"};
   app.set_version_flag("--version", "animpak 0.1.0");
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error.");
+  app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
+             "that differs from the reference.");
 
   InspectOptions inspect_options;
   CLI::App* inspect_cmd = app.add_subcommand(
@@ -62,6 +63,17 @@ int run(int argc, char** argv) {
   CLI::App* devices_cmd =
       app.add_subcommand("devices", "List the OpenCL platforms and devices and whether animpak's kernels build on each");
   devices_cmd->add_flag("--verbose", devices_options.verbose, "print every device's kernel build log");
+
+  ValidateOptions validate_options;
+  CLI::App* validate_cmd = app.add_subcommand(
+      "validate", "Step the reference and an OpenCL device side by side and compare every force and state bit for bit");
+  validate_cmd->add_option("SCENE", validate_options.scene, "scene file (.json)")->required();
+  validate_cmd->add_option("--device", validate_options.device,
+                           "part of an OpenCL device's name (pocl, nvidia; see animpak devices); default: the device "
+                           "pack would choose");
+  validate_cmd->add_option("--steps", validate_options.steps, "steps to compare")->check(CLI::Range(1, 100000));
+  validate_cmd->add_flag("--all-devices", validate_options.all_devices, "every OpenCL device, one summary row each");
+  validate_cmd->add_flag("--json", validate_options.json, "print the results as JSON");
 
   RenderOptions render_options;
   CLI::App* render_cmd = app.add_subcommand("render", "Render the frames of a saved packing again");
@@ -105,6 +117,7 @@ int run(int argc, char** argv) {
     if (render_cmd->parsed()) return render(render_options);
     if (bench_cmd->parsed()) return bench(bench_options);
     if (devices_cmd->parsed()) return devices(devices_options);
+    if (validate_cmd->parsed()) return validate(validate_options);
     return fail(ExitCode::usage, "no command given; see animpak --help");
   } catch (const UsageError& e) {
     return fail(ExitCode::usage, e.what());

@@ -5,7 +5,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <bit>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
@@ -13,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "animpak/compare.hpp"
 #include "animpak/opencl.hpp"
 #include "solver/tiny_worlds.hpp"
 
@@ -33,17 +33,6 @@ inline std::vector<DeviceChoice> devices_under_test() {
     out.push_back(c);
   }
   return out;
-}
-
-/// Distance in units in the last place between two floats of the same sign region (0 when the bits match).
-inline std::int64_t ulp_distance(float a, float b) {
-  const auto ordered = [](float f) {
-    const std::int32_t i = std::bit_cast<std::int32_t>(f);
-    return i < 0 ? std::int64_t{INT32_MIN} - i : std::int64_t{i};
-  };
-  if (std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b)) return 0;
-  const std::int64_t d = ordered(a) - ordered(b);
-  return d < 0 ? -d : (d == 0 ? 1 : d);  // +0 vs -0: different bits, one step apart for our purposes
 }
 
 /// Empty when `actual` matches `expected` bit for bit; otherwise names the array, the number of
@@ -83,18 +72,13 @@ std::string bit_difference(const std::string& what, const std::vector<T>& expect
 
 /// Compares every force component of two breakdowns; returns all differences, one line each.
 inline std::string breakdown_difference(const reference::ForceBreakdown& ref, const reference::ForceBreakdown& dev) {
-  const std::pair<const char*, const reference::ForceField reference::ForceBreakdown::*> forces[] = {
-      {"repulsion", &reference::ForceBreakdown::repulsion}, {"springs", &reference::ForceBreakdown::springs},
-      {"target", &reference::ForceBreakdown::target},       {"boundary", &reference::ForceBreakdown::boundary},
-      {"overlap", &reference::ForceBreakdown::overlap},     {"torsion", &reference::ForceBreakdown::torsion},
-      {"temporal", &reference::ForceBreakdown::temporal}};
   std::string out;
-  for (const auto& [name, member] : forces) {
-    const std::string n(name);
-    for (const std::string& d : {bit_difference(n + ".x (vertex)", (ref.*member).x, (dev.*member).x),
-                                 bit_difference(n + ".y (vertex)", (ref.*member).y, (dev.*member).y),
-                                 bit_difference(n + ".t (vertex)", (ref.*member).t, (dev.*member).t)})
-      if (!d.empty()) out += d + "\n";
+  for (const NamedForce& force : breakdown_forces) {
+    const std::string n(force.name);
+    const reference::ForceField &r = ref.*force.field, &d = dev.*force.field;
+    for (const std::string& line : {bit_difference(n + ".x (vertex)", r.x, d.x), bit_difference(n + ".y (vertex)", r.y, d.y),
+                                    bit_difference(n + ".t (vertex)", r.t, d.t)})
+      if (!line.empty()) out += line + "\n";
   }
   return out;
 }
@@ -102,11 +86,10 @@ inline std::string breakdown_difference(const reference::ForceBreakdown& ref, co
 /// Compares every array of two states; returns all differences, one line each.
 inline std::string state_difference(const SimState& ref, const SimState& dev) {
   std::string out;
-  for (const std::string& d :
-       {bit_difference("x", ref.x, dev.x), bit_difference("y", ref.y, dev.y), bit_difference("t", ref.t, dev.t),
-        bit_difference("vx", ref.vx, dev.vx), bit_difference("vy", ref.vy, dev.vy), bit_difference("vt", ref.vt, dev.vt),
-        bit_difference("spring_rest", ref.spring_rest, dev.spring_rest), bit_difference("growth", ref.growth, dev.growth)})
+  for (const NamedStateArray& a : state_arrays) {
+    const std::string d = bit_difference(a.name, ref.*a.array, dev.*a.array);
     if (!d.empty()) out += d + "\n";
+  }
   if (ref.iteration != dev.iteration) out += "iteration differs\n";
   return out;
 }
