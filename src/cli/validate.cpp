@@ -113,6 +113,8 @@ int validate(const ValidateOptions& options) {
   if (options.all_devices) {
     targets = list_devices();
   } else {
+    if (options.device && list_devices().empty())
+      throw UsageError("--device " + *options.device + ": no OpenCL device found; nothing to validate");
     const DeviceChoice choice = choose_device(options.device.value_or(""));
     if (!choice.reference) targets.push_back(choice.device);
   }

@@ -62,8 +62,9 @@ void print_rows(std::ostream& out, const std::vector<std::array<std::string, 5>>
   }
 }
 
-nlohmann::json worst_json(const WorstError& w) {
-  nlohmann::json j{{"value", w.value}};
+// ULP distances are whole numbers (at most 2^32, compare.hpp) and print as such.
+nlohmann::json worst_json(const WorstError& w, bool whole = false) {
+  nlohmann::json j{{"value", whole ? nlohmann::json(static_cast<std::int64_t>(w.value)) : nlohmann::json(w.value)}};
   if (w.value != 0.0) j.update({{"state", w.state}, {"vertex", w.vertex}, {"axis", std::string(1, w.axis)}});
   return j;
 }
@@ -127,7 +128,7 @@ void print_json(std::ostream& out, const ValidationHeader& header, const std::ve
     nlohmann::json forces = nlohmann::json::array();
     for (const ForceComparison& f : v.forces)
       forces.push_back({{"force", f.name}, {"differing", f.differing}, {"max_abs_error", worst_json(f.abs)},
-                        {"max_rel_error", worst_json(f.rel)}, {"max_ulp", worst_json(f.ulp)}});
+                        {"max_rel_error", worst_json(f.rel)}, {"max_ulp", worst_json(f.ulp, true)}});
     nlohmann::json mismatches = nlohmann::json::array();
     for (const StateMismatch& m : v.mismatches)
       mismatches.push_back({{"array", m.array}, {"index", m.index}, {"first", m.first}, {"reference", m.reference},
