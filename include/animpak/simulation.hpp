@@ -3,6 +3,7 @@
 // keeps the last good state. Backends: the scalar reference (src/solver/reference) and OpenCL.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -32,6 +33,19 @@ struct StepStatistics {
 struct PhaseTimes {
   double grid = 0, forces = 0, integrate = 0, constraints = 0, loop = 0, growth = 0, statistics = 0, transfer = 0;
   double total() const { return grid + forces + integrate + constraints + loop + growth + statistics + transfer; }
+};
+
+/// Adds the seconds of its own lifetime to `sink`: a named timing scope per phase of a step.
+class PhaseStopwatch {
+ public:
+  explicit PhaseStopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
+  ~PhaseStopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  PhaseStopwatch(const PhaseStopwatch&) = delete;
+  PhaseStopwatch& operator=(const PhaseStopwatch&) = delete;
+
+ private:
+  double& sink_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 class Backend {

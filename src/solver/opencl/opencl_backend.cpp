@@ -15,16 +15,6 @@ namespace {
 using opencl::check;
 using opencl::Kernel;
 
-class Stopwatch {
- public:
-  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-
- private:
-  double& sink_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 void validate(const Topology& topo) {
   const std::int32_t n = topo.vertex_count();
   if (topo.slice_begin.empty() || topo.slice_begin.front() != 0 || topo.slice_begin.back() != n)
@@ -163,7 +153,7 @@ class DeviceBackend final : public OpenclBackend {
     read(growth_, growth, "growth");
     read(grew_, grew, "grew", true);
     settle_times();
-    Stopwatch w(times_.statistics);
+    PhaseStopwatch w(times_.statistics);
     // The same reductions, in the same order, as the reference backend's statistics().
     StepStatistics st;
     st.iteration = iteration_;
@@ -297,7 +287,7 @@ class DeviceBackend final : public OpenclBackend {
     timed(times_.grid, envelope_cells_.run(queue_, grid_.triangles));
     read(triangle_cell_, cells_, "triangle_cell", true);
     settle_times();
-    Stopwatch w(times_.grid);
+    PhaseStopwatch w(times_.grid);
     std::fill(cell_start_.begin(), cell_start_.end(), 0);
     for (const std::int32_t c : cells_) ++cell_start_[c + 1];
     for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c) cell_start_[c + 1] += cell_start_[c];

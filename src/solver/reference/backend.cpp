@@ -8,16 +8,6 @@
 namespace animpak {
 namespace {
 
-class Stopwatch {
- public:
-  explicit Stopwatch(double& sink) : sink_(sink), start_(std::chrono::steady_clock::now()) {}
-  ~Stopwatch() { sink_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-
- private:
-  double& sink_;
-  std::chrono::steady_clock::time_point start_;
-};
-
 class ReferenceBackend final : public Backend {
  public:
   ReferenceBackend(const Topology& topology, SimState initial, const Params& params)
@@ -31,36 +21,36 @@ class ReferenceBackend final : public Backend {
   // One step in the order of design.md "One step"; each phase is timed on its own.
   void step() override {
     if (state_.iteration % static_cast<std::uint64_t>(params_.grid_rebuild_interval) == 0 || grid_.n == 0) {
-      Stopwatch w(times_.grid);
+      PhaseStopwatch w(times_.grid);
       grid_ = reference::build_collision_grid(topo_, state_, params_);
     }
     reference::StepForces forces;
     {
-      Stopwatch w(times_.forces);
+      PhaseStopwatch w(times_.forces);
       forces = reference::step_forces(topo_, state_, params_, grid_, nullptr);
     }
     {
-      Stopwatch w(times_.integrate);
+      PhaseStopwatch w(times_.integrate);
       reference::integrate(forces.total, params_, state_);
     }
     {
-      Stopwatch w(times_.constraints);
+      PhaseStopwatch w(times_.constraints);
       for (std::int32_t e = 0; e < topo_.element_count(); ++e) {
         reference::apply_end_to_end(topo_, state_, e);
         reference::apply_simultaneity(topo_, state_, e);
       }
     }
     {
-      Stopwatch w(times_.loop);
+      PhaseStopwatch w(times_.loop);
       reference::apply_loop(topo_, state_);
     }
     {
-      Stopwatch w(times_.growth);
+      PhaseStopwatch w(times_.growth);
       grown_ = reference::grow_slices(topo_, forces.inside, params_, state_, grew_);
       reference::update_rest_lengths(topo_, grew_, state_);
     }
     {
-      Stopwatch w(times_.statistics);
+      PhaseStopwatch w(times_.statistics);
       for (std::int32_t s = 0; s < topo_.slice_count(); ++s) {
         float gap = std::numeric_limits<float>::infinity();
         for (std::int32_t v = topo_.slice_begin[s]; v < topo_.slice_begin[s + 1]; ++v)
@@ -73,7 +63,7 @@ class ReferenceBackend final : public Backend {
   }
 
   StepStatistics statistics() override {
-    Stopwatch w(times_.statistics);
+    PhaseStopwatch w(times_.statistics);
     StepStatistics st;
     st.iteration = state_.iteration;
     st.max_slice_gap = 0.0f;
