@@ -143,7 +143,7 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
   return f;
 }
 
-int bench(const BenchOptions& options) {
+int bench(const BenchOptions& options, const BenchPlotter& plot) {
   // The reference backend is always timed: it is the baseline every speedup is measured against.
   std::vector<std::string> devices{"reference"};
   for (const std::string& d : options.devices)
@@ -188,7 +188,7 @@ int bench(const BenchOptions& options) {
                   d.c_str(), f.visit_cost_ratio);
   }
   if (options.json) write_json(rows, devices, *options.json);
-  if (options.plot) write_bench_plot(rows, *options.plot);
+  if (plot) plot(rows);
   return 0;
 }
 

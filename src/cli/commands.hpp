@@ -1,14 +1,20 @@
-// The subcommands of `animpak`. Each returns an exit code; errors are thrown and mapped in run().
+// The subcommands of `animpak` and `animpak-solve`. Each returns an exit code; errors are thrown and mapped
+// in run().
 #pragma once
 
 #include <filesystem>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "animpak/render.hpp"  // FrameMetrics, a plain struct: declaring it links nothing from animpak_render
+#include "bench_report.hpp"
+
 namespace animpak::cli {
 
+// inspect and render draw, so only `animpak` defines them (inspect.cpp, render_commands.cpp).
 struct InspectOptions {
   std::filesystem::path file;           ///< a scene (.json) or one art file (.svg, .path)
   std::optional<std::filesystem::path> out;  ///< folder for the PNG pictures
@@ -34,11 +40,13 @@ struct PackOptions {
   std::optional<std::uint64_t> seed;
   std::optional<std::uint64_t> max_iterations;
   std::string device;  ///< empty: the default rule (first GPU, else PoCL, else the reference)
-  bool render = true;
-  FrameOptions frames;
 };
 
-int pack(const PackOptions& options);
+/// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
+/// returns the frame metrics for stats.json. Empty: pack writes no frames (--no-render).
+using FrameRenderer = std::function<std::vector<FrameMetrics>(const World& world, const std::filesystem::path& dir)>;
+
+int pack(const PackOptions& options, const FrameRenderer& render_frames);
 
 struct DevicesOptions {
   bool verbose = false;  ///< print every device's kernel build log
@@ -63,10 +71,12 @@ struct BenchOptions {
   std::filesystem::path examples = "examples";    ///< the element art and the example scenes
   bool example_scenes = true;                     ///< also time examples/{default,aquarium,annulus}
   std::optional<std::filesystem::path> json;
-  std::optional<std::filesystem::path> plot;
 };
 
-int bench(const BenchOptions& options);
+/// Called by bench with every row after the table and the JSON are written (the --plot picture).
+using BenchPlotter = std::function<void(const std::vector<BenchRow>& rows)>;
+
+int bench(const BenchOptions& options, const BenchPlotter& plot);
 
 struct ValidateOptions {
   std::filesystem::path scene;
@@ -80,7 +90,8 @@ struct ValidateOptions {
 /// for bit; 0 when identical, ExitCode::differs when not.
 int validate(const ValidateOptions& options);
 
-/// Parses the command line and runs the chosen subcommand; never throws.
+/// Parses the command line for this executable's commands (see frontend.hpp) and runs the chosen one;
+/// never throws.
 int run(int argc, char** argv);
 
 }  // namespace animpak::cli

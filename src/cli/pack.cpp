@@ -11,7 +11,6 @@
 #include "animpak/checkpoint.hpp"
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
-#include "animpak/render.hpp"
 #include "animpak/run.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
@@ -107,7 +106,7 @@ std::unique_ptr<Backend> make_backend(const std::string& request, const World& w
 
 }  // namespace
 
-int pack(const PackOptions& options) {
+int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   Checkpoint checkpoint;
   std::filesystem::path out = options.out;
   if (options.resume) {
@@ -162,17 +161,9 @@ int pack(const PackOptions& options) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
-  if (options.render && result.reason != StopReason::interrupted) report.frames = render_frames(world, out, options.frames);
+  if (render_frames && result.reason != StopReason::interrupted) report.frames = render_frames(world, out);
   write_stats(out / "stats.json", report);
   return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
-}
-
-int render(const RenderOptions& options) {
-  const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
-  LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
-  const auto frames = render_frames(loaded.world, options.dir, options.frames);
-  std::cerr << "animpak: rendered " << frames.size() << " frames into " << options.dir.string() << "\n";
-  return 0;
 }
 
 }  // namespace animpak::cli

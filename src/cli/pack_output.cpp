@@ -14,14 +14,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-FrameFormat parse_format(const std::string& name) {
-  if (name == "png") return FrameFormat::png;
-  if (name == "gif") return FrameFormat::gif;
-  if (name == "mp4") return FrameFormat::mp4;
-  if (name == "svg") return FrameFormat::svg;
-  throw UsageError("--format " + name + ": expected png, gif, mp4 or svg");
-}
-
 }  // namespace
 
 LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state) {
@@ -41,18 +33,6 @@ LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state)
   }
   loaded.setup_seconds = seconds_since(start);
   return loaded;
-}
-
-std::vector<FrameMetrics> render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
-  FrameOutput out;
-  out.dir = dir;
-  out.count = options.frames;
-  out.fps = options.fps;
-  out.style.size = options.size;
-  out.style.draw_container = options.draw_container;
-  out.formats.clear();
-  for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
-  return write_frames(world, world.state, out);
 }
 
 void write_stats(const std::filesystem::path& file, const PackReport& r) {

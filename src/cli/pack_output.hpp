@@ -1,4 +1,5 @@
-// What `pack` and `render` share: the world rebuilt from a checkpoint, frames, and stats.json.
+// What `pack` and `render` share: the world rebuilt from a checkpoint, and stats.json. Drawing the frames
+// lives in render_commands.cpp, so that animpak-solve links no rendering library.
 #pragma once
 
 #include "animpak/checkpoint.hpp"
@@ -16,9 +17,6 @@ struct LoadedWorld {
 /// Rebuilds the world from the scene text inside the checkpoint (set-up is deterministic), and with
 /// `with_state` puts the checkpoint's state in it after checking that the sizes match.
 LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state);
-
-/// Writes the frames in the requested formats into `dir` and returns their metrics.
-std::vector<FrameMetrics> render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options);
 
 struct PackReport {
   const World& world;

@@ -2,48 +2,32 @@
 
 #include <exception>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
 #include "commands.hpp"
+#include "frontend.hpp"
 
 namespace animpak::cli {
 namespace {
 
-int fail(ExitCode code, const std::string& message) {
-  std::cerr << "animpak: error: " << message << "\n";
+int fail(const std::string& program, ExitCode code, const std::string& message) {
+  std::cerr << program << ": error: " << message << "\n";
   return static_cast<int>(code);
 }
 
 }  // namespace
 
 int run(int argc, char** argv) {
-  CLI::App app{"animpak: packs animated vector elements into a container (AnimationPak)", "animpak"};
-  app.set_version_flag("--version", "animpak 0.1.0");
+  const std::unique_ptr<Frontend> frontend = make_frontend();
+  const std::string program = frontend->name();
+  CLI::App app{frontend->description(), program};
+  app.set_version_flag("--version", program + " 0.1.0");
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
              "that differs from the reference.");
-
-  InspectOptions inspect_options;
-  CLI::App* inspect_cmd = app.add_subcommand(
-      "inspect", "Build the spacetime elements of a scene or one art file and print their sizes (paper Table 1)");
-  inspect_cmd->add_option("FILE", inspect_options.file, "scene (.json) or art file (.svg, .path)")->required();
-  inspect_cmd->add_option("--out", inspect_options.out, "write PNG pictures of every element into this folder");
-  inspect_cmd->add_flag("--json", inspect_options.json, "print the counts as JSON");
-  inspect_cmd->add_option("--slices", inspect_options.slices, "number of slices n_s (overrides the scene)")
-      ->check(CLI::Range(2, 1000));
-  inspect_cmd->add_option("--size", inspect_options.picture_size, "picture height in pixels")
-      ->check(CLI::Range(16, 8192));
-
-  auto add_frame_options = [](CLI::App* cmd, FrameOptions& f) {
-    cmd->add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
-    cmd->add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
-    cmd->add_option("--fps", f.fps, "frames per second of GIF and MP4")->check(CLI::Range(1.0, 240.0));
-    cmd->add_option("--format", f.formats, "png, gif, mp4, svg (several allowed)")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"png", "gif", "mp4", "svg"}));
-    cmd->add_flag("!--no-container", f.draw_container, "do not draw the container outline");
-  };
 
   PackOptions pack_options;
   CLI::App* pack_cmd = app.add_subcommand("pack", "Pack a scene's animated elements into its container and render it");
@@ -56,8 +40,6 @@ int run(int argc, char** argv) {
   pack_cmd->add_option("--device", pack_options.device,
                        "solver: 'reference', or part of an OpenCL device's name (pocl, nvidia; see animpak devices); "
                        "default: the first GPU, else PoCL, else the reference");
-  pack_cmd->add_flag("!--no-render", pack_options.render, "do not render frames");
-  add_frame_options(pack_cmd, pack_options.frames);
 
   DevicesOptions devices_options;
   CLI::App* devices_cmd =
@@ -75,11 +57,6 @@ int run(int argc, char** argv) {
   validate_cmd->add_flag("--all-devices", validate_options.all_devices, "every OpenCL device, one summary row each");
   validate_cmd->add_flag("--json", validate_options.json, "print the results as JSON");
 
-  RenderOptions render_options;
-  CLI::App* render_cmd = app.add_subcommand("render", "Render the frames of a saved packing again");
-  render_cmd->add_option("DIR", render_options.dir, "folder written by animpak pack")->required();
-  add_frame_options(render_cmd, render_options.frames);
-
   BenchOptions bench_options;
   CLI::App* bench_cmd =
       app.add_subcommand("bench", "Time solver steps per phase on synthetic worlds and the example scenes");
@@ -95,7 +72,7 @@ int run(int argc, char** argv) {
   bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");
   bench_cmd->add_flag("!--no-example-scenes", bench_options.example_scenes, "time only the synthetic worlds");
   bench_cmd->add_option("--json", bench_options.json, "write the results as JSON");
-  bench_cmd->add_option("--plot", bench_options.plot, "draw ms/iteration against vertices into this PNG");
+  frontend->add_commands(app, *pack_cmd, *bench_cmd);
 
   try {
     app.parse(argc, argv);
@@ -112,24 +89,23 @@ int run(int argc, char** argv) {
   }
 
   try {
-    if (inspect_cmd->parsed()) return inspect(inspect_options);
-    if (pack_cmd->parsed()) return pack(pack_options);
-    if (render_cmd->parsed()) return render(render_options);
-    if (bench_cmd->parsed()) return bench(bench_options);
+    if (pack_cmd->parsed()) return pack(pack_options, frontend->frame_renderer());
+    if (bench_cmd->parsed()) return bench(bench_options, frontend->bench_plotter());
     if (devices_cmd->parsed()) return devices(devices_options);
     if (validate_cmd->parsed()) return validate(validate_options);
-    return fail(ExitCode::usage, "no command given; see animpak --help");
+    if (const std::optional<int> code = frontend->run_own_command()) return *code;
+    return fail(program, ExitCode::usage, "no command given; see " + program + " --help");
   } catch (const UsageError& e) {
-    return fail(ExitCode::usage, e.what());
+    return fail(program, ExitCode::usage, e.what());
   } catch (const InputError& e) {
-    return fail(ExitCode::bad_input, e.what());
+    return fail(program, ExitCode::bad_input, e.what());
   } catch (const OpenclError& e) {
-    return fail(ExitCode::internal, std::string("OpenCL: ") + e.what() + "\n(try --device reference)");
+    return fail(program, ExitCode::internal, std::string("OpenCL: ") + e.what() + "\n(try --device reference)");
   } catch (const std::bad_alloc&) {
-    return fail(ExitCode::internal, "out of memory; try a smaller scene (fewer slices or elements)");
+    return fail(program, ExitCode::internal, "out of memory; try a smaller scene (fewer slices or elements)");
   } catch (const std::exception& e) {
-    return fail(ExitCode::internal, std::string("internal error: ") + e.what() +
-                                        "; please report it with the command and input files");
+    return fail(program, ExitCode::internal, std::string("internal error: ") + e.what() +
+                                                 "; please report it with the command and input files");
   }
 }
 

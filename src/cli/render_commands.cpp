@@ -1,0 +1,112 @@
+// The full `animpak`: the solver commands of run.cpp plus everything that draws (inspect, render, the
+// frames after pack, bench --plot). Only this executable compiles this file and links animpak_render.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "animpak/error.hpp"
+#include "frontend.hpp"
+#include "pack_output.hpp"
+
+namespace animpak::cli {
+namespace {
+
+FrameFormat parse_format(const std::string& name) {
+  if (name == "png") return FrameFormat::png;
+  if (name == "gif") return FrameFormat::gif;
+  if (name == "mp4") return FrameFormat::mp4;
+  if (name == "svg") return FrameFormat::svg;
+  throw UsageError("--format " + name + ": expected png, gif, mp4 or svg");
+}
+
+/// Writes the frames in the requested formats into `dir` and returns their metrics.
+std::vector<FrameMetrics> render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
+  FrameOutput out;
+  out.dir = dir;
+  out.count = options.frames;
+  out.fps = options.fps;
+  out.style.size = options.size;
+  out.style.draw_container = options.draw_container;
+  out.formats.clear();
+  for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
+  return write_frames(world, world.state, out);
+}
+
+void add_frame_options(CLI::App& cmd, FrameOptions& f) {
+  cmd.add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
+  cmd.add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
+  cmd.add_option("--fps", f.fps, "frames per second of GIF and MP4")->check(CLI::Range(1.0, 240.0));
+  cmd.add_option("--format", f.formats, "png, gif, mp4, svg (several allowed)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"png", "gif", "mp4", "svg"}));
+  cmd.add_flag("!--no-container", f.draw_container, "do not draw the container outline");
+}
+
+class RenderingFrontend final : public Frontend {
+ public:
+  std::string name() const override { return "animpak"; }
+  std::string description() const override {
+    return "animpak: packs animated vector elements into a container (AnimationPak)";
+  }
+
+  void add_commands(CLI::App& app, CLI::App& pack, CLI::App& bench) override {
+    inspect_cmd_ = app.add_subcommand(
+        "inspect", "Build the spacetime elements of a scene or one art file and print their sizes (paper Table 1)");
+    inspect_cmd_->add_option("FILE", inspect_.file, "scene (.json) or art file (.svg, .path)")->required();
+    inspect_cmd_->add_option("--out", inspect_.out, "write PNG pictures of every element into this folder");
+    inspect_cmd_->add_flag("--json", inspect_.json, "print the counts as JSON");
+    inspect_cmd_->add_option("--slices", inspect_.slices, "number of slices n_s (overrides the scene)")
+        ->check(CLI::Range(2, 1000));
+    inspect_cmd_->add_option("--size", inspect_.picture_size, "picture height in pixels")->check(CLI::Range(16, 8192));
+
+    render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
+    render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();
+    add_frame_options(*render_cmd_, render_.frames);
+
+    pack.add_flag("!--no-render", pack_render_, "do not render frames");
+    add_frame_options(pack, pack_frames_);
+
+    bench.add_option("--plot", bench_plot_, "draw ms/iteration against vertices into this PNG");
+  }
+
+  std::optional<int> run_own_command() override {
+    if (inspect_cmd_->parsed()) return inspect(inspect_);
+    if (render_cmd_->parsed()) return render(render_);
+    return std::nullopt;
+  }
+
+  FrameRenderer frame_renderer() const override {
+    if (!pack_render_) return {};
+    return [frames = pack_frames_](const World& world, const std::filesystem::path& dir) {
+      return render_frames(world, dir, frames);
+    };
+  }
+
+  BenchPlotter bench_plotter() const override {
+    if (!bench_plot_) return {};
+    return [file = *bench_plot_](const std::vector<BenchRow>& rows) { write_bench_plot(rows, file); };
+  }
+
+ private:
+  CLI::App* inspect_cmd_ = nullptr;
+  CLI::App* render_cmd_ = nullptr;
+  InspectOptions inspect_;
+  RenderOptions render_;
+  bool pack_render_ = true;
+  FrameOptions pack_frames_;
+  std::optional<std::filesystem::path> bench_plot_;
+};
+
+}  // namespace
+
+int render(const RenderOptions& options) {
+  const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
+  LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
+  const auto frames = render_frames(loaded.world, options.dir, options.frames);
+  std::cerr << "animpak: rendered " << frames.size() << " frames into " << options.dir.string() << "\n";
+  return 0;
+}
+
+std::unique_ptr<Frontend> make_frontend() { return std::make_unique<RenderingFrontend>(); }
+
+}  // namespace animpak::cli
