@@ -88,7 +88,11 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.bytes().append(magic, sizeof magic);
   w.put<std::uint32_t>(checkpoint_version);
   w.put_string(c.scene_text);
-  w.put_string(c.scene_file.string());
+  // The scene's path relative to the state's own folder, so the folder and its scene can move
+  // together (e.g. a checkout carried to a GPU machine); absolute when they share no root.
+  const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
+  const std::filesystem::path relative = c.scene_file.is_absolute() ? c.scene_file.lexically_relative(base) : "";
+  w.put_string((relative.empty() ? c.scene_file : relative).generic_string());
   w.put<std::uint64_t>(c.seed);
   w.put_string(c.stop_reason);
   w.put<std::uint64_t>(c.state.iteration);
@@ -131,6 +135,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   Checkpoint c;
   c.scene_text = r.get_string();
   c.scene_file = r.get_string();
+  if (c.scene_file.is_relative())
+    c.scene_file = (std::filesystem::absolute(file).parent_path() / c.scene_file).lexically_normal();
   c.seed = r.get<std::uint64_t>();
   c.stop_reason = r.get_string();
   c.state.iteration = r.get<std::uint64_t>();

@@ -167,3 +167,17 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["overlapping_pairs"] == 0);
   }
 }
+
+TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
+  const Sandbox box("moved");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 10 --no-render").code == 0);
+  // Move the scene and the output folder together; nothing is left at the old place.
+  const fs::path moved = fs::path(box.path("elsewhere"));
+  fs::create_directories(moved);
+  fs::rename(box.scene(), moved / "scene.json");
+  fs::rename(box.path("out"), moved / "out");
+  const CommandResult r = run_animpak("render " + (moved / "out").string() + " --frames 1 --size 32 --format png");
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(fs::exists(moved / "out" / "frames" / "frame_0000.png"));
+}
