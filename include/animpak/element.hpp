@@ -110,6 +110,7 @@ struct SpacetimeElement {
   int vertices_per_slice() const { return static_cast<int>(slice.vertices.size()); }
   int vertex_count() const { return slice_count * vertices_per_slice(); }
   int id(int s, int v) const { return s * vertices_per_slice() + v; }
+  Vec2 position(int s, int v) const { return {x[id(s, v)], y[id(s, v)]}; }
 };
 
 /// Stacks `per_slice[s]` (positions of every slice vertex at slice s, s = 0..n_s-1, at t = s/(n_s-1))

@@ -18,7 +18,6 @@ struct RunResult {
   StopReason reason = StopReason::running;
   StepStatistics last;     ///< the latest statistics
   SimState last_good;      ///< the latest state known to be finite (the final state unless non_finite)
-  std::uint64_t steps_since_good = 0;
   double seconds = 0.0;
 };
 

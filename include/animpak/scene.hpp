@@ -25,6 +25,8 @@ struct Container {
   double distance_to_boundary(Vec2 p) const;
   /// Outline area minus hole areas.
   double area() const;
+  /// Box of the outline (holes lie inside it).
+  Box bounds() const;
 };
 
 /// Picks the outline and holes from the container art (spec.outline / spec.holes by source index;

@@ -114,10 +114,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     checkpoint = read_checkpoint(out / "state.bin");
   } else {
     checkpoint.scene_file = std::filesystem::absolute(options.scene);
-    (void)load_scene(checkpoint.scene_file);  // validates and names the file on every error
+    const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
     checkpoint.scene_text = read_whole(checkpoint.scene_file);
-    checkpoint.seed = options.seed ? *options.seed : parse_scene(checkpoint.scene_text, checkpoint.scene_file,
-                                                                 checkpoint.scene_file.parent_path()).seed;
+    checkpoint.seed = options.seed.value_or(scene.seed);
   }
   std::filesystem::create_directories(out);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value());

@@ -36,18 +36,8 @@ double element_scale(const World& world, int element, const std::vector<Vec2>& p
   return std::sqrt(std::abs(signed_area(now)) / std::max(std::abs(signed_area(before)), 1e-300));
 }
 
-namespace {
-
-Box container_box(const World& world) {
-  Box box;
-  for (Vec2 p : world.container.outline) box.add(p);
-  return box;
-}
-
-}  // namespace
-
 Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style) {
-  const Box box = container_box(world);
+  const Box box = world.container.bounds();
   const int height = style.size;
   const int width = std::max(1, static_cast<int>(std::lround(style.size * box.width() / std::max(box.height(), 1e-9))));
   Picture pic(width, height, box, style.background, 0.02 * style.size);

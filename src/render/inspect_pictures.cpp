@@ -14,7 +14,7 @@ constexpr Rgba boundary_colour{0, 0, 0, 1};
 
 std::vector<Vec2> slice_positions(const SpacetimeElement& e, int s) {
   std::vector<Vec2> p(e.vertices_per_slice());
-  for (int v = 0; v < e.vertices_per_slice(); ++v) p[v] = {e.x[e.id(s, v)], e.y[e.id(s, v)]};
+  for (int v = 0; v < e.vertices_per_slice(); ++v) p[v] = e.position(s, v);
   return p;
 }
 

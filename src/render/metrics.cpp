@@ -9,12 +9,6 @@ namespace {
 
 constexpr int coverage_size = 256;  // raster height for coverage: ±0.5 % at typical packings
 
-Box container_box(const World& world) {
-  Box box;
-  for (Vec2 p : world.container.outline) box.add(p);
-  return box;
-}
-
 // Every element's art painted opaque (colours do not matter, only coverage).
 void paint_opaque(Picture& pic, const World& world, const SimState& state, double tf, int element) {
   const SpacetimeElement& lib = world.library[world.elements[element].library];
@@ -35,7 +29,7 @@ std::pair<int, int> raster_size(const Box& box) {
 // Coverage on a raster: the container (outline minus holes, even–odd) against every element's art;
 // the ratio of covered container pixels.
 double coverage(const World& world, const SimState& state, double tf) {
-  const Box box = container_box(world);
+  const Box box = world.container.bounds();
   const auto [w, h] = raster_size(box);
   ArtShape region;
   ArtPath path;
@@ -64,7 +58,7 @@ double coverage(const World& world, const SimState& state, double tf) {
 // Whether two elements' art shares pixels: their offset outlines may overlap by up to the channel
 // without the art touching, so only the art decides.
 bool art_overlaps(const World& world, const SimState& state, double tf, int i, int j) {
-  const Box box = container_box(world);
+  const Box box = world.container.bounds();
   const auto [w, h] = raster_size(box);
   Picture a(w, h, box, {0, 0, 0, 0}, 0.0), b(w, h, box, {0, 0, 0, 0}, 0.0);
   paint_opaque(a, world, state, tf, i);

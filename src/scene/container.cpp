@@ -43,6 +43,12 @@ double Container::distance_to_boundary(Vec2 p) const {
   return d;
 }
 
+Box Container::bounds() const {
+  Box box;
+  for (Vec2 p : outline) box.add(p);
+  return box;
+}
+
 double Container::area() const {
   double a = std::abs(signed_area(outline));
   for (const auto& h : holes) a -= std::abs(signed_area(h));

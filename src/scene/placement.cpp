@@ -15,8 +15,6 @@ Vec2 rotate(Vec2 v, double angle) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 
-Vec2 slice_vertex(const SpacetimeElement& e, int s, int v) { return {e.x[e.id(s, v)], e.y[e.id(s, v)]}; }
-
 int library_index(const SceneSpec& scene, const std::string& name) {
   for (std::size_t i = 0; i < scene.elements.size(); ++i)
     if (scene.elements[i].name == name) return static_cast<int>(i);
@@ -79,7 +77,7 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
       const TargetSample target = sample_targets(g.targets, container, t);
       const double scale = scene.params.initial_scale * target.scale;
-      const Vec2 anchor = slice_vertex(e, s, p.anchor);
+      const Vec2 anchor = e.position(s, p.anchor);
       p.scale.push_back(scale);
       p.angle.push_back(target.angle);
       p.offset.push_back(target.position - scale * rotate(anchor - p.pivot, target.angle));

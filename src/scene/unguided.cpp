@@ -10,8 +10,6 @@
 namespace animpak::scene_detail {
 namespace {
 
-Vec2 slice_vertex(const SpacetimeElement& e, int s, int v) { return {e.x[e.id(s, v)], e.y[e.id(s, v)]}; }
-
 double orientation(const OrientationSpec& o, const Container& c, Vec2 p, Rng& rng) {
   constexpr double deg = std::numbers::pi / 180.0;
   if (o.mode == OrientationMode::random) return rng.uniform(0.0, 2.0 * std::numbers::pi);
@@ -67,7 +65,7 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
   for (const SpacetimeElement& e : library) {
     const Vec2 c = rest_centroid(e);
     for (int s = 0; s < e.slice_count; ++s)
-      for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(slice_vertex(e, s, v) - c));
+      for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(e.position(s, v) - c));
   }
   const double margin = 1.05 * scene.params.initial_scale * radius;
 
@@ -143,7 +141,7 @@ void check_placements(const Container& container, const std::vector<SpacetimeEle
     for (int s = 0; s < e.slice_count; ++s) {
       std::vector<Vec2> ring;
       for (int v = 0; v < e.slice.boundary_count; ++v) {
-        const Vec2 p = apply(placements[i], s, slice_vertex(e, s, v));
+        const Vec2 p = apply(placements[i], s, e.position(s, v));
         if (!container.contains(p))
           throw InputError("element " + placements[i].name + " lies outside the container at slice " +
                            std::to_string(s) + " after shrinking; move its seed or targets inward");

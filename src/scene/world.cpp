@@ -20,7 +20,7 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
     topo.slice_element.push_back(index);
     const float t = static_cast<float>(s) / static_cast<float>(n - 1);
     for (int v = 0; v < P; ++v) {
-      const Vec2 q = scene_detail::apply(p, s, {e.x[e.id(s, v)], e.y[e.id(s, v)]});
+      const Vec2 q = scene_detail::apply(p, s, e.position(s, v));
       std::uint8_t flags = v < B ? vertex_boundary : 0;
       if (s == 0) flags |= vertex_first_slice;
       if (s == n - 1) flags |= vertex_last_slice;

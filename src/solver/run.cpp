@@ -8,10 +8,11 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   const auto start = std::chrono::steady_clock::now();
   RunResult result;
   result.last_good = backend.state();
+  std::uint64_t iteration = result.last_good.iteration;
+  bool good_is_current = true;  // last_good holds the backend's present state
   const auto rebuild = static_cast<std::uint64_t>(params.grid_rebuild_interval);
   const auto check = static_cast<std::uint64_t>(params.check_interval);
   for (;;) {
-    const std::uint64_t iteration = result.last_good.iteration + (result.steps_since_good);
     // An interrupt is honoured on a grid-rebuild boundary, so a resumed run rebuilds the grid at the
     // same steps as an uninterrupted one and stays bit-identical.
     if (control.interrupt && control.interrupt->load() && iteration % rebuild == 0) {
@@ -23,8 +24,9 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       break;
     }
     backend.step();
-    ++result.steps_since_good;
-    if ((iteration + 1) % check != 0) continue;
+    ++iteration;
+    good_is_current = false;
+    if (iteration % check != 0) continue;
 
     result.last = backend.statistics();
     if (!result.last.finite) {
@@ -32,7 +34,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       break;
     }
     result.last_good = backend.state();
-    result.steps_since_good = 0;
+    good_is_current = true;
     if (control.on_check) control.on_check(result.last);
     if (result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
       result.reason = StopReason::gap;
@@ -43,10 +45,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       break;
     }
   }
-  if (result.reason != StopReason::non_finite && result.steps_since_good > 0) {
-    result.last_good = backend.state();
-    result.steps_since_good = 0;
-  }
+  if (result.reason != StopReason::non_finite && !good_is_current) result.last_good = backend.state();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

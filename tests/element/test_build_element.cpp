@@ -13,7 +13,7 @@ namespace {
 
 std::vector<Vec2> slice_positions(const SpacetimeElement& e, int s) {
   std::vector<Vec2> p;
-  for (int v = 0; v < e.vertices_per_slice(); ++v) p.push_back({e.x[e.id(s, v)], e.y[e.id(s, v)]});
+  for (int v = 0; v < e.vertices_per_slice(); ++v) p.push_back(e.position(s, v));
   return p;
 }
 
