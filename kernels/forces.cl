@@ -1,12 +1,12 @@
 /* Total force, paper Eq. 7, gathered per vertex (src/solver/reference/step_forces.cpp): the overlap
- * test first, then every force, summed left to right in this order:
+ * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), then every
+ * other force, summed left to right in this order:
  *   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
  * Zero forces are still added, so a −0 sum turns into +0 exactly as in the reference. */
 
 /** Eq. 7 for vertex i from one snapshot of positions; writes only vertex i's outputs. */
-__kernel void step_forces(const WorldInfo world, const GridInfo grid, const ForceParams p,
+__kernel void step_forces(const WorldInfo world, const ForceParams p,
                           __global const float* x, __global const float* y, __global const float* t, /* input: positions */
-                          __global const int* element,        /* input: per vertex */
                           __global const int* slice,          /* input: per vertex */
                           __global const uchar* flags,        /* input: VertexFlag bits per vertex */
                           __global const float* rest_t,       /* input: per vertex */
@@ -20,14 +20,10 @@ __kernel void step_forces(const WorldInfo world, const GridInfo grid, const Forc
                           __global const int* tri_a, __global const int* tri_b, __global const int* tri_c, /* input: slice triangles */
                           __global const int* tri_begin,      /* input: incident-triangle rows, vertices + 1 */
                           __global const int* tri_list,       /* input */
-                          __global const int* slice_begin,    /* input: slices + 1 */
-                          __global const int* slice_boundary, /* input: per slice */
-                          __global const int* element_slice_begin, /* input: elements + 1 */
-                          __global const int* env_a, __global const int* env_b, __global const int* env_c, /* input: envelope */
-                          __global const int* env_element,    /* input: per envelope triangle */
-                          __global const int* cell_start,     /* input: cells + 1 (host counting sort) */
-                          __global const int* sorted_triangles, /* input: triangle ids by cell */
-                          __global const float* env_cx, __global const float* env_cy, __global const float* env_ct, /* input: centroids */
+                          __global const float* rpl_x_in, __global const float* rpl_y_in, /* input: Eq. 1 */
+                          __global const float* rpl_t_in,     /* input: Eq. 1 */
+                          __global const float* rpl_closest,  /* input: repulsion kernel, boundary vertices */
+                          __global const uchar* rpl_inside,   /* input: repulsion kernel, boundary vertices */
                           __global const float* target_x, __global const float* target_y, __global const float* target_t, /* input */
                           __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
                           __global const float* seg_bx, __global const float* seg_by, /* input */
@@ -39,16 +35,11 @@ __kernel void step_forces(const WorldInfo world, const GridInfo grid, const Forc
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v], pt = t[v];
-  const int own = element[v];
   const bool boundary = (flags[v] & AP_VERTEX_BOUNDARY) != 0;
 
-  const bool inside = boundary && inside_other_element(grid, own, px, py, pt, cell_start, sorted_triangles,
-                                                       env_element, element_slice_begin, slice_begin,
-                                                       slice_boundary, x, y, t);
-  float rpl_x = 0.0f, rpl_y = 0.0f, rpl_t = 0.0f, dist = INFINITY;
-  if (boundary)
-    repulsion_force(grid, p, own, px, py, pt, inside, cell_start, sorted_triangles, env_element, env_a, env_b, env_c,
-                    x, y, t, env_cx, env_cy, env_ct, &rpl_x, &rpl_y, &rpl_t, &dist);
+  const bool inside = boundary && rpl_inside[v] != 0;
+  const float rpl_x = boundary ? rpl_x_in[v] : 0.0f, rpl_y = boundary ? rpl_y_in[v] : 0.0f,
+              rpl_t = boundary ? rpl_t_in[v] : 0.0f, dist = boundary ? rpl_closest[v] : INFINITY;
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
   float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;

@@ -1,5 +1,6 @@
-/* Collision grid of §5.1, device half: envelope-triangle centroids and their cells. The stable
- * counting sort runs on the host (opencl_backend.cpp) from the cell ids this writes. */
+/* Collision grid of §5.1 on the device: envelope-triangle centroids and their cells, the stable
+ * counting sort (or its host twin in opencl_backend.cpp), the per-slot copies the force kernels read,
+ * and the row ranges they walk. */
 
 /** Cell of one coordinate: clamp(floor(c / cell), 0, n - 1) in float, NaN to 0 (grid.cpp). */
 int grid_axis_cell(float c, float cell, int n) {
@@ -35,4 +36,145 @@ __kernel void envelope_cells(const GridInfo grid,            /* input */
   const int iy = grid_axis_cell(py, grid.cell, grid.n);
   const int it = grid_axis_cell(pt, grid.cell, grid.n);
   triangle_cell[i] = (it * grid.n + iy) * grid.n + ix;
+}
+
+/* The stable counting sort on the device, for devices where reading the cell ids back to the host
+ * costs more than sorting them here (GPUs; src/solver/opencl/opencl_backend.cpp picks). The same three
+ * steps as grid.cpp: count, exclusive scan, scatter. The scatter claims slots with atomics, so each
+ * cell's range is then put in increasing triangle id: exactly the order the stable scatter gives. */
+
+/** Zeroes the per-cell counts; one work-item per cell. */
+__kernel void grid_clear(const GridInfo grid, __global int* cell_count) { /* output: per cell */
+  const int c = get_global_id(0);
+  if (c < grid.cells) cell_count[c] = 0;
+}
+
+/** Counts the triangles of every cell; one work-item per triangle. */
+__kernel void grid_count(const GridInfo grid,
+                         __global const int* triangle_cell, /* input: per triangle */
+                         __global int* cell_count) {        /* in/out: per cell */
+  const int i = get_global_id(0);
+  if (i < grid.triangles) atomic_inc(&cell_count[triangle_cell[i]]);
+}
+
+/** Sum of each block of AP_SCAN_BLOCK cells (shared_types.h); one work-item per block. */
+__kernel void grid_block_sums(const GridInfo grid,
+                              __global const int* cell_count, /* input: per cell */
+                              __global int* block_sum) {      /* output: per block */
+  const int b = get_global_id(0);
+  const int blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  if (b >= blocks) return;
+  const int end = min(grid.cells, (b + 1) * AP_SCAN_BLOCK);
+  int sum = 0;
+  for (int c = b * AP_SCAN_BLOCK; c < end; ++c) sum += cell_count[c];
+  block_sum[b] = sum;
+}
+
+/** Exclusive scan of the block sums in place, by one work-group of AP_LOCAL_SIZE items: each item
+ * scans a run of blocks, the runs' totals are scanned in local memory, then each run is offset. */
+__kernel void grid_scan_blocks(const GridInfo grid, __global int* block_sum) { /* in/out: per block */
+  __local int run_total[AP_LOCAL_SIZE];
+  const int item = get_local_id(0);
+  const int blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  const int per_item = (blocks + AP_LOCAL_SIZE - 1) / AP_LOCAL_SIZE;
+  const int begin = min(blocks, item * per_item), end = min(blocks, begin + per_item);
+  int sum = 0;
+  for (int b = begin; b < end; ++b) {
+    const int v = block_sum[b];
+    block_sum[b] = sum;
+    sum += v;
+  }
+  run_total[item] = sum;
+  barrier(CLK_LOCAL_MEM_FENCE);
+  int offset = 0;
+  for (int k = 0; k < item; ++k) offset += run_total[k];
+  for (int b = begin; b < end; ++b) block_sum[b] += offset;
+}
+
+/** cell_start (exclusive scan of the counts, plus the total at [cells]) and the scatter cursors;
+ * one work-item per block. */
+__kernel void grid_scan_cells(const GridInfo grid,
+                              __global const int* cell_count,  /* input: per cell */
+                              __global const int* block_start, /* input: per block, scanned */
+                              __global int* cell_start,        /* output: cells + 1 */
+                              __global int* cursor) {          /* output: per cell */
+  const int b = get_global_id(0);
+  const int blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  if (b >= blocks) return;
+  const int end = min(grid.cells, (b + 1) * AP_SCAN_BLOCK);
+  int start = block_start[b];
+  for (int c = b * AP_SCAN_BLOCK; c < end; ++c) {
+    cell_start[c] = start;
+    cursor[c] = start;
+    start += cell_count[c];
+  }
+  if (end == grid.cells) cell_start[grid.cells] = start;
+}
+
+/** Puts every triangle in a slot of its cell's range, in no particular order within the cell. Work-item
+ * g takes triangle (triangles - 1 - g): a device that runs work-items in order (PoCL) then fills each
+ * cell backwards, so grid_order_cells always has work to do and the equivalence tests exercise it on
+ * every device, not only where atomics happen to interleave. */
+__kernel void grid_scatter(const GridInfo grid,
+                           __global const int* triangle_cell, /* input: per triangle */
+                           __global int* cursor,              /* in/out: per cell */
+                           __global int* sorted_triangles) {  /* output: triangle ids by cell */
+  const int g = get_global_id(0);
+  if (g >= grid.triangles) return;
+  const int i = grid.triangles - 1 - g;
+  sorted_triangles[atomic_inc(&cursor[triangle_cell[i]])] = i;
+}
+
+/** Orders one cell's range by triangle id (insertion sort: a cell holds a few dozen triangles). */
+__kernel void grid_order_cells(const GridInfo grid,
+                               __global const int* cell_start,   /* input: cells + 1 */
+                               __global int* sorted_triangles) { /* in/out */
+  const int c = get_global_id(0);
+  if (c >= grid.cells) return;
+  const int begin = cell_start[c], end = cell_start[c + 1];
+  for (int k = begin + 1; k < end; ++k) {
+    const int id = sorted_triangles[k];
+    int j = k - 1;
+    while (j >= begin && sorted_triangles[j] > id) {
+      sorted_triangles[j + 1] = sorted_triangles[j];
+      --j;
+    }
+    sorted_triangles[j + 1] = id;
+  }
+}
+
+/** What the force kernels read per grid slot, copied into sorted order once per rebuild so a cell's
+ * triangles are read from consecutive addresses instead of through their ids: owner, centroid and
+ * vertices. Copies only: no arithmetic, so the forces stay bit-identical. */
+__kernel void grid_gather(const GridInfo grid,
+                          __global const int* sorted_triangles,                        /* input */
+                          __global const int* env_element,                             /* input: per triangle */
+                          __global const int* env_a, __global const int* env_b, __global const int* env_c, /* input */
+                          __global const float* cx, __global const float* cy, __global const float* ct, /* input */
+                          __global int* slot_element,                                  /* output: per slot */
+                          __global int* slot_a, __global int* slot_b, __global int* slot_c, /* output */
+                          __global float* slot_cx, __global float* slot_cy, __global float* slot_ct) { /* output */
+  const int k = get_global_id(0);
+  if (k >= grid.triangles) return;
+  const int tri = sorted_triangles[k];
+  slot_element[k] = env_element[tri];
+  slot_a[k] = env_a[tri];
+  slot_b[k] = env_b[tri];
+  slot_c[k] = env_c[tri];
+  slot_cx[k] = cx[tri];
+  slot_cy[k] = cy[tri];
+  slot_ct[k] = ct[tri];
+}
+
+/** The range of grid slots of the cells cx_lo..cx_hi in row (cy, ct), empty when the row is outside
+ * the grid. Cells of one row are consecutive in the linear order, so visiting the range front to back
+ * visits the cells in dx order and each cell's triangles in sorted order, as the reference's per-cell
+ * loop does. */
+int2 grid_row_range(const GridInfo grid, __global const int* cell_start, int cy, int ct, int cx_lo, int cx_hi) {
+  if (cy < 0 || ct < 0 || cy >= grid.n || ct >= grid.n) return (int2)(0, 0);
+  cx_lo = max(cx_lo, 0);
+  cx_hi = min(cx_hi, grid.n - 1);
+  if (cx_lo > cx_hi) return (int2)(0, 0);
+  const int row = (ct * grid.n + cy) * grid.n;
+  return (int2)(cell_start[row + cx_lo], cell_start[row + cx_hi + 1]);
 }

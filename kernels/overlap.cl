@@ -39,12 +39,13 @@ bool inside_element_at(int e, float px, float py, float pt, __global const int* 
 #define AP_TESTED_CACHE 8
 
 /** Whether boundary vertex (px, py, pt) of element `own` lies inside another element owning one of the
- * envelope triangles in the 3x3x3 block of cells around it. */
+ * envelope triangles in the 3x3x3 block of cells around it; the block is walked row by row through
+ * the grid slots' owners (grid_gather), in the reference's cell order. */
 bool inside_other_element(const GridInfo grid, int own, float px, float py, float pt,
-                          __global const int* cell_start, __global const int* sorted_triangles,
-                          __global const int* env_element, __global const int* element_slice_begin,
-                          __global const int* slice_begin, __global const int* slice_boundary,
-                          __global const float* x, __global const float* y, __global const float* t) {
+                          __global const int* cell_start, __global const int* slot_element,
+                          __global const int* element_slice_begin, __global const int* slice_begin,
+                          __global const int* slice_boundary, __global const float* x, __global const float* y,
+                          __global const float* t) {
   int tested[AP_TESTED_CACHE];
   int tested_count = 0;
   const int qx = grid_axis_cell(px, grid.cell, grid.n);
@@ -52,19 +53,15 @@ bool inside_other_element(const GridInfo grid, int own, float px, float py, floa
   const int qt = grid_axis_cell(pt, grid.cell, grid.n);
   for (int dz = -1; dz <= 1; ++dz) {
     for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int cx = qx + dx, cy = qy + dy, ct = qt + dz;
-        if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
-        const int c = (ct * grid.n + cy) * grid.n + cx;
-        for (int k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-          const int e = env_element[sorted_triangles[k]];
-          if (e == own) continue;
-          bool seen = false;
-          for (int i = 0; i < tested_count && !seen; ++i) seen = tested[i] == e;
-          if (seen) continue;
-          if (tested_count < AP_TESTED_CACHE) tested[tested_count++] = e;
-          if (inside_element_at(e, px, py, pt, element_slice_begin, slice_begin, slice_boundary, x, y, t)) return true;
-        }
+      const int2 range = grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1);
+      for (int k = range.x; k < range.y; ++k) {
+        const int e = slot_element[k];
+        if (e == own) continue;
+        bool seen = false;
+        for (int i = 0; i < tested_count && !seen; ++i) seen = tested[i] == e;
+        if (seen) continue;
+        if (tested_count < AP_TESTED_CACHE) tested[tested_count++] = e;
+        if (inside_element_at(e, px, py, pt, element_slice_begin, slice_begin, slice_boundary, x, y, t)) return true;
       }
     }
   }

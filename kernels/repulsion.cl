@@ -1,6 +1,7 @@
 /* Repulsion, paper Eq. 1 (src/solver/reference/repulsion.cpp): k_rpl Σ u/|u| · 1/(ε + |u|²) over the
  * exact closest points on the near envelope triangles of other elements, then the centroids of the
- * far ones, in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell). */
+ * far ones, in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell),
+ * and the overlap test of Eq. 3. */
 
 /** One term of Eq. 1; a point exactly at x has no direction and adds nothing. */
 void repulsion_add_term(float ux, float uy, float ut, float eps, float* sx, float* sy, float* st) {
@@ -13,56 +14,89 @@ void repulsion_add_term(float ux, float uy, float ut, float eps, float* sx, floa
   *st = *st + ut * w;
 }
 
-/** Eq. 1 on boundary vertex (px, py, pt) of element `own`, and its distance to the nearest other
- * element (+inf when nothing is near). The force is zero while `inside` (Eq. 3 takes over). */
-void repulsion_force(const GridInfo grid, const ForceParams p, int own, float px, float py, float pt, bool inside,
-                     __global const int* cell_start, __global const int* sorted_triangles,
-                     __global const int* env_element, __global const int* env_a, __global const int* env_b,
-                     __global const int* env_c, __global const float* x, __global const float* y,
-                     __global const float* t, __global const float* env_cx, __global const float* env_cy,
-                     __global const float* env_ct, float* fx, float* fy, float* ft, float* closest) {
+/** Exact term of Eq. 1 for every near slot in [begin, end) of triangles not owned by `own`. */
+void repulsion_near_range(int2 range, int own, float px, float py, float pt, float eps,
+                          __global const int* slot_element, __global const int* slot_a, __global const int* slot_b,
+                          __global const int* slot_c, __global const float* x, __global const float* y,
+                          __global const float* t, float* sx, float* sy, float* st, float* closest2) {
+  for (int k = range.x; k < range.y; ++k) {
+    if (slot_element[k] == own) continue;
+    const int a = slot_a[k], b = slot_b[k], c = slot_c[k];
+    float qpx, qpy, qpt;
+    closest_point_on_triangle(px, py, pt, x[a], y[a], t[a], x[b], y[b], t[b], x[c], y[c], t[c], &qpx, &qpy, &qpt);
+    const float ux = px - qpx, uy = py - qpy, ut = pt - qpt;
+    const float d2 = ux * ux + uy * uy + ut * ut;
+    if (d2 < *closest2) *closest2 = d2;
+    repulsion_add_term(ux, uy, ut, eps, sx, sy, st);
+  }
+}
+
+/** Centroid term of Eq. 1 for every far slot in [begin, end) of triangles not owned by `own`. */
+void repulsion_far_range(int2 range, int own, float px, float py, float pt, float eps,
+                         __global const int* slot_element, __global const float* slot_cx,
+                         __global const float* slot_cy, __global const float* slot_ct, float* sx, float* sy,
+                         float* st) {
+  for (int k = range.x; k < range.y; ++k) {
+    if (slot_element[k] == own) continue;
+    repulsion_add_term(px - slot_cx[k], py - slot_cy[k], pt - slot_ct[k], eps, sx, sy, st);
+  }
+}
+
+/** Eq. 1 for each boundary vertex, with its distance to the nearest other element (+inf when nothing
+ * is near) and whether it lies inside another element (then the force is zero: Eq. 3 takes over).
+ * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
+ * step_forces reads the three results back per vertex. */
+__kernel void repulsion(const WorldInfo world, const GridInfo grid, const ForceParams p,
+                        const int boundary_count,
+                        __global const int* boundary_vertices,   /* input: the boundary vertices */
+                        __global const float* x, __global const float* y, __global const float* t, /* input */
+                        __global const int* element,             /* input: per vertex */
+                        __global const int* cell_start,          /* input: cells + 1 */
+                        __global const int* slot_element,        /* input: per grid slot (grid_gather) */
+                        __global const int* slot_a, __global const int* slot_b, __global const int* slot_c,
+                        __global const float* slot_cx, __global const float* slot_cy, __global const float* slot_ct,
+                        __global const int* element_slice_begin, /* input: elements + 1 */
+                        __global const int* slice_begin,         /* input: slices + 1 */
+                        __global const int* slice_boundary,      /* input: per slice */
+                        __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
+                        __global float* closest,                 /* output: per vertex */
+                        __global uchar* inside_flag) {           /* output: per vertex */
+  const int i = get_global_id(0);
+  if (i >= boundary_count) return;
+  const int v = boundary_vertices[i];
+  const float px = x[v], py = y[v], pt = t[v];
+  const int own = element[v];
+  const bool inside = inside_other_element(grid, own, px, py, pt, cell_start, slot_element, element_slice_begin,
+                                           slice_begin, slice_boundary, x, y, t);
   const float eps = p.repulsion_epsilon;
   float sx = 0.0f, sy = 0.0f, st = 0.0f;
   float closest2 = INFINITY;
   const int qx = grid_axis_cell(px, grid.cell, grid.n);
   const int qy = grid_axis_cell(py, grid.cell, grid.n);
   const int qt = grid_axis_cell(pt, grid.cell, grid.n);
-  /* Pass 0: the 3x3x3 near block, exact closest points. Pass 1: the outer shell of the 5x5x5 block,
-   * centroids only. The reference collects both lists first and sums near before far. */
-  for (int pass = 0; pass < 2; ++pass) {
-    const int r = pass == 0 ? 1 : 2, min_ring = pass == 0 ? 0 : 2;
-    for (int dz = -r; dz <= r; ++dz) {
-      for (int dy = -r; dy <= r; ++dy) {
-        for (int dx = -r; dx <= r; ++dx) {
-          const int ring = max(abs(dz), max(abs(dy), abs(dx)));
-          if (ring < min_ring) continue;
-          const int cx = qx + dx, cy = qy + dy, ct = qt + dz;
-          if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
-          const int c = (ct * grid.n + cy) * grid.n + cx;
-          for (int k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-            const int tri = sorted_triangles[k];
-            if (env_element[tri] == own) continue;
-            if (pass == 0) {
-              const int a = env_a[tri], b = env_b[tri], cc = env_c[tri];
-              float qpx, qpy, qpt;
-              closest_point_on_triangle(px, py, pt, x[a], y[a], t[a], x[b], y[b], t[b], x[cc], y[cc], t[cc], &qpx,
-                                        &qpy, &qpt);
-              const float ux = px - qpx, uy = py - qpy, ut = pt - qpt;
-              const float d2 = ux * ux + uy * uy + ut * ut;
-              if (d2 < closest2) closest2 = d2;
-              repulsion_add_term(ux, uy, ut, eps, &sx, &sy, &st);
-            } else {
-              repulsion_add_term(px - env_cx[tri], py - env_cy[tri], pt - env_ct[tri], eps, &sx, &sy, &st);
-            }
-          }
-        }
+  /* The 3x3x3 near block with exact closest points, then the outer shell of the 5x5x5 block with
+   * centroids (the reference collects both lists and sums near before far), row by row. */
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      repulsion_near_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
+                           slot_element, slot_a, slot_b, slot_c, x, y, t, &sx, &sy, &st, &closest2);
+  for (int dz = -2; dz <= 2; ++dz) {
+    for (int dy = -2; dy <= 2; ++dy) {
+      if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */
+        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
+                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
+      } else {                             /* only the row's two end cells are */
+        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
+                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
+        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
+                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
       }
     }
   }
-  *closest = sqrt(closest2);
-  if (inside) return;
   const float k = p.k_repulsion;
-  *fx = k * sx;
-  *fy = k * sy;
-  *ft = k * st;
+  rpl_x[v] = inside ? 0.0f : k * sx;
+  rpl_y[v] = inside ? 0.0f : k * sy;
+  rpl_t[v] = inside ? 0.0f : k * st;
+  closest[v] = sqrt(closest2);
+  inside_flag[v] = inside ? 1 : 0;
 }

@@ -24,6 +24,9 @@ typedef float ap_float;
 /* Work-group size of every kernel: PoCL compiles one kernel per local size, so it never varies. */
 #define AP_LOCAL_SIZE 64
 
+/* Cells per block of the device-side grid scan (grid.cl). */
+#define AP_SCAN_BLOCK 64
+
 /* The collision grid (reference::CollisionGrid without its arrays), passed to every grid kernel. */
 typedef struct {
   ap_int n;              /* cells per axis */

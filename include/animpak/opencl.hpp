@@ -72,6 +72,15 @@ struct DeviceChoice {
 /// `request` (case-insensitive). UsageError when nothing or more than one device matches.
 DeviceChoice choose_device(std::string_view request);
 
+/// Where the collision grid's stable counting sort runs. `automatic`: on the device for GPUs (reading
+/// the cell ids back and the cell ranges over costs more there than the sort), on the host for CPU
+/// devices such as PoCL (no atomics, and the host's single pass is cheap). Both give the same arrays.
+enum class GridSort { automatic, host, device };
+
+/// "auto", "host" or "device"; UsageError naming `option` for anything else.
+GridSort parse_grid_sort(std::string_view text, std::string_view option);
+const char* grid_sort_name(GridSort sort);
+
 /// The OpenCL backend, with entry points the equivalence tests use to compare single phases.
 class OpenclBackend : public Backend {
  public:
@@ -81,12 +90,15 @@ class OpenclBackend : public Backend {
   /// The collision grid built on the device from the current state.
   virtual reference::CollisionGrid debug_grid() = 0;
   virtual const DeviceInfo& device() const = 0;
+  /// Where this backend sorts the grid: host or device, never automatic.
+  virtual GridSort grid_sort() const = 0;
 };
 
 /// Copies topology and state to `choice.device` and builds the kernels. OpenclError on any failure
 /// (the build log included); std::invalid_argument for a reference choice or a topology the kernels
 /// cannot run (a vertex in two loop pairs, slices not covering the vertices in order).
 std::unique_ptr<OpenclBackend> make_opencl_backend(const Topology& topology, SimState initial, const Params& params,
-                                                   const DeviceChoice& choice);
+                                                   const DeviceChoice& choice,
+                                                   GridSort sort = GridSort::automatic);
 
 }  // namespace animpak

@@ -57,7 +57,11 @@ class Backend {
   virtual void step() = 0;
   virtual StepStatistics statistics() = 0;
   virtual SimState state() = 0;  ///< a full read-back (checkpoints, rendering)
+  /// Phase times so far. A device backend adds a launch's time once it has completed: call finish()
+  /// before reading them (statistics() and state() finish too).
   virtual const PhaseTimes& times() const = 0;
+  /// Waits until every step enqueued so far has completed (a no-op for backends that step in place).
+  virtual void finish() {}
 };
 
 /// The scalar reference backend: plain C++, the specification the kernels are tested against.

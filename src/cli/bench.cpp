@@ -21,11 +21,40 @@ struct BenchWorld {
   World world;
 };
 
+// One column of the table: a device, and for OpenCL devices where the grid is sorted.
+struct BenchTarget {
+  std::string device;  ///< name fragment as given
+  GridSort sort = GridSort::automatic;
+  std::string label;   ///< the table's and the JSON's device name: "pocl", or "pocl:host" under --grid-sort both
+};
+
 // Every device animpak can time; a new backend adds one branch here and one name in run.cpp.
-std::unique_ptr<Backend> make_backend(const std::string& device, const World& world) {
-  const DeviceChoice choice = choose_device(device);
+std::unique_ptr<Backend> make_backend(const BenchTarget& target, const World& world, std::string& grid_sort) {
+  const DeviceChoice choice = choose_device(target.device);
+  grid_sort = "";
   if (choice.reference) return make_reference_backend(world.topology, world.state, world.params);
-  return make_opencl_backend(world.topology, world.state, world.params, choice);
+  auto backend = make_opencl_backend(world.topology, world.state, world.params, choice, target.sort);
+  grid_sort = grid_sort_name(backend->grid_sort());
+  return backend;
+}
+
+std::vector<BenchTarget> bench_targets(const BenchOptions& options) {
+  // The reference backend is always timed: it is the baseline every speedup is measured against.
+  std::vector<BenchTarget> targets{{"reference", GridSort::automatic, "reference"}};
+  const bool both = options.grid_sort == "both";
+  const GridSort sort = both ? GridSort::automatic : parse_grid_sort(options.grid_sort, "--grid-sort");
+  for (const std::string& d : options.devices) {
+    if (d == "reference" || choose_device(d).reference) continue;  // resolved now: a typo fails at once
+    const bool seen = std::any_of(targets.begin(), targets.end(), [&](const BenchTarget& t) { return t.device == d; });
+    if (seen) continue;
+    if (both) {
+      targets.push_back({d, GridSort::host, d + ":host"});
+      targets.push_back({d, GridSort::device, d + ":device"});
+    } else {
+      targets.push_back({d, sort, d});
+    }
+  }
+  return targets;
 }
 
 std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
@@ -73,6 +102,7 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
                        {"steps", r.timing.steps},
                        {"ms_per_iter", r.timing.ms_per_iter},
                        {"reference_ms_per_iter", r.reference_ms_per_iter},
+                       {"grid_sort", r.grid_sort.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.grid_sort)},
                        {"speedup", r.reference_ms_per_iter / r.timing.ms_per_iter},
                        {"phases", phases_json(r.timing.phases_ms)}});
   nlohmann::json fits = nlohmann::json::array();
@@ -90,11 +120,11 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
 }
 
 void print_table(const std::vector<BenchRow>& rows) {
-  std::printf("%-18s %-10s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem", "visits/v",
+  std::printf("%-18s %-14s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem", "visits/v",
               "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth", "statistics");
   for (const BenchRow& r : rows) {
     const PhaseTimes& p = r.timing.phases_ms;
-    std::printf("%-18s %-10s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
+    std::printf("%-18s %-14s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
                 r.device.c_str(), r.vertices, r.elements, double(r.neighbour_visits) / r.vertices, r.timing.ms_per_iter,
                 r.reference_ms_per_iter / r.timing.ms_per_iter, p.grid, p.forces, p.integrate, p.constraints, p.loop,
                 p.growth, p.statistics);
@@ -144,24 +174,22 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
 }
 
 int bench(const BenchOptions& options, const BenchPlotter& plot) {
-  // The reference backend is always timed: it is the baseline every speedup is measured against.
-  std::vector<std::string> devices{"reference"};
-  for (const std::string& d : options.devices)
-    if (std::find(devices.begin(), devices.end(), d) == devices.end()) devices.push_back(d);
-
-  // Resolve every device name before minutes of world building, so a typo fails at once.
-  for (const std::string& d : devices) (void)choose_device(d);
+  // Every device name is resolved before minutes of world building, so a typo fails at once.
+  const std::vector<BenchTarget> targets = bench_targets(options);
+  std::vector<std::string> devices;
+  for (const BenchTarget& t : targets) devices.push_back(t.label);
 
   std::vector<BenchRow> rows;
   for (const BenchWorld& w : bench_worlds(options)) {
     double reference_ms = 0.0;
-    for (const std::string& d : devices) {
-      std::cerr << "animpak: timing " << w.scene << " (" << w.world.topology.vertex_count() << " vertices) on " << d
-                << "\n";
-      auto backend = make_backend(d, w.world);
-      BenchRow row{d, w.scene, w.synthetic, w.world.topology.vertex_count(), w.elements,
-                   time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0};
-      if (d == "reference") reference_ms = row.timing.ms_per_iter;
+    for (const BenchTarget& target : targets) {
+      std::cerr << "animpak: timing " << w.scene << " (" << w.world.topology.vertex_count() << " vertices) on "
+                << target.label << "\n";
+      std::string grid_sort;
+      auto backend = make_backend(target, w.world, grid_sort);
+      BenchRow row{target.label, w.scene, w.synthetic, w.world.topology.vertex_count(), w.elements,
+                   time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0, 0, grid_sort};
+      if (target.label == "reference") reference_ms = row.timing.ms_per_iter;
       row.neighbour_visits = neighbour_visits(w.world.topology, backend->state(), w.world.params);
       row.reference_ms_per_iter = reference_ms;
       rows.push_back(row);

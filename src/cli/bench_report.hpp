@@ -18,6 +18,7 @@ struct BenchRow {
   StepTiming timing;
   double reference_ms_per_iter = 0.0;  ///< the reference backend's ms per step on the same world
   std::int64_t neighbour_visits = 0;   ///< envelope triangles the repulsion queries visit per step
+  std::string grid_sort;               ///< OpenCL devices: where the grid was sorted (host, device)
 };
 
 /// Least-squares line of ms per step against thousands of vertices over one device's synthetic rows.

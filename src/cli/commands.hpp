@@ -40,6 +40,7 @@ struct PackOptions {
   std::optional<std::uint64_t> seed;
   std::optional<std::uint64_t> max_iterations;
   std::string device;  ///< empty: the default rule (first GPU, else PoCL, else the reference)
+  std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
 };
 
 /// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
@@ -71,6 +72,7 @@ struct BenchOptions {
   std::filesystem::path examples = "examples";    ///< the element art and the example scenes
   bool example_scenes = true;                     ///< also time examples/{default,aquarium,annulus}
   std::optional<std::filesystem::path> json;
+  std::string grid_sort = "auto";  ///< auto, host, device, or both: each OpenCL device timed with each sort
 };
 
 /// Called by bench with every row after the table and the JSON are written (the --plot picture).
@@ -84,6 +86,7 @@ struct ValidateOptions {
   int steps = 20;
   bool all_devices = false;  ///< every OpenCL device, one summary row each
   bool json = false;
+  std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
 };
 
 /// Steps the reference and OpenCL devices side by side and compares every force and state array bit

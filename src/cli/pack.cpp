@@ -83,13 +83,15 @@ std::string read_whole(const std::filesystem::path& file) {
 
 // The device by --device or the default rule, said in one line. A device asked for by name must work;
 // one picked by the default rule falls back to the reference with the first lines of its error.
-std::unique_ptr<Backend> make_backend(const std::string& request, const World& world, std::string& driver) {
+std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort, const World& world,
+                                      std::string& driver) {
   const DeviceChoice choice = choose_device(request);
   std::cerr << "animpak: device: " << choice.reason << "\n";
   if (!choice.reference) {
     try {
-      auto backend = make_opencl_backend(world.topology, world.state, world.params, choice);
+      auto backend = make_opencl_backend(world.topology, world.state, world.params, choice, sort);
       driver = choice.device.driver + " (" + choice.device.platform_version + ")";
+      std::cerr << "animpak: collision grid sorted on the " << grid_sort_name(backend->grid_sort()) << "\n";
       return backend;
     } catch (const OpenclError& e) {
       if (choice.explicit_request) throw;
@@ -128,7 +130,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
             << " envelope triangles\n";
 
   std::string driver;
-  std::unique_ptr<Backend> backend = make_backend(options.device, world, driver);
+  std::unique_ptr<Backend> backend =
+      make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
   Progress progress(static_cast<std::uint64_t>(world.params.max_iterations), world.params.stop_gap);
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(world.params.max_iterations);

@@ -40,6 +40,10 @@ int run(int argc, char** argv) {
   pack_cmd->add_option("--device", pack_options.device,
                        "solver: 'reference', or part of an OpenCL device's name (pocl, nvidia; see animpak devices); "
                        "default: the first GPU, else PoCL, else the reference");
+  pack_cmd->add_option("--grid-sort", pack_options.grid_sort,
+                       "where the collision grid is sorted on an OpenCL device: auto (device on GPUs, host on CPU "
+                       "devices), host or device; the results are identical")
+      ->check(CLI::IsMember({"auto", "host", "device"}));
 
   DevicesOptions devices_options;
   CLI::App* devices_cmd =
@@ -56,6 +60,8 @@ int run(int argc, char** argv) {
   validate_cmd->add_option("--steps", validate_options.steps, "steps to compare")->check(CLI::Range(1, 100000));
   validate_cmd->add_flag("--all-devices", validate_options.all_devices, "every OpenCL device, one summary row each");
   validate_cmd->add_flag("--json", validate_options.json, "print the results as JSON");
+  validate_cmd->add_option("--grid-sort", validate_options.grid_sort, "auto, host or device (see pack --grid-sort)")
+      ->check(CLI::IsMember({"auto", "host", "device"}));
 
   BenchOptions bench_options;
   CLI::App* bench_cmd =
@@ -72,6 +78,9 @@ int run(int argc, char** argv) {
   bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");
   bench_cmd->add_flag("!--no-example-scenes", bench_options.example_scenes, "time only the synthetic worlds");
   bench_cmd->add_option("--json", bench_options.json, "write the results as JSON");
+  bench_cmd->add_option("--grid-sort", bench_options.grid_sort,
+                        "auto, host or device (see pack --grid-sort), or both: time each OpenCL device with each")
+      ->check(CLI::IsMember({"auto", "host", "device", "both"}));
   frontend->add_commands(app, *pack_cmd, *bench_cmd);
 
   try {

@@ -60,7 +60,7 @@ std::vector<StateMismatch> compare_states(const SimState& ref, const SimState& d
 }
 
 // OpenclError and std::invalid_argument (a topology the kernels cannot run) come through unchanged.
-DeviceValidation validate_device(const World& world, const DeviceInfo& info, int steps) {
+DeviceValidation validate_device(const World& world, const DeviceInfo& info, int steps, GridSort sort) {
   DeviceValidation v;
   v.device = info;
   v.steps = steps;
@@ -70,7 +70,8 @@ DeviceValidation validate_device(const World& world, const DeviceInfo& info, int
   choice.reference = false;
   choice.explicit_request = true;
   choice.device = info;
-  const std::unique_ptr<OpenclBackend> device = make_opencl_backend(world.topology, world.state, world.params, choice);
+  const std::unique_ptr<OpenclBackend> device =
+      make_opencl_backend(world.topology, world.state, world.params, choice, sort);
   const std::unique_ptr<Backend> ref = make_reference_backend(world.topology, world.state, world.params);
   // debug_forces rebuilds the device's grid; between two scheduled rebuilds that would hand the device's
   // next step a fresher grid than the reference's. So forces are compared where both sides rebuild
@@ -102,6 +103,7 @@ bool is_reference(std::string request) {
 
 int validate(const ValidateOptions& options) {
   if (options.device && options.all_devices) throw UsageError("give either --device or --all-devices, not both");
+  const GridSort sort = parse_grid_sort(options.grid_sort, "--grid-sort");
   if (options.device && is_reference(*options.device))
     throw UsageError("--device reference: validate compares an OpenCL device with the reference; name a device "
                      "(see animpak devices) or use --all-devices");
@@ -141,12 +143,12 @@ int validate(const ValidateOptions& options) {
     std::cerr << "animpak: validating " << info.name << " (" << info.platform << ") against the reference, "
               << options.steps << " steps\n";
     if (!options.all_devices) {
-      results.push_back(validate_device(world, info, options.steps));
+      results.push_back(validate_device(world, info, options.steps, sort));
       continue;
     }
     // One device failing to build or run the kernels must not hide the others' results.
     try {
-      results.push_back(validate_device(world, info, options.steps));
+      results.push_back(validate_device(world, info, options.steps, sort));
     } catch (const OpenclError& e) {
       results.push_back({info, first_line(e.what()), options.steps, {}, {}, -1, {}});
     } catch (const std::invalid_argument& e) {

@@ -1,4 +1,5 @@
 // Device discovery and selection, error names and build failures: the host layer's contract.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -6,6 +7,7 @@
 
 #include "animpak/error.hpp"
 #include "equivalence_support.hpp"
+#include "kernel_sources.hpp"
 
 namespace animpak::test {
 
@@ -58,6 +60,25 @@ TEST_CASE("try_build_kernels: every device builds; a broken kernel reports its l
   CHECK_FALSE(broken.ok);
   INFO(broken.log);
   CHECK(broken.log.find("temporal.cl") != std::string::npos);
+}
+
+TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and line") {
+  // NVIDIA's compiler ignores #line and reports "<kernel>:LINE" over the whole program; the host turns
+  // that into the file and line a developer edits. Find where temporal.cl starts in the program.
+  const std::string source = opencl::program_source();
+  const std::string directive = "#line 1 \"temporal.cl\"";
+  const std::size_t at = source.find(directive);
+  REQUIRE(at != std::string::npos);
+  const int directive_line = 1 + static_cast<int>(std::count(source.begin(), source.begin() + at, '\n'));
+  const int third = directive_line + 3;  // the third line of temporal.cl
+  CHECK(opencl::program_location(source, third) == "temporal.cl:3");
+  CHECK(opencl::program_location(source, 1) == "program line 1");
+  const std::string log = "<kernel>:" + std::to_string(third) + ":1: error: unknown type name 'this'\n"
+                          "<kernel>:" + std::to_string(directive_line + 1) + ":8: note: here\nno location\n";
+  CHECK(opencl::annotate_build_log(log, source) ==
+        "temporal.cl:3:1: error: unknown type name 'this'\ntemporal.cl:1:8: note: here\nno location\n");
+  // Compilers that honour #line already name the file; their logs pass through unchanged.
+  CHECK(opencl::annotate_build_log("temporal.cl:5:1: error: x\n", source) == "temporal.cl:5:1: error: x\n");
 }
 
 }  // namespace animpak::test

@@ -22,8 +22,8 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
     c.target += ref_parts.target.x[v] != 0.0f;
     c.repulsion += ref_parts.repulsion.x[v] != 0.0f;
   }
-  for (const DeviceChoice& d : devices_under_test()) {
-    auto backend = make_opencl_backend(w.topo, w.state, params, d);
+  for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
+    auto backend = make_opencl_backend(w.topo, w.state, params, d, sort);
     reference::ForceBreakdown dev_parts;
     const reference::StepForces dev = backend->debug_forces(&dev_parts);
     const std::string diff = breakdown_difference(ref_parts, dev_parts) +
@@ -32,7 +32,7 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
                              bit_difference("total.t", ref.total.t, dev.total.t) +
                              bit_difference("closest", ref.closest, dev.closest) +
                              bit_difference("inside", ref.inside, dev.inside);
-    INFO(label << " on " << d.device.name << "\n" << diff);
+    INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
     CHECK(diff.empty());
   }
   return c;

@@ -1,5 +1,5 @@
 // Grid equivalence: envelope centroids and cells computed by the envelope_cells kernel, sorted by the
-// host's counting sort, against reference::build_collision_grid.
+// host's counting sort and by the device's, against reference::build_collision_grid.
 #include "equivalence_support.hpp"
 
 namespace animpak::test {
@@ -7,8 +7,8 @@ namespace {
 
 void check_grid(const World& w, const Params& params, const std::string& label) {
   const reference::CollisionGrid ref = reference::build_collision_grid(w.topo, w.state, params);
-  for (const DeviceChoice& d : devices_under_test()) {
-    const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d)->debug_grid();
+  for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
+    const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->debug_grid();
     CHECK(dev.n == ref.n);
     CHECK(dev.cell == ref.cell);
     const std::string diff =
@@ -16,7 +16,7 @@ void check_grid(const World& w, const Params& params, const std::string& label) 
         bit_difference("centroid t", ref.ct, dev.ct) + bit_difference("triangle_cell", ref.triangle_cell, dev.triangle_cell) +
         bit_difference("cell_start", ref.cell_start, dev.cell_start) +
         bit_difference("sorted_triangles", ref.sorted_triangles, dev.sorted_triangles);
-    INFO(label << " on " << d.device.name << "\n" << diff);
+    INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
     CHECK(diff.empty());
   }
 }

@@ -30,20 +30,21 @@ void check_steps(const Topology& topo, const SimState& initial, const Params& pa
     WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
     return;
   }
-  for (const DeviceChoice& d : devices) {
+  for (const DeviceChoice& d : devices) for (const GridSort sort : grid_sorts) {
     auto ref = make_reference_backend(topo, initial, params);
-    auto dev = make_opencl_backend(topo, initial, params, d);
+    auto dev = make_opencl_backend(topo, initial, params, d, sort);
+    const std::string where = label + " on " + d.device.name + " (grid sorted on the " + grid_sort_name(sort) + ")";
     CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
     for (int step = 1; step <= steps; ++step) {
       ref->step();
       dev->step();
       if (step % compare_every != 0 && step != steps) continue;
       const std::string diff = state_difference(ref->state(), dev->state());
-      INFO(label << " on " << d.device.name << ", after step " << step << "\n" << diff);
+      INFO(where << ", after step " << step << "\n" << diff);
       REQUIRE(diff.empty());
     }
     const std::string stats = statistics_difference(ref->statistics(), dev->statistics());
-    INFO(label << " on " << d.device.name << ": statistics\n" << stats);
+    INFO(where << ": statistics\n" << stats);
     CHECK(stats.empty());
   }
 }

@@ -4,6 +4,7 @@
 
 #include "animpak/error.hpp"
 #include "cl_host.hpp"
+#include "kernel_sources.hpp"
 
 namespace animpak {
 namespace opencl {
@@ -88,7 +89,9 @@ KernelBuild try_build_kernels(const DeviceInfo& info) {
     cl::Context context(device, nullptr, nullptr, nullptr, &err);
     opencl::check(err, "clCreateContext");
     const cl::Program program = opencl::build_program(context, device);
-    opencl::check(program.getBuildInfo(device, CL_PROGRAM_BUILD_LOG, &result.log), "clGetProgramBuildInfo");
+    std::string log;
+    opencl::check(program.getBuildInfo(device, CL_PROGRAM_BUILD_LOG, &log), "clGetProgramBuildInfo");
+    result.log = opencl::annotate_build_log(log, opencl::program_source());
     result.ok = true;
   } catch (const OpenclError& e) {
     result.log = e.build_log().empty() ? e.what() : e.build_log();

@@ -1,15 +1,34 @@
 // The OpenCL backend: the reference backend's step (src/solver/reference/backend.cpp) with the state
-// on the device. Per step the host reads back only the envelope triangles' cell ids, runs the stable
-// counting sort (count → exclusive scan → scatter) and uploads the cell ranges; statistics are per-slice
-// reductions read on demand, and the full state comes back only in state().
+// on the device. The grid's stable counting sort (count → exclusive scan → scatter) runs either on the
+// device (GPUs: nothing crosses the bus in a step) or on the host from the cell ids read back (CPU
+// devices); statistics are per-slice reductions read on demand, and the full state comes back only in
+// state().
 #include <chrono>
 #include <deque>
 #include <limits>
 #include <stdexcept>
 
+#include "animpak/error.hpp"
 #include "kernel.hpp"
 
 namespace animpak {
+
+GridSort parse_grid_sort(std::string_view text, std::string_view option) {
+  if (text == "auto") return GridSort::automatic;
+  if (text == "host") return GridSort::host;
+  if (text == "device") return GridSort::device;
+  throw UsageError(std::string(option) + ": '" + std::string(text) + "' is not a grid sort; use auto, host or device");
+}
+
+const char* grid_sort_name(GridSort sort) {
+  switch (sort) {
+    case GridSort::host: return "host";
+    case GridSort::device: return "device";
+    case GridSort::automatic: break;
+  }
+  return "auto";
+}
+
 namespace {
 
 using opencl::check;
@@ -29,8 +48,10 @@ void validate(const Topology& topo) {
 
 class DeviceBackend final : public OpenclBackend {
  public:
-  DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info)
-      : topo_(topology), info_(info), iteration_(initial.iteration), rebuild_(params.grid_rebuild_interval) {
+  DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
+                GridSort sort)
+      : topo_(topology), info_(info), iteration_(initial.iteration), rebuild_(params.grid_rebuild_interval),
+        sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
     validate(topo_);
     const cl::Device device = opencl::device_for(info);
     cl_int err = CL_SUCCESS;
@@ -80,11 +101,25 @@ class DeviceBackend final : public OpenclBackend {
                      loop_start = in(topo_.loop_start, "loop_start"), ref_x = in(topo_.ref_x, "ref_x"),
                      ref_y = in(topo_.ref_y, "ref_y"), ref_t = in(topo_.ref_t, "ref_t"),
                      ref_cx = in(topo_.slice_ref_cx, "slice_ref_cx"), ref_cy = in(topo_.slice_ref_cy, "slice_ref_cy");
-    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles;
+    std::vector<std::int32_t> boundary_vertices;
+    for (std::int32_t v = 0; v < n; ++v)
+      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_vertices.push_back(v);
+    boundary_count_ = static_cast<std::int32_t>(boundary_vertices.size());
+    const cl::Buffer boundary = in(boundary_vertices, "boundary_vertices");
+    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles,
+                      it = sizeof(std::int32_t) * grid_.triangles, ic = sizeof(std::int32_t) * grid_.cells;
+    const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
     env_cx_ = work(ft, "env_cx"), env_cy_ = work(ft, "env_cy"), env_ct_ = work(ft, "env_ct");
-    triangle_cell_ = work(sizeof(std::int32_t) * grid_.triangles, "triangle_cell");
+    triangle_cell_ = work(it, "triangle_cell");
     cell_start_buf_ = work(sizeof(std::int32_t) * cell_start_.size(), "cell_start");
-    sorted_buf_ = work(sizeof(std::int32_t) * grid_.triangles, "sorted_triangles");
+    sorted_buf_ = work(it, "sorted_triangles");
+    const cl::Buffer cell_count = work(ic, "cell_count"), cursor = work(ic, "cell_cursor"),
+                     block_sum = work(sizeof(std::int32_t) * blocks, "scan_blocks");
+    const cl::Buffer slot_element = work(it, "slot_element"), slot_a = work(it, "slot_a"), slot_b = work(it, "slot_b"),
+                     slot_c = work(it, "slot_c"), slot_cx = work(ft, "slot_cx"), slot_cy = work(ft, "slot_cy"),
+                     slot_ct = work(ft, "slot_ct");
+    const cl::Buffer rpl_x = work(fn, "repulsion_x"), rpl_y = work(fn, "repulsion_y"), rpl_t = work(fn, "repulsion_t"),
+                     rpl_closest = work(fn, "repulsion_closest"), rpl_inside = work(n, "repulsion_inside");
     const cl::Buffer slice_cx = work(fs, "slice_cx"), slice_cy = work(fs, "slice_cy");
     fx_ = work(fn, "fx"), fy_ = work(fn, "fy"), ft_ = work(fn, "ft");
     // Before the first step the statistics see what the reference starts from: no gap, no overlap.
@@ -98,15 +133,35 @@ class DeviceBackend final : public OpenclBackend {
 
     envelope_cells_ = Kernel(program, "envelope_cells");
     envelope_cells_.bind(grid_, env_a, env_b, env_c, x_, y_, t_, env_cx_, env_cy_, env_ct_, triangle_cell_);
+    grid_clear_ = Kernel(program, "grid_clear");
+    grid_clear_.bind(grid_, cell_count);
+    grid_count_ = Kernel(program, "grid_count");
+    grid_count_.bind(grid_, triangle_cell_, cell_count);
+    grid_block_sums_ = Kernel(program, "grid_block_sums");
+    grid_block_sums_.bind(grid_, cell_count, block_sum);
+    grid_scan_blocks_ = Kernel(program, "grid_scan_blocks");
+    grid_scan_blocks_.bind(grid_, block_sum);
+    grid_scan_cells_ = Kernel(program, "grid_scan_cells");
+    grid_scan_cells_.bind(grid_, cell_count, block_sum, cell_start_buf_, cursor);
+    grid_scatter_ = Kernel(program, "grid_scatter");
+    grid_scatter_.bind(grid_, triangle_cell_, cursor, sorted_buf_);
+    grid_order_ = Kernel(program, "grid_order_cells");
+    grid_order_.bind(grid_, cell_start_buf_, sorted_buf_);
+    grid_gather_ = Kernel(program, "grid_gather");
+    grid_gather_.bind(grid_, sorted_buf_, env_element, env_a, env_b, env_c, env_cx_, env_cy_, env_ct_, slot_element,
+                      slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct);
+    repulsion_ = Kernel(program, "repulsion");
+    repulsion_.bind(world_, grid_, p, boundary_count_, boundary, x_, y_, t_, element, cell_start_buf_, slot_element,
+                    slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices, slice_begin, slice_boundary,
+                    rpl_x, rpl_y, rpl_t, rpl_closest, rpl_inside);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, slice_begin, x_, y_, slice_cx, slice_cy);
     forces_ = Kernel(program, "step_forces");
     breakdown_arg_ =
-        forces_.bind(world_, grid_, p, x_, y_, t_, element, slice, flags, rest_t, rest_dx, rest_dy, target,
-                     spring_begin, spring_other, spring_class, rest_, tri_a, tri_b, tri_c, tri_begin, tri_list,
-                     slice_begin, slice_boundary, element_slices, env_a, env_b, env_c, env_element, cell_start_buf_,
-                     sorted_buf_, env_cx_, env_cy_, env_ct_, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx,
-                     seg_by, slice_cx, slice_cy, fx_, fy_, ft_, closest_, inside_, breakdown_) - 1;
+        forces_.bind(world_, p, x_, y_, t_, slice, flags, rest_t, rest_dx, rest_dy, target, spring_begin, spring_other,
+                     spring_class, rest_, tri_a, tri_b, tri_c, tri_begin, tri_list, rpl_x, rpl_y, rpl_t, rpl_closest,
+                     rpl_inside, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx, seg_by, slice_cx, slice_cy, fx_,
+                     fy_, ft_, closest_, inside_, breakdown_) - 1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
     constraints_ = Kernel(program, "slice_constraints");
@@ -127,11 +182,14 @@ class DeviceBackend final : public OpenclBackend {
 
   std::string name() const override { return info_.name; }
   const DeviceInfo& device() const override { return info_; }
+  GridSort grid_sort() const override { return sort_; }
+  void finish() override { settle_times(); }
   const PhaseTimes& times() const override { return times_; }
 
   void step() override {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
+    timed(times_.forces, repulsion_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
     timed(times_.integrate, integrate_.run(queue_, world_.vertices));
     timed(times_.constraints, constraints_.run(queue_, world_.slices));
@@ -203,6 +261,7 @@ class DeviceBackend final : public OpenclBackend {
     world.breakdown = out != nullptr ? 1 : 0;
     forces_.set(0, world);
     slice_centroids_.run(queue_, world_.slices);
+    repulsion_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
     forces_.set(0, world_);
     reference::StepForces r;
@@ -238,9 +297,17 @@ class DeviceBackend final : public OpenclBackend {
     g.cell = grid_.cell;
     g.cx.resize(grid_.triangles), g.cy.resize(grid_.triangles), g.ct.resize(grid_.triangles);
     read(env_cx_, g.cx, "env_cx"), read(env_cy_, g.cy, "env_cy"), read(env_ct_, g.ct, "env_ct", true);
-    g.triangle_cell = cells_;
-    g.cell_start = cell_start_;
-    g.sorted_triangles = sorted_;
+    if (sort_ == GridSort::host) {
+      g.triangle_cell = cells_;
+      g.cell_start = cell_start_;
+      g.sorted_triangles = sorted_;
+    } else {
+      g.triangle_cell.resize(grid_.triangles), g.cell_start.resize(cell_start_.size());
+      g.sorted_triangles.resize(grid_.triangles);
+      read(triangle_cell_, g.triangle_cell, "triangle_cell");
+      read(sorted_buf_, g.sorted_triangles, "sorted_triangles");
+      read(cell_start_buf_, g.cell_start, "cell_start", true);
+    }
     pending_.clear();
     return g;
   }
@@ -282,9 +349,27 @@ class DeviceBackend final : public OpenclBackend {
     pending_.clear();
   }
 
-  // Centroids and cells on the device, the stable counting sort on the host (as grid.cpp).
+  // Centroids and cells on the device, the stable counting sort on the device or on the host (as
+  // grid.cpp), then the per-slot copies the force kernels read.
   void build_grid() {
     timed(times_.grid, envelope_cells_.run(queue_, grid_.triangles));
+    if (sort_ == GridSort::device) {
+      const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+      timed(times_.grid, grid_clear_.run(queue_, grid_.cells));
+      timed(times_.grid, grid_count_.run(queue_, grid_.triangles));
+      timed(times_.grid, grid_block_sums_.run(queue_, blocks));
+      timed(times_.grid, grid_scan_blocks_.run(queue_, AP_LOCAL_SIZE));  // one work-group
+      timed(times_.grid, grid_scan_cells_.run(queue_, blocks));
+      timed(times_.grid, grid_scatter_.run(queue_, grid_.triangles));
+      timed(times_.grid, grid_order_.run(queue_, grid_.cells));
+    } else {
+      host_sort();
+    }
+    timed(times_.grid, grid_gather_.run(queue_, grid_.triangles));
+    grid_built_ = true;
+  }
+
+  void host_sort() {
     read(triangle_cell_, cells_, "triangle_cell", true);
     settle_times();
     PhaseStopwatch w(times_.grid);
@@ -300,14 +385,15 @@ class DeviceBackend final : public OpenclBackend {
     if (!sorted_.empty())
       check(queue_.enqueueWriteBuffer(sorted_buf_, CL_FALSE, 0, sizeof(std::int32_t) * sorted_.size(), sorted_.data()),
             "clEnqueueWriteBuffer(sorted_triangles)");
-    grid_built_ = true;
   }
 
   Topology topo_;
   DeviceInfo info_;
   std::uint64_t iteration_;
   int rebuild_;
+  GridSort sort_;
   bool grid_built_ = false;
+  std::int32_t boundary_count_ = 0;
   WorldInfo world_{};
   GridInfo grid_{};
   std::size_t spring_count_ = 0;
@@ -317,7 +403,9 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, inside_, grew_, breakdown_, slice_gap_, slice_inside_, slice_bad_;
-  Kernel envelope_cells_, slice_centroids_, forces_, integrate_, constraints_, loop_, grow_, rest_lengths_, statistics_;
+  Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
+      grid_order_, grid_gather_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_, grow_,
+      rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
   std::vector<std::pair<double*, cl::Event>> pending_;
@@ -327,9 +415,9 @@ class DeviceBackend final : public OpenclBackend {
 }  // namespace
 
 std::unique_ptr<OpenclBackend> make_opencl_backend(const Topology& topology, SimState initial, const Params& params,
-                                                   const DeviceChoice& choice) {
+                                                   const DeviceChoice& choice, GridSort sort) {
   if (choice.reference) throw std::invalid_argument("make_opencl_backend: the choice is the reference solver");
-  return std::make_unique<DeviceBackend>(topology, std::move(initial), params, choice.device);
+  return std::make_unique<DeviceBackend>(topology, std::move(initial), params, choice.device, sort);
 }
 
 }  // namespace animpak

@@ -2,6 +2,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "animpak/error.hpp"
@@ -38,16 +39,53 @@ std::string program_source() {
   return source;
 }
 
+std::string program_location(const std::string& source, int line) {
+  // Walk the program once: a "#line 1 \"file\"" directive on program line L makes L + 1 that file's line 1.
+  std::string file;
+  int file_first_line = 0;
+  int current = 1;
+  std::size_t pos = 0;
+  while (current < line && pos < source.size()) {
+    const std::size_t end = source.find('\n', pos);
+    const std::string_view text(source.data() + pos, (end == std::string::npos ? source.size() : end) - pos);
+    constexpr std::string_view directive = "#line 1 \"";
+    if (text.substr(0, directive.size()) == directive && text.size() > directive.size() + 1) {
+      file = std::string(text.substr(directive.size(), text.size() - directive.size() - 1));
+      file_first_line = current + 1;
+    }
+    if (end == std::string::npos) break;
+    pos = end + 1;
+    ++current;
+  }
+  if (file.empty() || line < file_first_line) return "program line " + std::to_string(line);
+  return file + ":" + std::to_string(line - file_first_line + 1);
+}
+
+std::string annotate_build_log(const std::string& log, const std::string& source) {
+  static const std::regex whole_program(R"(<(?:kernel|source)>:(\d+))");
+  std::string out;
+  auto last = log.cbegin();
+  for (std::sregex_iterator it(log.begin(), log.end(), whole_program), end; it != end; ++it) {
+    out.append(last, log.cbegin() + it->position());
+    out += program_location(source, std::stoi((*it)[1].str()));
+    last = log.cbegin() + it->position() + it->length();
+  }
+  out.append(last, log.cend());
+  return out;
+}
+
 cl::Program build_program(const cl::Context& context, const cl::Device& device) {
   cl_int err = CL_SUCCESS;
-  cl::Program program(context, program_source(), false, &err);
+  const std::string source = program_source();
+  cl::Program program(context, source, false, &err);
   check(err, "clCreateProgramWithSource");
   const cl_int built = program.build(std::vector<cl::Device>{device}, build_options);
   if (built != CL_SUCCESS) {
     std::string log, name;
     device.getInfo(CL_DEVICE_NAME, &name);
     program.getBuildInfo(device, CL_PROGRAM_BUILD_LOG, &log);
-    throw OpenclError("clBuildProgram", built, "device " + name + ", options " + build_options, log);
+    throw OpenclError("clBuildProgram", built, "device " + name + ", options " + build_options,
+                      annotate_build_log(log, source));
   }
   return program;
 }

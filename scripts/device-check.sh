@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# The OpenCL portability check for one machine, run from the repository root with a bundle made by
+# scripts/solver-bundle.sh: registers the NVIDIA OpenCL driver beside the listed vendors when it is
+# installed, lists the devices, runs the equivalence suite on every device, validates the default
+# example on every device, benchmarks each GPU against the reference, and packs the default example
+# on the GPU and on the reference and compares the state bytes. DEVICE picks the device (default nvidia).
+# Usage: scripts/device-check.sh BUNDLE_DIR OUT_DIR [BENCH_SIZES]
+# Writes to OUT_DIR: devices.txt, equivalence.txt, validate.txt, bench.json, bench.txt, pack-gpu/ (the
+# reference pack goes to a scratch folder; only the comparison is reported).
+set -uo pipefail
+bundle="$(cd "$1" && pwd)"
+out="$(mkdir -p "$2" && cd "$2" && pwd)"
+sizes="${3:-10000,50000,100000,200000}"
+export LD_LIBRARY_PATH="$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$(mktemp -d)}"
+solve="$bundle/bin/animpak-solve"
+status=0
+scratch="$(mktemp -d)"
+note() { printf '\n== %s\n' "$*"; }
+
+# The ICD loader reads one folder of vendor files; make one with the system's vendors plus NVIDIA's.
+vendors="$(mktemp -d)"
+cp /etc/OpenCL/vendors/*.icd "$vendors/" 2>/dev/null || true
+nvidia_lib="$(ldconfig -p | awk '/libnvidia-opencl\.so\.1/ {print $NF; exit}')"
+if [ -n "$nvidia_lib" ] && ! grep -qs nvidia-opencl "$vendors"/*.icd; then echo "$nvidia_lib" >"$vendors/nvidia.icd"; fi
+export OCL_ICD_VENDORS="$vendors"
+note "OpenCL vendors ($OCL_ICD_VENDORS)"; head -n1 "$vendors"/*.icd
+
+# The reference pack takes minutes on one core: run it beside the checks below (the bench times one
+# core at a time, so one more busy core on a many-core machine barely moves its numbers).
+"$solve" pack examples/default/scene.json --device reference --out "$scratch/pack-reference" \
+  >"$scratch/pack-reference.log" 2>&1 &
+reference_pack=$!
+
+note "animpak-solve devices --verbose"
+"$solve" devices --verbose 2>&1 | tee "$out/devices.txt" || status=1
+
+note "equivalence suite on every device"
+"$bundle/bin/test_equivalence" -r compact -d yes 2>&1 | tee "$out/equivalence.txt"
+[ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+
+note "validate examples/default --all-devices --steps 50"
+"$solve" validate examples/default/scene.json --all-devices --steps 50 2>&1 | tee "$out/validate.txt"
+[ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+
+device="${DEVICE:-nvidia}"
+note "bench --device $device --sizes $sizes --grid-sort both"
+"$solve" bench --device "$device" --sizes "$sizes" --steps 20 --warmup 3 --grid-sort both --json "$out/bench.json" 2>&1 |
+  tee "$out/bench.txt"
+[ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+
+note "pack examples/default on $device, and the reference pack started at the beginning"
+"$solve" pack examples/default/scene.json --device "$device" --out "$out/pack-gpu" 2>&1 | tail -n 5 || status=1
+wait "$reference_pack" || status=1
+tail -n 3 "$scratch/pack-reference.log"
+if cmp "$out/pack-gpu/state.bin" "$scratch/pack-reference/state.bin"; then
+  echo "state.bin: identical ($(stat -c %s "$out/pack-gpu/state.bin") bytes)"
+else
+  echo "state.bin: DIFFERENT"; status=1
+fi
+exit "$status"
