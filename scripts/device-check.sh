@@ -3,7 +3,8 @@
 # scripts/solver-bundle.sh: registers the NVIDIA OpenCL driver beside the listed vendors when it is
 # installed, lists the devices, runs the equivalence suite on every device, validates the default
 # example on every device, benchmarks each GPU against the reference, and packs the default example
-# on the GPU and on the reference and compares the state bytes. DEVICE picks the device (default nvidia).
+# on the GPU and on the reference and compares the state bytes. DEVICE picks the device (default
+# nvidia); GRID_SORT the bench's --grid-sort (default both).
 # Usage: scripts/device-check.sh BUNDLE_DIR OUT_DIR [BENCH_SIZES]
 # Writes to OUT_DIR: devices.txt, equivalence.txt, validate.txt, bench.json, bench.txt, pack-gpu/ (the
 # reference pack goes to a scratch folder; only the comparison is reported).
@@ -44,8 +45,8 @@ note "validate examples/default --all-devices --steps 50"
 [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 
 device="${DEVICE:-nvidia}"
-note "bench --device $device --sizes $sizes --grid-sort both"
-"$solve" bench --device "$device" --sizes "$sizes" --steps 20 --warmup 3 --grid-sort both --json "$out/bench.json" 2>&1 |
+note "bench --device $device --sizes $sizes --grid-sort ${GRID_SORT:-both}"
+"$solve" bench --device "$device" --sizes "$sizes" --steps 20 --warmup 3 --grid-sort "${GRID_SORT:-both}" --json "$out/bench.json" 2>&1 |
   tee "$out/bench.txt"
 [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 

@@ -3,7 +3,9 @@
 // device (GPUs: nothing crosses the bus in a step) or on the host from the cell ids read back (CPU
 // devices); statistics are per-slice reductions read on demand, and the full state comes back only in
 // state().
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <deque>
 #include <limits>
 #include <stdexcept>
@@ -101,11 +103,11 @@ class DeviceBackend final : public OpenclBackend {
                      loop_start = in(topo_.loop_start, "loop_start"), ref_x = in(topo_.ref_x, "ref_x"),
                      ref_y = in(topo_.ref_y, "ref_y"), ref_t = in(topo_.ref_t, "ref_t"),
                      ref_cx = in(topo_.slice_ref_cx, "slice_ref_cx"), ref_cy = in(topo_.slice_ref_cy, "slice_ref_cy");
-    std::vector<std::int32_t> boundary_vertices;
     for (std::int32_t v = 0; v < n; ++v)
-      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_vertices.push_back(v);
-    boundary_count_ = static_cast<std::int32_t>(boundary_vertices.size());
-    const cl::Buffer boundary = in(boundary_vertices, "boundary_vertices");
+      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_order_.push_back(v);
+    boundary_count_ = static_cast<std::int32_t>(boundary_order_.size());
+    boundary_key_.resize(boundary_order_.size());
+    boundary_buf_ = rw(boundary_order_, "boundary_vertices");
     const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles,
                       it = sizeof(std::int32_t) * grid_.triangles, ic = sizeof(std::int32_t) * grid_.cells;
     const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
@@ -151,7 +153,7 @@ class DeviceBackend final : public OpenclBackend {
     grid_gather_.bind(grid_, sorted_buf_, env_element, env_a, env_b, env_c, env_cx_, env_cy_, env_ct_, slot_element,
                       slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct);
     repulsion_ = Kernel(program, "repulsion");
-    repulsion_.bind(world_, grid_, p, boundary_count_, boundary, x_, y_, t_, element, cell_start_buf_, slot_element,
+    repulsion_.bind(world_, grid_, p, boundary_count_, boundary_buf_, x_, y_, t_, element, cell_start_buf_, slot_element,
                     slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices, slice_begin, slice_boundary,
                     rpl_x, rpl_y, rpl_t, rpl_closest, rpl_inside);
     slice_centroids_ = Kernel(program, "slice_centroids");
@@ -188,6 +190,7 @@ class DeviceBackend final : public OpenclBackend {
 
   void step() override {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
+    if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
     timed(times_.forces, repulsion_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
@@ -251,6 +254,7 @@ class DeviceBackend final : public OpenclBackend {
 
   reference::StepForces debug_forces(reference::ForceBreakdown* out) override {
     build_grid();
+    order_boundary_by_cell();
     const std::int32_t n = world_.vertices;
     if (out != nullptr) {
       breakdown_ = opencl::make_buffer(context_, CL_MEM_READ_WRITE, sizeof(float) * 3 * AP_FORCE_COMPONENTS * n,
@@ -349,6 +353,37 @@ class DeviceBackend final : public OpenclBackend {
     pending_.clear();
   }
 
+  // The repulsion kernel's work-items in the order of their vertices' grid cells, so that the items of
+  // one work-group (a GPU warp) walk the same cell rows in step instead of diverging. Any order gives
+  // the same forces, since each item writes only its own vertex; the positions read back for this
+  // cost one transfer every boundary_reorder_interval steps.
+  void order_boundary_by_cell() {
+    const std::size_t n = static_cast<std::size_t>(world_.vertices);
+    std::vector<float> px(n), py(n), pt(n);
+    read(x_, px, "x"), read(y_, py, "y"), read(t_, pt, "t", true);
+    settle_times();
+    PhaseStopwatch w(times_.transfer);
+    for (std::size_t i = 0; i < boundary_order_.size(); ++i) {
+      const std::int32_t v = boundary_order_[i];
+      const std::int32_t cx = grid_cell(px[v]), cy = grid_cell(py[v]), ct = grid_cell(pt[v]);
+      boundary_key_[i] = {(ct * grid_.n + cy) * grid_.n + cx, v};
+    }
+    std::sort(boundary_key_.begin(), boundary_key_.end());
+    for (std::size_t i = 0; i < boundary_key_.size(); ++i) boundary_order_[i] = boundary_key_[i].second;
+    if (!boundary_order_.empty())
+      check(queue_.enqueueWriteBuffer(boundary_buf_, CL_FALSE, 0, sizeof(std::int32_t) * boundary_order_.size(),
+                                      boundary_order_.data()),
+            "clEnqueueWriteBuffer(boundary_vertices)");
+    boundary_ordered_ = true;
+    boundary_ordered_at_ = iteration_;
+  }
+
+  std::int32_t grid_cell(float c) const {
+    float f = std::floor(c / grid_.cell);
+    if (!(f >= 0.0f)) f = 0.0f;
+    return static_cast<std::int32_t>(std::min(f, static_cast<float>(grid_.n - 1)));
+  }
+
   // Centroids and cells on the device, the stable counting sort on the device or on the host (as
   // grid.cpp), then the per-slot copies the force kernels read.
   void build_grid() {
@@ -394,6 +429,11 @@ class DeviceBackend final : public OpenclBackend {
   GridSort sort_;
   bool grid_built_ = false;
   std::int32_t boundary_count_ = 0;
+  static constexpr std::uint64_t boundary_reorder_interval = 100;
+  bool boundary_ordered_ = false;
+  std::uint64_t boundary_ordered_at_ = 0;
+  std::vector<std::int32_t> boundary_order_;  ///< host copy of boundary_buf_, kept alive for its async upload
+  std::vector<std::pair<std::int32_t, std::int32_t>> boundary_key_;
   WorldInfo world_{};
   GridInfo grid_{};
   std::size_t spring_count_ = 0;
@@ -401,6 +441,7 @@ class DeviceBackend final : public OpenclBackend {
   cl::CommandQueue queue_;
   std::deque<cl::Buffer> held_;       ///< read-only inputs and scratch, held for the kernels' arguments
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
+  cl::Buffer boundary_buf_;
   cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, inside_, grew_, breakdown_, slice_gap_, slice_inside_, slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
