@@ -58,3 +58,31 @@ TEST_CASE("animpak bench: an unknown device is a usage error, a missing examples
   CHECK(missing.code == 2);
   CHECK(missing.err.find("/nonexistent") != std::string::npos);
 }
+
+TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each sort, rows say which") {
+  if (run_animpak("devices").out.find("Device:") == std::string::npos) {
+    WARN("no OpenCL device: bench --grid-sort both not tested");
+    return;
+  }
+  const auto json_file = scratch("bench-sorts.json");
+  std::filesystem::remove(json_file);
+  const CommandResult r = run_animpak("bench --device pocl --grid-sort both --sizes 2000 --steps 2 --warmup 1 "
+                                      "--no-example-scenes --examples " + examples() + " --json " + json_file.string());
+  INFO(r.err);
+  if (r.code == 1 && r.err.find("pocl") != std::string::npos) {
+    WARN("no PoCL device: bench --grid-sort both not tested");
+    return;
+  }
+  REQUIRE(r.code == 0);
+  const nlohmann::json j = nlohmann::json::parse(read_text(json_file));
+  std::vector<std::string> rows;
+  for (const auto& row : j.at("results"))
+    rows.push_back(row.at("device").get<std::string>() + "/" +
+                   (row.at("grid_sort").is_null() ? std::string("-") : row.at("grid_sort").get<std::string>()));
+  CHECK(rows == std::vector<std::string>{"reference/-", "pocl:host/host", "pocl:device/device"});
+  for (const auto& row : j.at("results")) CHECK(row.at("ms_per_iter").get<double>() > 0.0);
+
+  CHECK(run_animpak("bench --grid-sort sideways --sizes 2000").code == 1);
+  CHECK(run_animpak("pack --grid-sort sideways " + examples() + "/default/scene.json --out " +
+                    scratch("never").string()).code == 1);
+}
