@@ -14,7 +14,7 @@ void repulsion_add_term(float ux, float uy, float ut, float eps, float* sx, floa
   *st = *st + ut * w;
 }
 
-/** Exact term of Eq. 1 for every near slot in [begin, end) of triangles not owned by `own`. */
+/** Exact term of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`. */
 void repulsion_near_range(int2 range, int own, float px, float py, float pt, float eps,
                           __global const int* slot_element, __global const int* slot_a, __global const int* slot_b,
                           __global const int* slot_c, __global const float* x, __global const float* y,
@@ -31,7 +31,7 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
   }
 }
 
-/** Centroid term of Eq. 1 for every far slot in [begin, end) of triangles not owned by `own`. */
+/** Centroid term of Eq. 1 for every far slot in [range.x, range.y) of triangles not owned by `own`. */
 void repulsion_far_range(int2 range, int own, float px, float py, float pt, float eps,
                          __global const int* slot_element, __global const float* slot_cx,
                          __global const float* slot_cy, __global const float* slot_ct, float* sx, float* sy,
@@ -46,8 +46,7 @@ void repulsion_far_range(int2 range, int own, float px, float py, float pt, floa
  * is near) and whether it lies inside another element (then the force is zero: Eq. 3 takes over).
  * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
  * step_forces reads the three results back per vertex. */
-__kernel void repulsion(const WorldInfo world, const GridInfo grid, const ForceParams p,
-                        const int boundary_count,
+__kernel void repulsion(const GridInfo grid, const ForceParams p, const int boundary_count,
                         __global const int* boundary_vertices,   /* input: the boundary vertices */
                         __global const float* x, __global const float* y, __global const float* t, /* input */
                         __global const int* element,             /* input: per vertex */

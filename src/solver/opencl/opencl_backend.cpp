@@ -5,7 +5,6 @@
 // state().
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <deque>
 #include <limits>
 #include <stdexcept>
@@ -153,7 +152,7 @@ class DeviceBackend final : public OpenclBackend {
     grid_gather_.bind(grid_, sorted_buf_, env_element, env_a, env_b, env_c, env_cx_, env_cy_, env_ct_, slot_element,
                       slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct);
     repulsion_ = Kernel(program, "repulsion");
-    repulsion_.bind(world_, grid_, p, boundary_count_, boundary_buf_, x_, y_, t_, element, cell_start_buf_, slot_element,
+    repulsion_.bind(grid_, p, boundary_count_, boundary_buf_, x_, y_, t_, element, cell_start_buf_, slot_element,
                     slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices, slice_begin, slice_boundary,
                     rpl_x, rpl_y, rpl_t, rpl_closest, rpl_inside);
     slice_centroids_ = Kernel(program, "slice_centroids");
@@ -365,7 +364,9 @@ class DeviceBackend final : public OpenclBackend {
     PhaseStopwatch w(times_.transfer);
     for (std::size_t i = 0; i < boundary_order_.size(); ++i) {
       const std::int32_t v = boundary_order_[i];
-      const std::int32_t cx = grid_cell(px[v]), cy = grid_cell(py[v]), ct = grid_cell(pt[v]);
+      const std::int32_t cx = reference::grid_axis_cell(px[v], grid_.cell, grid_.n),
+                         cy = reference::grid_axis_cell(py[v], grid_.cell, grid_.n),
+                         ct = reference::grid_axis_cell(pt[v], grid_.cell, grid_.n);
       boundary_key_[i] = {(ct * grid_.n + cy) * grid_.n + cx, v};
     }
     std::sort(boundary_key_.begin(), boundary_key_.end());
@@ -376,12 +377,6 @@ class DeviceBackend final : public OpenclBackend {
             "clEnqueueWriteBuffer(boundary_vertices)");
     boundary_ordered_ = true;
     boundary_ordered_at_ = iteration_;
-  }
-
-  std::int32_t grid_cell(float c) const {
-    float f = std::floor(c / grid_.cell);
-    if (!(f >= 0.0f)) f = 0.0f;
-    return static_cast<std::int32_t>(std::min(f, static_cast<float>(grid_.n - 1)));
   }
 
   // Centroids and cells on the device, the stable counting sort on the device or on the host (as
