@@ -29,11 +29,26 @@ struct StepStatistics {
   std::int32_t first_bad_vertex = -1;  ///< when not finite
 };
 
+/// The per-slice part of StepStatistics, reduced in slice order the same way by every backend: the
+/// range of the per-slice gaps (max from 0, min from +inf), the share of the slices that grew (`grown`
+/// of them), and the range of g (1 when there are no slices).
+void reduce_slice_statistics(const std::vector<float>& slice_gap, const std::vector<float>& growth,
+                             std::int32_t grown, StepStatistics& st);
+
 /// Seconds spent per phase, summed over steps.
 struct PhaseTimes {
   double grid = 0, forces = 0, integrate = 0, constraints = 0, loop = 0, growth = 0, statistics = 0, transfer = 0;
-  double total() const { return grid + forces + integrate + constraints + loop + growth + statistics + transfer; }
 };
+
+/// Every phase of PhaseTimes with its name, in step order: one list for every report and sum.
+struct NamedPhase {
+  const char* name;
+  double PhaseTimes::*seconds;
+};
+inline constexpr NamedPhase phase_fields[] = {
+    {"grid", &PhaseTimes::grid},       {"forces", &PhaseTimes::forces},         {"integrate", &PhaseTimes::integrate},
+    {"constraints", &PhaseTimes::constraints}, {"loop", &PhaseTimes::loop},     {"growth", &PhaseTimes::growth},
+    {"statistics", &PhaseTimes::statistics},   {"transfer", &PhaseTimes::transfer}};
 
 /// Adds the seconds of its own lifetime to `sink`: a named timing scope per phase of a step.
 class PhaseStopwatch {

@@ -44,7 +44,7 @@ std::vector<BenchTarget> bench_targets(const BenchOptions& options) {
   const bool both = options.grid_sort == "both";
   const GridSort sort = both ? GridSort::automatic : parse_grid_sort(options.grid_sort, "--grid-sort");
   for (const std::string& d : options.devices) {
-    if (d == "reference" || choose_device(d).reference) continue;  // resolved now: a typo fails at once
+    if (choose_device(d).reference) continue;  // resolved now: a typo fails at once
     const bool seen = std::any_of(targets.begin(), targets.end(), [&](const BenchTarget& t) { return t.device == d; });
     if (seen) continue;
     if (both) {
@@ -81,13 +81,10 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
   return worlds;
 }
 
-constexpr double PhaseTimes::*phase_members[] = {&PhaseTimes::grid,        &PhaseTimes::forces, &PhaseTimes::integrate,
-                                                 &PhaseTimes::constraints, &PhaseTimes::loop,   &PhaseTimes::growth,
-                                                 &PhaseTimes::statistics,  &PhaseTimes::transfer};
-
 nlohmann::json phases_json(const PhaseTimes& p) {
-  return {{"grid", p.grid},   {"forces", p.forces}, {"integrate", p.integrate}, {"constraints", p.constraints},
-          {"loop", p.loop},   {"growth", p.growth}, {"statistics", p.statistics}, {"transfer", p.transfer}};
+  nlohmann::json out = nlohmann::json::object();
+  for (const NamedPhase& phase : phase_fields) out[phase.name] = p.*phase.seconds;
+  return out;
 }
 
 void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string>& devices,
@@ -159,7 +156,7 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
     const double small = lo->timing.phases_ms.*phase / lo->vertices;
     return small > 0 ? (hi->timing.phases_ms.*phase / hi->vertices) / small : 0.0;
   };
-  for (double PhaseTimes::*phase : phase_members) f.phase_ratios.*phase = ratio(phase);
+  for (const NamedPhase& phase : phase_fields) f.phase_ratios.*phase.seconds = ratio(phase.seconds);
   // Rows whose elements have no neighbour in reach cost only springs; compare the ones that visit.
   std::vector<const BenchRow*> visiting;
   for (const BenchRow* r : pts)

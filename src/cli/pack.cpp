@@ -148,9 +148,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   write_checkpoint(out / "state.bin", checkpoint);
   world.state = result.last_good;
 
-  PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds};
-  report.device = backend->name();
-  report.driver = driver;
+  PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds, backend->name(), driver};
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;

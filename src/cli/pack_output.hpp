@@ -25,9 +25,8 @@ struct PackReport {
   const Checkpoint& checkpoint;
   std::vector<FrameMetrics> frames;
   double setup_seconds = 0.0;
-  double render_seconds = 0.0;
-  std::string device = "reference";
-  std::string driver = "scalar reference (no OpenCL)";  ///< the device's driver and platform version
+  std::string device;  ///< the backend's name
+  std::string driver;  ///< the device's driver and platform version
 };
 
 void write_stats(const std::filesystem::path& file, const PackReport& report);

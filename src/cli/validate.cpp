@@ -112,6 +112,7 @@ int validate(const ValidateOptions& options) {
   // Which devices: every one, the one named (UsageError when none or several match), or the one pack
   // would choose by default.
   std::vector<DeviceInfo> targets;
+  std::string chosen;  // why the default rule chose what it did (the reference, when nothing to validate)
   if (options.all_devices) {
     targets = list_devices();
   } else {
@@ -119,12 +120,12 @@ int validate(const ValidateOptions& options) {
       throw UsageError("--device " + *options.device + ": no OpenCL device found; nothing to validate");
     const DeviceChoice choice = choose_device(options.device.value_or(""));
     if (!choice.reference) targets.push_back(choice.device);
+    chosen = choice.reason;
   }
   ValidationHeader header{options.scene.string(), 0, 0, options.steps, 1};
   if (targets.empty()) {
     const std::string nothing = options.all_devices ? "No OpenCL device found; nothing to validate."
-                                                    : "Nothing to validate: the default device is the " +
-                                                          choose_device("").reason;
+                                                    : "Nothing to validate: the default device is the " + chosen;
     if (options.json) {
       std::cerr << "animpak: " << nothing << "\n";
       print_json(std::cout, header, {});

@@ -9,7 +9,6 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   RunResult result;
   result.last_good = backend.state();
   std::uint64_t iteration = result.last_good.iteration;
-  bool good_is_current = true;  // last_good holds the backend's present state
   const auto rebuild = static_cast<std::uint64_t>(params.grid_rebuild_interval);
   const auto check = static_cast<std::uint64_t>(params.check_interval);
   for (;;) {
@@ -25,7 +24,6 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     }
     backend.step();
     ++iteration;
-    good_is_current = false;
     if (iteration % check != 0) continue;
 
     result.last = backend.statistics();
@@ -34,7 +32,6 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       break;
     }
     result.last_good = backend.state();
-    good_is_current = true;
     if (control.on_check) control.on_check(result.last);
     if (result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
       result.reason = StopReason::gap;
@@ -45,7 +42,9 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       break;
     }
   }
-  if (result.reason != StopReason::non_finite && !good_is_current) result.last_good = backend.state();
+  // last_good is the present state unless steps ran since the last check.
+  if (result.reason != StopReason::non_finite && result.last_good.iteration != iteration)
+    result.last_good = backend.state();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -10,14 +10,7 @@ namespace {
 PhaseTimes per_step_ms(const PhaseTimes& after, const PhaseTimes& before, int steps) {
   const double k = 1000.0 / steps;
   PhaseTimes d;
-  d.grid = (after.grid - before.grid) * k;
-  d.forces = (after.forces - before.forces) * k;
-  d.integrate = (after.integrate - before.integrate) * k;
-  d.constraints = (after.constraints - before.constraints) * k;
-  d.loop = (after.loop - before.loop) * k;
-  d.growth = (after.growth - before.growth) * k;
-  d.statistics = (after.statistics - before.statistics) * k;
-  d.transfer = (after.transfer - before.transfer) * k;
+  for (const NamedPhase& phase : phase_fields) d.*phase.seconds = (after.*phase.seconds - before.*phase.seconds) * k;
   return d;
 }
 

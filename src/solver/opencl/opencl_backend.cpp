@@ -214,25 +214,15 @@ class DeviceBackend final : public OpenclBackend {
     read(grew_, grew, "grew", true);
     settle_times();
     PhaseStopwatch w(times_.statistics);
-    // The same reductions, in the same order, as the reference backend's statistics().
     StepStatistics st;
     st.iteration = iteration_;
-    st.max_slice_gap = 0.0f;
-    st.min_slice_gap = std::numeric_limits<float>::infinity();
     std::int32_t grown = 0;
     for (std::int32_t s = 0; s < slices; ++s) {
-      st.max_slice_gap = gap[s] > st.max_slice_gap ? gap[s] : st.max_slice_gap;
-      st.min_slice_gap = gap[s] < st.min_slice_gap ? gap[s] : st.min_slice_gap;
       grown += grew[s];
       st.overlapping_vertices += inside[s];
       if (st.finite && bad[s] >= 0) st.finite = false, st.first_bad_vertex = bad[s];
     }
-    st.growing_share = slices ? double(grown) / slices : 0.0;
-    st.min_growth = st.max_growth = growth.empty() ? 1.0f : growth[0];
-    for (float g : growth) {
-      st.min_growth = g < st.min_growth ? g : st.min_growth;
-      st.max_growth = g > st.max_growth ? g : st.max_growth;
-    }
+    reduce_slice_statistics(gap, growth, grown, st);
     return st;
   }
 

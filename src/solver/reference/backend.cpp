@@ -66,19 +66,8 @@ class ReferenceBackend final : public Backend {
     PhaseStopwatch w(times_.statistics);
     StepStatistics st;
     st.iteration = state_.iteration;
-    st.max_slice_gap = 0.0f;
-    st.min_slice_gap = std::numeric_limits<float>::infinity();
-    for (float g : slice_gap_) {
-      st.max_slice_gap = g > st.max_slice_gap ? g : st.max_slice_gap;
-      st.min_slice_gap = g < st.min_slice_gap ? g : st.min_slice_gap;
-    }
-    st.growing_share = topo_.slice_count() ? double(grown_) / topo_.slice_count() : 0.0;
+    reduce_slice_statistics(slice_gap_, state_.growth, grown_, st);
     for (std::uint8_t f : inside_) st.overlapping_vertices += f;
-    st.min_growth = st.max_growth = state_.growth.empty() ? 1.0f : state_.growth[0];
-    for (float g : state_.growth) {
-      st.min_growth = g < st.min_growth ? g : st.min_growth;
-      st.max_growth = g > st.max_growth ? g : st.max_growth;
-    }
     for (std::int32_t v = 0; v < topo_.vertex_count() && st.finite; ++v) {
       const bool ok = std::isfinite(state_.x[v]) && std::isfinite(state_.y[v]) && std::isfinite(state_.t[v]) &&
                       std::isfinite(state_.vx[v]) && std::isfinite(state_.vy[v]) && std::isfinite(state_.vt[v]);
@@ -102,6 +91,22 @@ class ReferenceBackend final : public Backend {
 };
 
 }  // namespace
+
+void reduce_slice_statistics(const std::vector<float>& slice_gap, const std::vector<float>& growth,
+                             std::int32_t grown, StepStatistics& st) {
+  st.max_slice_gap = 0.0f;
+  st.min_slice_gap = std::numeric_limits<float>::infinity();
+  for (const float g : slice_gap) {
+    st.max_slice_gap = g > st.max_slice_gap ? g : st.max_slice_gap;
+    st.min_slice_gap = g < st.min_slice_gap ? g : st.min_slice_gap;
+  }
+  st.growing_share = slice_gap.empty() ? 0.0 : double(grown) / double(slice_gap.size());
+  st.min_growth = st.max_growth = growth.empty() ? 1.0f : growth[0];
+  for (const float g : growth) {
+    st.min_growth = g < st.min_growth ? g : st.min_growth;
+    st.max_growth = g > st.max_growth ? g : st.max_growth;
+  }
+}
 
 const char* stop_reason_name(StopReason r) {
   switch (r) {
