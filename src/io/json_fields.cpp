@@ -26,12 +26,6 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-std::string backticked(std::string_view word) {
-  std::string out(1, '`');
-  out.append(word).push_back('`');
-  return out;
-}
-
 std::string list_of(const std::vector<std::string_view>& words) {
   std::string out;
   for (std::string_view w : words) {
@@ -42,6 +36,13 @@ std::string list_of(const std::vector<std::string_view>& words) {
 }
 
 }  // namespace
+
+// Built by append: GCC 12 warns falsely (-Wrestrict) on `"`" + std::string(word)` once inlined.
+std::string backticked(std::string_view word) {
+  std::string out(1, '`');
+  out.append(word).push_back('`');
+  return out;
+}
 
 std::string closest_name(std::string_view word, const std::vector<std::string_view>& candidates) {
   std::string best;
@@ -56,10 +57,6 @@ std::string closest_name(std::string_view word, const std::vector<std::string_vi
     }
   }
   return best;
-}
-
-std::string closest_name(std::string_view word, std::initializer_list<std::string_view> candidates) {
-  return closest_name(word, std::vector<std::string_view>(candidates));
 }
 
 std::string format_number(double value) {
@@ -89,10 +86,14 @@ void JsonField::check_keys(std::initializer_list<std::string_view> allowed) cons
   for (const auto& [key, value] : value_->items()) {
     if (std::find(names.begin(), names.end(), key) != names.end()) continue;
     const std::string near = closest_name(key, names);
-    const JsonField field(value, *file_, path_.empty() ? key : path_ + "." + key);
+    const JsonField field(value, *file_, child_path(key));
     field.fail(near.empty() ? "unknown field; expected one of " + list_of(names)
                             : "unknown field; did you mean " + backticked(near) + "?");
   }
+}
+
+std::string JsonField::child_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
 bool JsonField::has(std::string_view key) const { return value_->is_object() && value_->contains(key); }
@@ -101,8 +102,7 @@ std::optional<JsonField> JsonField::optional(std::string_view key) const {
   if (!value_->is_object()) fail("expected an object, got " + shown());
   const auto found = value_->find(key);
   if (found == value_->end()) return std::nullopt;
-  const std::string child = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-  return JsonField(*found, *file_, child);
+  return JsonField(*found, *file_, child_path(key));
 }
 
 JsonField JsonField::required(std::string_view key) const {
@@ -115,7 +115,7 @@ std::vector<std::pair<std::string, JsonField>> JsonField::members() const {
   if (!value_->is_object()) fail("expected an object, got " + shown());
   std::vector<std::pair<std::string, JsonField>> out;
   for (const auto& [key, value] : value_->items())
-    out.emplace_back(key, JsonField(value, *file_, path_.empty() ? key : path_ + "." + key));
+    out.emplace_back(key, JsonField(value, *file_, child_path(key)));
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <vector>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,8 +16,10 @@
 namespace animpak::io_detail {
 
 /// The closest of `candidates` to `word` (edit distance ≤ 2, or one a prefix of the other), or "".
-std::string closest_name(std::string_view word, std::initializer_list<std::string_view> candidates);
 std::string closest_name(std::string_view word, const std::vector<std::string_view>& candidates);
+
+/// `word` between backticks, as every message quotes a name, key or token.
+std::string backticked(std::string_view word);
 
 class JsonField {
  public:
@@ -59,6 +62,9 @@ class JsonField {
   std::string shown() const;
 
  private:
+  /// The field path of member `key`: "key" at the top, "parent.key" below.
+  std::string child_path(std::string_view key) const;
+
   const nlohmann::json* value_;
   const std::string* file_;
   std::string path_;

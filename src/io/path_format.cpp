@@ -16,10 +16,13 @@
 
 #include "animpak/error.hpp"
 #include "animpak/io.hpp"
+#include "json_fields.hpp"
 #include "text_file.hpp"
 
 namespace animpak {
 namespace {
+
+using io_detail::backticked;
 
 /// Strokes in the data have no width; one art unit (0.2 % of the 500-unit artboard) is a hairline
 /// that stays visible at the sizes elements are packed at.
@@ -97,13 +100,6 @@ class PathParser {
     throw InputError(name_ + ":" + std::to_string(line) + ": " + problem + "; " + what_to_do);
   }
 
-  // Built by append: GCC 12 warns falsely (-Wrestrict) on `"`" + std::string(token)` once inlined.
-  static std::string quoted(std::string_view token) {
-    std::string out(1, '`');
-    out.append(token).push_back('`');
-    return out;
-  }
-
   std::optional<long> integer(std::string_view token) const {
     long value = 0;
     const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
@@ -114,7 +110,7 @@ class PathParser {
   void read_region_count(const Line& line) {
     const std::optional<long> count = line.tokens.size() == 1 ? integer(line.tokens[0]) : std::nullopt;
     if (!count)
-      fail(line.number, "expected the region count (one integer), got " + quoted(join(line.tokens)),
+      fail(line.number, "expected the region count (one integer), got " + backticked(join(line.tokens)),
            "a `.path` file starts with a line holding `1`");
     if (*count != 1)
       fail(line.number, "the file has " + std::to_string(*count) + " regions, only 1 is supported",
@@ -123,15 +119,15 @@ class PathParser {
 
   void require_region(const Line& line, std::string_view token) const {
     const std::optional<long> region = integer(token);
-    if (!region) fail(line.number, "expected a region number, got " + quoted(token), "use region 0");
+    if (!region) fail(line.number, "expected a region number, got " + backticked(token), "use region 0");
     if (*region != 0)
       fail(line.number, "region " + std::to_string(*region) + " is not supported", "use region 0 (files hold one region)");
   }
 
   std::vector<Paint> read_colours(const Line& line, std::string_view keyword) {
     if (line.tokens[0] != keyword)
-      fail(line.number, "expected " + quoted(keyword) + ", got " + quoted(line.tokens[0]), kHeaderHelp);
-    if (line.tokens.size() < 2) fail(line.number, "missing the region after " + quoted(keyword), kHeaderHelp);
+      fail(line.number, "expected " + backticked(keyword) + ", got " + backticked(line.tokens[0]), kHeaderHelp);
+    if (line.tokens.size() < 2) fail(line.number, "missing the region after " + backticked(keyword), kHeaderHelp);
     require_region(line, line.tokens[1]);
     std::vector<Paint> paints;
     for (size_t i = 2; i < line.tokens.size(); ++i) paints.push_back(read_colour(line, line.tokens[i]));
@@ -146,7 +142,7 @@ class PathParser {
       const std::optional<long> value =
           comma == std::string_view::npos ? std::nullopt : integer(token.substr(start, comma - start));
       if (!value)
-        fail(line.number, "expected a colour `r,g,b`, got " + quoted(token),
+        fail(line.number, "expected a colour `r,g,b`, got " + backticked(token),
              "write three integers 0-255 separated by commas, or -1,-1,-1 for none");
       channel[c] = *value;
       start = comma + 1;
@@ -154,7 +150,7 @@ class PathParser {
     if (channel[0] == -1 && channel[1] == -1 && channel[2] == -1) return {};
     for (long v : channel)
       if (v < 0 || v > 255)
-        fail(line.number, "colour " + quoted(token) + " has a channel outside 0-255",
+        fail(line.number, "colour " + backticked(token) + " has a channel outside 0-255",
              "use 0-255 per channel, or -1,-1,-1 for none");
     return Paint{true, Rgba{channel[0] / 255.0, channel[1] / 255.0, channel[2] / 255.0, 1.0}};
   }
@@ -167,10 +163,10 @@ class PathParser {
     require_region(line, line.tokens[0]);
     const std::optional<long> closed = integer(line.tokens[1]);
     if (!closed || (*closed != 0 && *closed != 1))
-      fail(line.number, what + ": expected isClosed 0 or 1, got " + quoted(line.tokens[1]), "write 0 or 1");
+      fail(line.number, what + ": expected isClosed 0 or 1, got " + backticked(line.tokens[1]), "write 0 or 1");
     const std::optional<long> type = integer(line.tokens[2]);
     if (!type || *type < 0 || *type > kHolePathType)
-      fail(line.number, what + ": unknown pathType " + quoted(line.tokens[2]),
+      fail(line.number, what + ": unknown pathType " + backticked(line.tokens[2]),
            "use 0 boundary, 1 detail, 2 focal, 3 field, 4 seed, 5 streamline, 6 skeleton or 7 hole");
     const size_t coordinates = line.tokens.size() - 3;
     if (coordinates % 2 != 0)
@@ -203,9 +199,9 @@ class PathParser {
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     const std::string position = what + ", token " + std::to_string(token_index + 1);
     if (ec == std::errc::result_out_of_range || (ec == std::errc() && !std::isfinite(value)))
-      fail(line.number, position + ": " + quoted(token) + " is not a finite number", "replace it with a finite coordinate");
+      fail(line.number, position + ": " + backticked(token) + " is not a finite number", "replace it with a finite coordinate");
     if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
-      fail(line.number, position + ": " + quoted(token) + " is not a number", "coordinates must be decimal numbers");
+      fail(line.number, position + ": " + backticked(token) + " is not a number", "coordinates must be decimal numbers");
     return value;
   }
 
@@ -228,9 +224,7 @@ ArtShape parse_path_text(const std::string& text, const std::string& name) { ret
 
 ArtShape load_path_file(const std::filesystem::path& file) {
   const std::string text = io_detail::read_text_file(file, "check the path and that the file is a `.path` art file");
-  ArtShape shape = parse_path_text(text, file.string());
-  shape.source = file;
-  return shape;
+  return parse_path_text(text, file.string());
 }
 
 }  // namespace animpak

@@ -22,6 +22,7 @@ namespace animpak {
 namespace {
 
 namespace fs = std::filesystem;
+using io_detail::backticked;
 using io_detail::format_number;
 using io_detail::JsonField;
 using nlohmann::json;
@@ -30,8 +31,6 @@ using nlohmann::json;
 /// far below anything visible, above the rounding of coordinates typed with a few decimals.
 constexpr double kLoopTolerance = 1e-6;
 constexpr int kMaxCount = 100000;
-
-std::string backticked(const std::string& word) { return "`" + word + "`"; }
 
 fs::path resolve_art(const JsonField& field, const fs::path& base_dir) {
   const std::string text = field.non_empty_string();
@@ -114,7 +113,7 @@ std::string unknown_name_problem(const std::string& name, const std::vector<std:
   if (!near.empty()) return problem + "; did you mean " + backticked(near) + "?";
   problem += "; expected one of";
   // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on `" " + std::string` once inlined.
-  for (std::string_view k : known) problem.append(" ").append(backticked(std::string(k)));
+  for (std::string_view k : known) problem.append(" ").append(backticked(k));
   return problem;
 }
 

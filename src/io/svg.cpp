@@ -193,9 +193,8 @@ std::optional<Rgba> gradient_color(State& state, xmlNode* node) {
     if (linear) GradientTraversal::load_expected_element(node, gradient, tag::element::linearGradient());
     else GradientTraversal::load_expected_element(node, gradient, tag::element::radialGradient());
     if (auto c = gradient.average()) return c;
-    std::string href = attribute(node, "href", "http://www.w3.org/1999/xlink");
-    if (href.empty()) href = attribute(node, "href");
-    node = href.size() > 1 && href[0] == '#' ? state.doc.find(href.substr(1)) : nullptr;
+    const std::string ref = href(node);
+    node = ref.size() > 1 && ref[0] == '#' ? state.doc.find(ref.substr(1)) : nullptr;
   }
   return std::nullopt;
 }
@@ -261,8 +260,7 @@ void ShapeContext::on_exit_element() {
 
 void UseContext::on_exit_element() {
   if (!rendered()) return;
-  std::string href = attribute(node_, "href", "http://www.w3.org/1999/xlink");
-  if (href.empty()) href = attribute(node_, "href");
+  const std::string href = svg::href(node_);
   if (href.empty()) return;
   if (href[0] != '#') {
     state_->warn(what() + ": <use> of \"" + href.substr(0, 80) +

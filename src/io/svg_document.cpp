@@ -57,6 +57,11 @@ std::string attribute(const xmlNode* node, const char* name, const char* ns_href
   return s;
 }
 
+std::string href(const xmlNode* node) {
+  std::string value = attribute(node, "href", "http://www.w3.org/1999/xlink");
+  return value.empty() ? attribute(node, "href") : value;
+}
+
 std::string describe(const xmlNode* node) {
   const std::string id = attribute(node, "id");
   if (!id.empty()) return id;

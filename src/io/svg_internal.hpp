@@ -82,5 +82,7 @@ std::string message(const std::string& file, const std::string& what, const std:
 std::string describe(const xmlNode* node);
 /// An attribute's value, or empty (libxml2's strings freed here).
 std::string attribute(const xmlNode* node, const char* name, const char* ns_href = nullptr);
+/// The element's reference: xlink:href (SVG 1.1), else plain href (SVG 2); empty when neither is set.
+std::string href(const xmlNode* node);
 
 }  // namespace animpak::svg
