@@ -43,6 +43,21 @@ inline double signed_area(const std::vector<Vec2>& ring) {
   return 0.5 * a;
 }
 
+/// Index of the first of `points` nearest to p (0 for an empty list).
+inline int nearest_index(const std::vector<Vec2>& points, Vec2 p) {
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(points.size()); ++i)
+    if (norm(points[i] - p) < norm(points[best] - p)) best = i;
+  return best;
+}
+
+/// Length of a closed polygon's edges, summed from the first edge to the closing one.
+inline double perimeter(const std::vector<Vec2>& ring) {
+  double length = 0.0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) length += norm(ring[(i + 1) % n] - ring[i]);
+  return length;
+}
+
 /// Even–odd (ray crossing) test; a vertex on the ray counts once by the half-open rule.
 inline bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
   bool inside = false;

@@ -17,7 +17,6 @@ struct Container {
   std::vector<Vec2> outline;
   std::vector<std::vector<Vec2>> holes;
   ArtFrame frame;  ///< container art coordinates → unit square (targets, field centres use it)
-  ArtShape art;    ///< the container's own paths in unit coordinates, for drawing
 
   /// Inside the outline and outside every hole.
   bool contains(Vec2 p) const;

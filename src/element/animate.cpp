@@ -188,13 +188,6 @@ class SwimBend {
   std::vector<double> arc_;
 };
 
-int nearest_vertex(const std::vector<Vec2>& vertices, Vec2 p) {
-  int best = 0;
-  for (int v = 1; v < static_cast<int>(vertices.size()); ++v)
-    if (norm(vertices[v] - p) < norm(vertices[best] - p)) best = v;
-  return best;
-}
-
 void validate_preset(const AnimationSpec& spec) {
   const bool rotate = spec.preset == AnimationPreset::rotate, pulse = spec.preset == AnimationPreset::pulse,
              swim = spec.preset == AnimationPreset::swim;
@@ -228,7 +221,7 @@ std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outli
     const HandleSpec& hs = spec.handles[h];
     const std::string where = "animation.handles[" + std::to_string(h) + "]";
     if (hs.keys.empty()) throw InputError(where + ".keys: a handle needs at least one key position");
-    const int v = nearest_vertex(mesh.vertices, frame.to_unit(hs.point));
+    const int v = nearest_index(mesh.vertices, frame.to_unit(hs.point));
     const auto same = std::find(handle_vertex.begin(), handle_vertex.end(), v);
     if (same != handle_vertex.end())
       throw InputError(where + " and animation.handles[" + std::to_string(same - handle_vertex.begin()) +
@@ -254,7 +247,7 @@ std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outli
   if (spec.preset == AnimationPreset::swim) {
     swim.emplace(mesh.vertices, pivot, spec);
     for (Vec2 p : swim->axis_points()) {
-      const int v = nearest_vertex(mesh.vertices, p);
+      const int v = nearest_index(mesh.vertices, p);
       if (std::find(arap_vertices.begin(), arap_vertices.end(), v) != arap_vertices.end()) continue;
       arap_vertices.push_back(v);
       swim_vertices.push_back(v);

@@ -27,14 +27,6 @@ std::string source_name(const ArtShape& art) {
   return art.source.empty() ? std::string("<art>") : art.source.string();
 }
 
-Box art_box(const ArtShape& art) {
-  Box box;
-  for (const ArtPath& path : art.paths)
-    for (const Polyline& line : path.polylines)
-      for (Vec2 p : line.points) box.add(p);
-  return box;
-}
-
 cl::IntPoint to_int(Vec2 p) {
   return {static_cast<cl::cInt>(std::llround(p.x * clipper_scale)),
           static_cast<cl::cInt>(std::llround(p.y * clipper_scale))};
@@ -136,7 +128,7 @@ bool ring_is_simple(const cl::Path& ring) {
 }  // namespace
 
 NormalizedArt normalize_art(const ArtShape& art) {
-  const Box box = art_box(art);
+  const Box box = art.bounds();
   for (const ArtPath& path : art.paths)
     for (const Polyline& line : path.polylines)
       for (Vec2 p : line.points)

@@ -44,16 +44,15 @@ double uniform(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-std::vector<Vec2> resample(const std::vector<Vec2>& ring, int count) {
+// `count` points evenly spaced by arc length around `ring`, whose perimeter is `length`.
+std::vector<Vec2> resample(const std::vector<Vec2>& ring, double length, int count) {
   const std::size_t n = ring.size();
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < n; ++i) perimeter += norm(ring[(i + 1) % n] - ring[i]);
   std::vector<Vec2> out;
   out.reserve(static_cast<std::size_t>(count));
   std::size_t seg = 0;
   double seg_start = 0.0;  // arc length at ring[seg]
   for (int k = 0; k < count; ++k) {
-    const double s = perimeter * k / count;
+    const double s = length * k / count;
     while (seg + 1 < n && seg_start + norm(ring[seg + 1] - ring[seg]) <= s) {
       seg_start += norm(ring[seg + 1] - ring[seg]);
       ++seg;
@@ -110,14 +109,8 @@ std::vector<Vec2> interior_samples(const std::vector<Vec2>& boundary, double spa
     }
   }
   std::vector<Vec2> kept;
-  const std::size_t b = boundary.size();
-  for (Vec2 p : points) {
-    if (!ring_contains(boundary, p)) continue;
-    double d = 1e300;
-    for (std::size_t i = 0; i < b; ++i)
-      d = std::min(d, segment_distance(p, boundary[i], boundary[(i + 1) % b]));
-    if (d > boundary_clearance * spacing) kept.push_back(p);
-  }
+  for (Vec2 p : points)
+    if (ring_contains(boundary, p) && ring_distance(boundary, p) > boundary_clearance * spacing) kept.push_back(p);
   return kept;
 }
 
@@ -227,16 +220,15 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
     throw InputError(name + ": the element's outline has fewer than three points or no area");
   if (!(params.boundary_spacing > 0.0) || !(params.interior_spacing > 0.0))
     throw InputError(name + ": boundary_spacing and interior_spacing must be positive");
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < n; ++i) perimeter += norm(outline.ring[(i + 1) % n] - outline.ring[i]);
+  const double length = perimeter(outline.ring);
   // §3.1 "evenly-spaced samples around the outer boundary": the count is rounded so the spacing along
   // the outline is exactly perimeter / count.
-  int count = std::max(3, static_cast<int>(std::lround(perimeter / params.boundary_spacing)));
+  int count = std::max(3, static_cast<int>(std::lround(length / params.boundary_spacing)));
   // A coarse sampling can cut across a narrow neck and make the boundary polygon cross itself; refine
   // until it is simple (a few rounds at most for any outline offset by Δs).
   for (int attempt = 0; attempt < 12; ++attempt) {
     SliceMesh mesh;
-    mesh.vertices = resample(outline.ring, count);
+    mesh.vertices = resample(outline.ring, length, count);
     mesh.boundary_count = count;
     const std::vector<Vec2> interior = interior_samples(mesh.vertices, params.interior_spacing, seed);
     mesh.vertices.insert(mesh.vertices.end(), interior.begin(), interior.end());
@@ -244,7 +236,7 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
     count = count + std::max(1, count / 4);
   }
   throw InputError(name + ": could not triangulate the element's outline (" + std::to_string(n) +
-                   " points, perimeter " + std::to_string(perimeter) + "); it may be degenerate");
+                   " points, perimeter " + std::to_string(length) + "); it may be degenerate");
 }
 
 }  // namespace animpak

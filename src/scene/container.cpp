@@ -102,10 +102,6 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
       throw InputError(where(art, hole_indices[i]) + ": the hole is not inside the container outline");
     c.holes.push_back(std::move(ring));
   }
-  c.art = art;
-  for (ArtPath& p : c.art.paths)
-    for (Polyline& l : p.polylines)
-      for (Vec2& q : l.points) q = c.frame.to_unit(q);
   return c;
 }
 

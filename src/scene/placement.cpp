@@ -70,9 +70,7 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
     const SpacetimeElement& e = library[p.library];
     p.pivot = rest_centroid(e);
     // The anchor is the slice vertex closest to the centroid (paper §4).
-    double best = 1e300;
-    for (int v = 0; v < e.vertices_per_slice(); ++v)
-      if (const double d = norm(e.slice.vertices[v] - p.pivot); d < best) best = d, p.anchor = v;
+    p.anchor = nearest_index(e.slice.vertices, p.pivot);
     for (int s = 0; s < e.slice_count; ++s) {
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
       const TargetSample target = sample_targets(g.targets, container, t);

@@ -38,10 +38,9 @@ inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Par
   }
   // Boundary samples lie on the outline, evenly spaced by arc length: walk the outline and record the
   // arc length at which each sample is met.
-  double perimeter = 0.0;
   const auto& ring = outline.ring;
-  for (std::size_t i = 0; i < ring.size(); ++i) perimeter += norm(ring[(i + 1) % ring.size()] - ring[i]);
-  const double step = perimeter / b;
+  const double length = perimeter(ring);
+  const double step = length / b;
   CHECK(step == Approx(params.boundary_spacing).epsilon(0.5));
   double arc = 0.0;
   int next = 0;
@@ -54,7 +53,7 @@ inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Par
       if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 ||
           along > len + 1e-9)
         break;
-      CHECK(std::fabs(arc + along - next * step) <= 1e-9 * perimeter);
+      CHECK(std::fabs(arc + along - next * step) <= 1e-9 * length);
       ++next;
     }
     arc += len;

@@ -38,4 +38,11 @@ inline std::vector<int> grid_border(int nx, int ny) {
   return border;
 }
 
+/// Largest distance between corresponding points of two equally long lists.
+inline double max_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double d = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, norm(a[i] - b[i]));
+  return d;
+}
+
 }  // namespace animpak::testing

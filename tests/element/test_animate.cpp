@@ -8,6 +8,7 @@
 
 using namespace animpak;
 using animpak::testing::grid_slice;
+using animpak::testing::max_distance;
 
 namespace {
 
@@ -26,12 +27,6 @@ Vec2 mean(const std::vector<Vec2>& p) {
   Vec2 m;
   for (Vec2 q : p) m = m + q;
   return m * (1.0 / static_cast<double>(p.size()));
-}
-
-double max_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, norm(a[i] - b[i]));
-  return d;
 }
 
 }  // namespace

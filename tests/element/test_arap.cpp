@@ -9,18 +9,13 @@
 using namespace animpak;
 using animpak::testing::grid_border;
 using animpak::testing::grid_slice;
+using animpak::testing::max_distance;
 
 namespace {
 
 Vec2 rigid(Vec2 p, double angle, Vec2 shift) {
   const double c = std::cos(angle), s = std::sin(angle);
   return Vec2{c * p.x - s * p.y, s * p.x + c * p.y} + shift;
-}
-
-double max_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, norm(a[i] - b[i]));
-  return d;
 }
 
 }  // namespace

@@ -30,11 +30,7 @@ void check_outline(const NormalizedArt& art, const Outline& outline, double offs
 TEST_CASE("normalize_art fits the longer side to 1 and centres the art", "[element][outline]") {
   const NormalizedArt n = normalize_art(filled_art({rect(10, 20, 30, 30)}, "r.svg"));
   CHECK(n.frame.scale == Approx(1.0 / 20));
-  const Box box = [&] {
-    Box b;
-    for (Vec2 p : n.art.paths[0].polylines[0].points) b.add(p);
-    return b;
-  }();
+  const Box box = n.art.bounds();  // one path, one polyline
   CHECK(box.min.x == Approx(0.0).margin(1e-15));
   CHECK(box.max.x == Approx(1.0));
   CHECK(box.min.y == Approx(0.25));

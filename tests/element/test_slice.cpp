@@ -16,9 +16,7 @@ SliceMesh boundary_only(const std::vector<Vec2>& ring, double spacing_scale = 1.
   params.interior_spacing = 10.0;  // larger than the shape: no interior sample survives
   Outline outline;
   outline.ring = ring;
-  double perimeter = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) perimeter += norm(ring[(i + 1) % ring.size()] - ring[i]);
-  params.boundary_spacing = perimeter / ring.size() * spacing_scale;
+  params.boundary_spacing = perimeter(ring) / ring.size() * spacing_scale;
   return build_slice(outline, params, 1);
 }
 

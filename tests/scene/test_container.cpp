@@ -30,8 +30,7 @@ ArtShape frame_with_hole() {
 TEST_CASE("make_container: normalizes the longer side to 1, centred, and finds type-7 holes") {
   const Container c = make_container(frame_with_hole(), {});
   REQUIRE(c.holes.size() == 1);
-  Box box;
-  for (Vec2 p : c.outline) box.add(p);
+  const Box box = c.bounds();
   CHECK(box.width() == Approx(1.0));
   CHECK(box.height() == Approx(0.5));
   CHECK(box.min.y == Approx(0.25));
