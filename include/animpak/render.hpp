@@ -69,6 +69,9 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
 /// square root of the boundary's area ratio): stroke widths follow it.
 double element_scale(const World& world, int element, const std::vector<Vec2>& positions);
 
+/// Pixel width of a picture `height` pixels tall over `box`, keeping its aspect (at least 1).
+int raster_width(const Box& box, int height);
+
 /// The frame times of a `count`-frame animation: i / count when looping (frame `count` would repeat
 /// frame 0), i / (count − 1) otherwise.
 std::vector<double> frame_times(int count, bool loop);

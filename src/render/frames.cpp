@@ -36,10 +36,14 @@ double element_scale(const World& world, int element, const std::vector<Vec2>& p
   return std::sqrt(std::abs(signed_area(now)) / std::max(std::abs(signed_area(before)), 1e-300));
 }
 
+int raster_width(const Box& box, int height) {
+  return std::max(1, static_cast<int>(std::lround(height * box.width() / std::max(box.height(), 1e-9))));
+}
+
 Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style) {
   const Box box = world.container.bounds();
   const int height = style.size;
-  const int width = std::max(1, static_cast<int>(std::lround(style.size * box.width() / std::max(box.height(), 1e-9))));
+  const int width = raster_width(box, height);
   Picture pic(width, height, box, style.background, 0.02 * style.size);
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
     const SpacetimeElement& lib = world.library[world.elements[i].library];

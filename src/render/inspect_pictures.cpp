@@ -73,14 +73,14 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
     Box all;
     for (int s = 0; s < element.slice_count; ++s)
       for (const Vec2& p : slice_positions(element, s)) all.add(p);
+    const double span = std::max({all.width(), all.height(), 1e-9}) * 1.06;
+    const Vec2 centre = 0.5 * (all.min + all.max);
     const int panel = std::max(16, size / 2);
     Picture strip(panel * panels, panel, {{0, 0}, {double(panels), 1}}, {1, 1, 1, 1}, 0.0);
     for (int i = 0; i < panels; ++i) {
       const int s = panels == 1 ? 0 : static_cast<int>(std::lround(double(i) * (element.slice_count - 1) / (panels - 1)));
       const std::vector<Vec2> pos = slice_positions(element, s);
       // Map this slice's world box into panel i of the strip's [0, panels] x [0, 1] world.
-      const double span = std::max({all.width(), all.height(), 1e-9}) * 1.06;
-      const Vec2 centre = 0.5 * (all.min + all.max);
       auto place = [&](Vec2 p) { return Vec2{i + 0.5 + (p.x - centre.x) / span, 0.5 + (p.y - centre.y) / span}; };
       std::vector<Vec2> placed(pos.size());
       std::transform(pos.begin(), pos.end(), placed.begin(), place);

@@ -22,8 +22,7 @@ void paint_opaque(Picture& pic, const World& world, const SimState& state, doubl
 }
 
 std::pair<int, int> raster_size(const Box& box) {
-  const int h = coverage_size;
-  return {std::max(1, static_cast<int>(std::lround(h * box.width() / std::max(box.height(), 1e-9)))), h};
+  return {raster_width(box, coverage_size), coverage_size};
 }
 
 // Coverage on a raster: the container (outline minus holes, even–odd) against every element's art;
