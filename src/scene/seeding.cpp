@@ -28,7 +28,7 @@ std::vector<Vec2> poisson_disk(const Container& container, double min_distance, 
         const int s = grid[static_cast<std::size_t>(y) * n + x];
         if (s >= 0 && norm(samples[s] - p) < min_distance) return false;
       }
-    return container.contains(p) && container.distance_to_boundary(p) >= margin;
+    return container.contains(p) && !(container.distance_to_boundary(p) < margin);
   };
   auto add = [&](Vec2 p) {
     const auto [cx, cy] = cell_of(p);
