@@ -1,18 +1,24 @@
-/* Boundary force, paper Eq. 4 (src/solver/reference/boundary.cpp): k_bdr (p_b − x) in x, y for a
- * vertex outside the container (even-odd over every ring, so inside a hole is outside). */
+/* Boundary force, paper Eq. 4, and the containment projection (src/solver/reference/boundary.cpp):
+ * k_bdr (p_b − x) in x, y for a vertex outside the container (even-odd over every ring, so inside a
+ * hole is outside); a vertex still outside after a step moves onto the boundary. */
 
-/** Eq. 4 on (px, py); zero inside the container or without one. */
-void boundary_force(const ForceParams p, int segments, float px, float py, __global const float* ax,
-                    __global const float* ay, __global const float* bx, __global const float* by, float* fx,
-                    float* fy) {
+/** The container query (reference container_query): returns whether (px, py) is inside; when it is not,
+ * or when `nearest`, also the squared distance to and the nearest point on the boundary (the first
+ * segment reaching the minimum wins). Without a container every point is inside, at +inf. */
+bool container_query(int segments, float px, float py, bool nearest, __global const float* ax,
+                     __global const float* ay, __global const float* bx, __global const float* by,
+                     float* distance2, float* qx, float* qy) {
+  *distance2 = INFINITY;
+  *qx = 0.0f;
+  *qy = 0.0f;
+  if (segments == 0) return true;
   bool inside = false;
   for (int i = 0; i < segments; ++i)
     if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;
-  if (inside || segments == 0) return;
+  *qx = px;
+  *qy = py;
+  if (inside && !nearest) return true;
 
-  /* Closest point over all segments; the first segment reaching the minimum wins. */
-  float best2 = INFINITY;
-  float qx = px, qy = py;
   for (int i = 0; i < segments; ++i) {
     const float dx = bx[i] - ax[i], dy = by[i] - ay[i];
     const float len2 = dx * dx + dy * dy;
@@ -23,13 +29,50 @@ void boundary_force(const ForceParams p, int segments, float px, float py, __glo
     const float cx = ax[i] + dx * s, cy = ay[i] + dy * s;
     const float ex = px - cx, ey = py - cy;
     const float d2 = ex * ex + ey * ey;
-    if (d2 < best2) {
-      best2 = d2;
-      qx = cx;
-      qy = cy;
+    if (d2 < *distance2) {
+      *distance2 = d2;
+      *qx = cx;
+      *qy = cy;
     }
   }
-  const float k = p.k_boundary;
-  *fx = k * (qx - px);
-  *fy = k * (qy - py);
+  return inside;
+}
+
+/** The container's force from the query of (px, py) (reference boundary_force): Eq. 4 outside; inside,
+ * for a boundary vertex, the wall's Eq. 1-shaped repulsion from its nearest point. */
+void boundary_force(const ForceParams p, bool inside, float distance2, float qx, float qy, float px, float py,
+                    bool boundary, float* fx, float* fy) {
+  if (!inside) {
+    *fx = p.k_boundary * (qx - px);
+    *fy = p.k_boundary * (qy - py);
+    return;
+  }
+  if (!boundary || !(distance2 > 0.0f) || !(distance2 < INFINITY)) return;
+  const float ux = px - qx, uy = py - qy;
+  const float inv_len = 1.0f / sqrt(distance2);
+  const float w = inv_len * (1.0f / (p.repulsion_epsilon + distance2));
+  *fx = p.k_wall * (ux * w);
+  *fy = p.k_wall * (uy * w);
+}
+
+/** Containment: a vertex outside the container moves past its nearest boundary point by
+ * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
+__kernel void containment(const WorldInfo world,
+                          __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
+                          __global const float* seg_bx, __global const float* seg_by, /* input */
+                          __global float* x, __global float* y,    /* input/output: positions */
+                          __global float* vx, __global float* vy) { /* input/output: velocities */
+  const int v = get_global_id(0);
+  if (v >= world.vertices) return;
+  const float px = x[v], py = y[v];
+  float d2, qx, qy;
+  if (container_query(world.segments, px, py, false, seg_ax, seg_ay, seg_bx, seg_by, &d2, &qx, &qy)) return;
+  const float dx = qx - px, dy = qy - py;
+  const float e2 = dx * dx + dy * dy;
+  if (!(e2 > 0.0f)) return;
+  const float w = AP_CONTAINMENT_MARGIN / sqrt(e2);
+  x[v] = qx + dx * w;
+  y[v] = qy + dy * w;
+  vx[v] = 0.0f;
+  vy[v] = 0.0f;
 }

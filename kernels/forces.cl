@@ -1,6 +1,6 @@
 /* Total force, paper Eq. 7, gathered per vertex (src/solver/reference/step_forces.cpp): the overlap
- * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), then every
- * other force, summed left to right in this order:
+ * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), the container
+ * query, then every other force, summed left to right in this order:
  *   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
  * Zero forces are still added, so a −0 sum turns into +0 exactly as in the reference. */
 
@@ -23,23 +23,28 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
                           __global const float* rpl_x_in, __global const float* rpl_y_in, /* input: Eq. 1 */
                           __global const float* rpl_t_in,     /* input: Eq. 1 */
                           __global const float* rpl_closest,  /* input: repulsion kernel, boundary vertices */
-                          __global const uchar* rpl_inside,   /* input: repulsion kernel, boundary vertices */
+                          __global const uchar* rpl_contact,  /* input: repulsion kernel, boundary vertices */
+                          __global const float* depth_x, __global const float* depth_y, /* input: repulsion kernel */
                           __global const float* target_x, __global const float* target_y, __global const float* target_t, /* input */
                           __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
                           __global const float* seg_bx, __global const float* seg_by, /* input */
                           __global const float* slice_cx, __global const float* slice_cy, /* input: slice centroids */
                           __global float* fx, __global float* fy, __global float* ft, /* output: Eq. 7 per vertex */
-                          __global float* closest,            /* output: distance to the nearest other element */
-                          __global uchar* inside_flag,        /* output: 1 when inside another element */
+                          __global float* closest,            /* output: distance to the nearest element or wall */
+                          __global uchar* contact_out,        /* output: AP_CONTACT_* bits per vertex */
                           __global float* breakdown) {        /* output when world.breakdown: every force apart */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v], pt = t[v];
   const bool boundary = (flags[v] & AP_VERTEX_BOUNDARY) != 0;
 
-  const bool inside = boundary && rpl_inside[v] != 0;
+  const uchar overlap_bits = boundary ? rpl_contact[v] : 0;
+  const bool overlapping = overlap_bits != 0, inside = (overlap_bits & AP_CONTACT_INSIDE) != 0;
   const float rpl_x = boundary ? rpl_x_in[v] : 0.0f, rpl_y = boundary ? rpl_y_in[v] : 0.0f,
               rpl_t = boundary ? rpl_t_in[v] : 0.0f, dist = boundary ? rpl_closest[v] : INFINITY;
+  float wall2, wall_qx, wall_qy;
+  const bool in_container = container_query(world.segments, px, py, boundary, seg_ax, seg_ay, seg_bx, seg_by, &wall2,
+                                            &wall_qx, &wall_qy);
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
   float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;
@@ -47,9 +52,11 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
     target_force(p, target[v], px, py, pt, target_x, target_y, target_t, &tgt_x, &tgt_y, &tgt_t);
   float bdr_x = 0.0f, bdr_y = 0.0f;
   const float bdr_t = 0.0f;
-  boundary_force(p, world.segments, px, py, seg_ax, seg_ay, seg_bx, seg_by, &bdr_x, &bdr_y);
+  boundary_force(p, in_container, wall2, wall_qx, wall_qy, px, py, boundary, &bdr_x, &bdr_y);
   float ovr_x = 0.0f, ovr_y = 0.0f, ovr_t = 0.0f;
-  if (inside) overlap_force(p, v, tri_begin, tri_list, tri_a, tri_b, tri_c, x, y, t, &ovr_x, &ovr_y, &ovr_t);
+  if (overlapping)
+    overlap_force(p, v, inside, depth_x[v], depth_y[v], tri_begin, tri_list, tri_a, tri_b, tri_c, x, y, t, &ovr_x,
+                  &ovr_y, &ovr_t);
   const int s = slice[v];
   float tor_x = 0.0f, tor_y = 0.0f;
   const float tor_t = 0.0f;
@@ -60,8 +67,16 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   fx[v] = rpl_x + edg_x + tgt_x + bdr_x + ovr_x + tor_x + tmp_x;
   fy[v] = rpl_y + edg_y + tgt_y + bdr_y + ovr_y + tor_y + tmp_y;
   ft[v] = rpl_t + edg_t + tgt_t + bdr_t + ovr_t + tor_t + tmp_t;
-  closest[v] = dist;
-  inside_flag[v] = inside ? 1 : 0;
+  /* The wall is a neighbour too (§5.3's slice gap). */
+  uchar bits = in_container ? 0 : AP_CONTACT_OUTSIDE;
+  float gap = dist;
+  if (boundary) {
+    const float wall_gap = in_container ? sqrt(wall2) : 0.0f;
+    gap = wall_gap < dist ? wall_gap : dist;
+    if (wall_gap < p.stop_gap) bits |= AP_CONTACT_WALL;
+  }
+  closest[v] = gap;
+  contact_out[v] = bits | overlap_bits;
   if (world.breakdown == 0) return;
   const int n = world.vertices;
   const float parts[AP_FORCE_COMPONENTS][3] = {{rpl_x, rpl_y, rpl_t}, {edg_x, edg_y, edg_t}, {tgt_x, tgt_y, tgt_t},

@@ -1,31 +1,58 @@
-/* Growth of §5.3 (src/solver/reference/growth.cpp): slices free of overlaps grow, and the springs
- * touching a grown slice take their rest length from the scaled reference copy. */
+/* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
+ * (shrink while overlapping or outside, pause at the wall, grow otherwise), then every slice is limited
+ * to growth_ratio × the smallest proposal of its element, and the springs touching a changed slice
+ * take their rest length from the scaled reference copy. */
 
-/** Grows slice s by growth_step up to max_growth unless one of its vertices is inside another element. */
-__kernel void grow_slices(const WorldInfo world, const ForceParams p,
-                          __global const int* slice_begin, /* input: slices + 1 */
-                          __global const uchar* inside,    /* input: per vertex, from step_forces */
-                          __global float* growth,          /* input/output: g per slice */
-                          __global uchar* grew) {          /* output: 1 when slice s grew */
+/** Slice s's proposed g; one work-item per slice. */
+__kernel void propose_growth(const WorldInfo world, const ForceParams p,
+                             __global const int* slice_begin, /* input: slices + 1 */
+                             __global const uchar* contact,   /* input: AP_CONTACT_* per vertex, from step_forces */
+                             __global const float* growth,    /* input: g per slice */
+                             __global float* proposed) {      /* output: proposed g per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
-  bool blocked = false;
-  for (int v = slice_begin[s]; v < slice_begin[s + 1] && !blocked; ++v) blocked = inside[v] != 0;
-  grew[s] = 0;
-  const float cap = p.max_growth;
-  if (blocked || growth[s] >= cap) return;
-  const float g = growth[s] + p.growth_step;
-  growth[s] = g < cap ? g : cap;
-  grew[s] = 1;
+  uchar bits = 0;
+  for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) bits |= contact[v];
+  const float g = growth[s];
+  float next = g;
+  if ((bits & (AP_CONTACT_OVERLAP | AP_CONTACT_OUTSIDE)) != 0) {
+    next = g - p.shrink_step;
+    if (next < 1.0f) next = 1.0f;
+  } else if ((bits & AP_CONTACT_WALL) == 0 && g < p.max_growth) {
+    next = g + p.growth_step;
+    if (next > p.max_growth) next = p.max_growth;
+  }
+  proposed[s] = next;
 }
 
-/** Rest length of every CSR slot of vertex v whose spring has an end on a grown slice
+/** Slice s's new g: its proposal, limited to growth_ratio × the smallest proposal of its element (a min
+ * over the element's slices in order); `changed` says whether it grew or shrank. */
+__kernel void grow_slices(const WorldInfo world, const ForceParams p,
+                          __global const int* slice_element,       /* input: per slice */
+                          __global const int* element_slice_begin, /* input: elements + 1 */
+                          __global const float* proposed,          /* input: from propose_growth */
+                          __global float* growth,                  /* input/output: g per slice */
+                          __global uchar* changed) {               /* output: 0, AP_GROWTH_GREW or AP_GROWTH_SHRANK */
+  const int s = get_global_id(0);
+  if (s >= world.slices) return;
+  const int e = slice_element[s];
+  const int first = element_slice_begin[e], end = element_slice_begin[e + 1];
+  float smallest = proposed[first];
+  for (int k = first + 1; k < end; ++k) smallest = proposed[k] < smallest ? proposed[k] : smallest;
+  const float limit = p.growth_ratio * smallest;
+  const float g = proposed[s] < limit ? proposed[s] : limit;
+  const float old = growth[s];
+  changed[s] = g > old ? AP_GROWTH_GREW : (g < old ? AP_GROWTH_SHRANK : 0);
+  growth[s] = g;
+}
+
+/** Rest length of every CSR slot of vertex v whose spring has an end on a changed slice
  * (solver.hpp: reference_rest_length, each end's slice scaled by its g about its reference centroid). */
 __kernel void update_rest_lengths(const WorldInfo world,
                                   __global const int* slice,          /* input: per vertex */
                                   __global const int* spring_begin,   /* input: vertices + 1 */
                                   __global const int* spring_other,   /* input: per slot */
-                                  __global const uchar* grew,         /* input: per slice */
+                                  __global const uchar* changed,      /* input: per slice */
                                   __global const float* growth,       /* input: g per slice */
                                   __global const float* ref_x, __global const float* ref_y,
                                   __global const float* ref_t,        /* input: reference copy per vertex */
@@ -38,7 +65,7 @@ __kernel void update_rest_lengths(const WorldInfo world,
   for (int k = spring_begin[v]; k < spring_begin[v + 1]; ++k) {
     const int w = spring_other[k];
     const int sw = slice[w];
-    if (!(grew[sv] || grew[sw])) continue;
+    if (!(changed[sv] || changed[sw])) continue;
     const float xv = slice_ref_cx[sv] + growth[sv] * (ref_x[v] - slice_ref_cx[sv]);
     const float yv = slice_ref_cy[sv] + growth[sv] * (ref_y[v] - slice_ref_cy[sv]);
     const float xw = slice_ref_cx[sw] + growth[sw] * (ref_x[w] - slice_ref_cx[sw]);

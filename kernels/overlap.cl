@@ -1,4 +1,6 @@
-/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp). */
+/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex against
+ * every other element's boundary polygon interpolated at its t, at any depth, with its boundary edge
+ * tested for crossings on the same walk; the force adds a pull towards the other element's outline. */
 
 /** Half-open ray-crossing step of the even-odd test (boundary.cpp: ray_crosses_segment). */
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {
@@ -7,72 +9,117 @@ bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float
   return px < xi;
 }
 
-/** Even-odd test of (px, py) against element e's boundary polygon interpolated at t between the first
- * pair of consecutive slices whose times bracket t; a slice's time is its first vertex's t. */
-bool inside_element_at(int e, float px, float py, float pt, __global const int* element_slice_begin,
-                       __global const int* slice_begin, __global const int* slice_boundary,
-                       __global const float* x, __global const float* y, __global const float* t) {
-  for (int s = element_slice_begin[e]; s + 1 < element_slice_begin[e + 1]; ++s) {
+/* std::min / std::max spelled out, so NaN compares exactly as in the reference. */
+float ap_min(float a, float b) { return b < a ? b : a; }
+float ap_max(float a, float b) { return a < b ? b : a; }
+
+float overlap_orient(float ax, float ay, float bx, float by, float cx, float cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+bool overlap_opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
+
+/** Box of every slice's boundary polygon; one work-item per slice. */
+__kernel void slice_boxes(const WorldInfo world,
+                          __global const int* slice_begin,    /* input: slices + 1 */
+                          __global const int* slice_boundary, /* input: boundary vertices per slice */
+                          __global const float* x, __global const float* y, /* input: positions */
+                          __global float* box_x0, __global float* box_y0,   /* output: per slice */
+                          __global float* box_x1, __global float* box_y1) { /* output: per slice */
+  const int s = get_global_id(0);
+  if (s >= world.slices) return;
+  const int lo = slice_begin[s], count = slice_boundary[s];
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+  if (count > 0) {
+    x0 = x[lo], x1 = x0, y0 = y[lo], y1 = y0;
+    for (int v = lo + 1; v < lo + count; ++v) {
+      x0 = x[v] < x0 ? x[v] : x0;
+      x1 = x[v] > x1 ? x[v] : x1;
+      y0 = y[v] < y0 ? y[v] : y0;
+      y1 = y[v] > y1 ? y[v] : y1;
+    }
+  }
+  box_x0[s] = x0, box_y0[s] = y0, box_x1[s] = x1, box_y1[s] = y1;
+}
+
+/** The overlap test of boundary vertex v (reference overlap_test): returns AP_CONTACT_OVERLAP, plus
+ * AP_CONTACT_INSIDE with the closest outline point (*qx, *qy) when v lies inside another element. */
+uchar overlap_test(int v, int elements, __global const int* element, __global const int* slice,
+                   __global const int* element_slice_begin, __global const int* slice_begin,
+                   __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
+                   __global const float* box_x1, __global const float* box_y1, __global const float* x,
+                   __global const float* y, __global const float* t, float* qx, float* qy) {
+  const int own = element[v], own_slice = slice[v];
+  const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
+  const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
+  const float px = x[v], py = y[v], pt = t[v];
+  const float nx = x[next], ny = y[next];
+  const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
+  const int own_index = own_slice - element_slice_begin[own];
+  bool overlap = false, found_inside = false;
+  float best2 = 0.0f;
+  *qx = 0.0f;
+  *qy = 0.0f;
+  for (int e = 0; e < elements; ++e) {
+    if (e == own) continue;
+    const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
+    if (count < 2) continue;
+    int k = own_index < count - 2 ? own_index : count - 2;
+    while (k > 0 && pt < t[slice_begin[first + k]]) --k;
+    while (k < count - 2 && pt > t[slice_begin[first + k + 1]]) ++k;
+    const int s = first + k;
     const float t0 = t[slice_begin[s]], t1 = t[slice_begin[s + 1]];
-    /* std::min / std::max spelled out, so NaN compares exactly as in the reference. */
-    const float lo_t = t1 < t0 ? t1 : t0, hi_t = t0 < t1 ? t1 : t0;
-    if (!(lo_t <= pt && pt <= hi_t)) continue;
+    if (!(ap_min(t0, t1) <= pt && pt <= ap_max(t0, t1))) continue;
+    const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
+    const float by0 = ap_min(box_y0[s], box_y0[s + 1]), by1 = ap_max(box_y1[s], box_y1[s + 1]);
+    if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) continue;
+
     const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
     const int lo = slice_begin[s], hi = slice_begin[s + 1];
-    const int count = slice_boundary[s];
-    bool inside = false;
-    for (int k = 0; k < count; ++k) {
-      const int j = k + 1 == count ? 0 : k + 1;
-      const float ax = x[lo + k] + (x[hi + k] - x[lo + k]) * w;
-      const float ay = y[lo + k] + (y[hi + k] - y[lo + k]) * w;
+    const int edges = slice_boundary[s];
+    bool inside = false, crosses = false;
+    float near2 = INFINITY, cqx = px, cqy = py;
+    for (int i = 0; i < edges; ++i) {
+      const int j = i + 1 == edges ? 0 : i + 1;
+      const float ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
+      const float ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
       const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
       const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
+      if (overlap_opposite(overlap_orient(ax, ay, bx, by, px, py), overlap_orient(ax, ay, bx, by, nx, ny)) &&
+          overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by)))
+        crosses = true;
+      const float dx = bx - ax, dy = by - ay;
+      const float len2 = dx * dx + dy * dy;
+      float f = 0.0f;
+      if (len2 > 0.0f) f = ((px - ax) * dx + (py - ay) * dy) / len2;
+      if (f < 0.0f) f = 0.0f;
+      if (f > 1.0f) f = 1.0f;
+      const float cx = ax + dx * f, cy = ay + dy * f;
+      const float ux = px - cx, uy = py - cy;
+      const float d2 = ux * ux + uy * uy;
+      if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
-    return inside;
-  }
-  return false;
-}
-
-/* How many distinct elements inside_other_element remembers. Only a shortcut: the answer is "inside
- * any element owning a near triangle", the same whichever repeats are skipped. */
-#define AP_TESTED_CACHE 8
-
-/** Whether boundary vertex (px, py, pt) of element `own` lies inside another element owning one of the
- * envelope triangles in the 3x3x3 block of cells around it; the block is walked row by row through
- * the grid slots' owners (grid_gather), in the reference's cell order. */
-bool inside_other_element(const GridInfo grid, int own, float px, float py, float pt,
-                          __global const int* cell_start, __global const int* slot_element,
-                          __global const int* element_slice_begin, __global const int* slice_begin,
-                          __global const int* slice_boundary, __global const float* x, __global const float* y,
-                          __global const float* t) {
-  int tested[AP_TESTED_CACHE];
-  int tested_count = 0;
-  const int qx = grid_axis_cell(px, grid.cell, grid.n);
-  const int qy = grid_axis_cell(py, grid.cell, grid.n);
-  const int qt = grid_axis_cell(pt, grid.cell, grid.n);
-  for (int dz = -1; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      const int2 range = grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1);
-      for (int k = range.x; k < range.y; ++k) {
-        const int e = slot_element[k];
-        if (e == own) continue;
-        bool seen = false;
-        for (int i = 0; i < tested_count && !seen; ++i) seen = tested[i] == e;
-        if (seen) continue;
-        if (tested_count < AP_TESTED_CACHE) tested[tested_count++] = e;
-        if (inside_element_at(e, px, py, pt, element_slice_begin, slice_begin, slice_boundary, x, y, t)) return true;
-      }
+    if (crosses) overlap = true;
+    if (inside && (!found_inside || near2 < best2)) {
+      overlap = true;
+      found_inside = true;
+      best2 = near2;
+      *qx = cqx;
+      *qy = cqy;
     }
   }
-  return false;
+  uchar bits = overlap ? AP_CONTACT_OVERLAP : 0;
+  if (found_inside) bits |= AP_CONTACT_INSIDE;
+  return bits;
 }
 
-/** Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, in list order. */
-void overlap_force(const ForceParams p, int v, __global const int* tri_begin, __global const int* tri_list,
-                   __global const int* tri_a, __global const int* tri_b, __global const int* tri_c,
-                   __global const float* x, __global const float* y, __global const float* t, float* fx, float* fy,
-                   float* ft) {
+/** Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, in list order, plus
+ * k_ovr_depth (q − x) for a vertex inside another element (reference overlap_force). */
+void overlap_force(const ForceParams p, int v, bool inside, float qx, float qy, __global const int* tri_begin,
+                   __global const int* tri_list, __global const int* tri_a, __global const int* tri_b,
+                   __global const int* tri_c, __global const float* x, __global const float* y,
+                   __global const float* t, float* fx, float* fy, float* ft) {
   const float px = x[v], py = y[v], pt = t[v];
   float sx = 0.0f, sy = 0.0f, st = 0.0f;
   for (int k = tri_begin[v]; k < tri_begin[v + 1]; ++k) {
@@ -86,7 +133,12 @@ void overlap_force(const ForceParams p, int v, __global const int* tri_begin, __
     st = st + (ct - pt);
   }
   const float k_ovr = p.k_overlap;
-  *fx = k_ovr * sx;
-  *fy = k_ovr * sy;
+  float ox = k_ovr * sx, oy = k_ovr * sy;
+  if (inside) {
+    ox = ox + p.k_overlap_depth * (qx - px);
+    oy = oy + p.k_overlap_depth * (qy - py);
+  }
+  *fx = ox;
+  *fy = oy;
   *ft = k_ovr * st;
 }

@@ -1,7 +1,7 @@
 /* Repulsion, paper Eq. 1 (src/solver/reference/repulsion.cpp): k_rpl Σ u/|u| · 1/(ε + |u|²) over the
  * exact closest points on the near envelope triangles of other elements, then the centroids of the
  * far ones, in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell),
- * and the overlap test of Eq. 3. */
+ * and the overlap test of Eq. 3 (overlap.cl). */
 
 /** One term of Eq. 1; a point exactly at x has no direction and adds nothing. */
 void repulsion_add_term(float ux, float uy, float ut, float eps, float* sx, float* sy, float* st) {
@@ -43,13 +43,14 @@ void repulsion_far_range(int2 range, int own, float px, float py, float pt, floa
 }
 
 /** Eq. 1 for each boundary vertex, with its distance to the nearest other element (+inf when nothing
- * is near) and whether it lies inside another element (then the force is zero: Eq. 3 takes over).
+ * is near) and its overlap test (a vertex that overlaps gets no Eq. 1 force: Eq. 3 takes over).
  * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
- * step_forces reads the three results back per vertex. */
-__kernel void repulsion(const GridInfo grid, const ForceParams p, const int boundary_count,
+ * step_forces reads the results back per vertex. */
+__kernel void repulsion(const GridInfo grid, const ForceParams p, const int boundary_count, const int elements,
                         __global const int* boundary_vertices,   /* input: the boundary vertices */
                         __global const float* x, __global const float* y, __global const float* t, /* input */
                         __global const int* element,             /* input: per vertex */
+                        __global const int* slice,               /* input: per vertex */
                         __global const int* cell_start,          /* input: cells + 1 */
                         __global const int* slot_element,        /* input: per grid slot (grid_gather) */
                         __global const int* slot_a, __global const int* slot_b, __global const int* slot_c,
@@ -57,16 +58,21 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global const int* element_slice_begin, /* input: elements + 1 */
                         __global const int* slice_begin,         /* input: slices + 1 */
                         __global const int* slice_boundary,      /* input: per slice */
+                        __global const float* box_x0, __global const float* box_y0, /* input: slice_boxes */
+                        __global const float* box_x1, __global const float* box_y1, /* input */
                         __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
                         __global float* closest,                 /* output: per vertex */
-                        __global uchar* inside_flag) {           /* output: per vertex */
+                        __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE bits */
+                        __global float* depth_x, __global float* depth_y) { /* output: closest outline point when inside */
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];
   const float px = x[v], py = y[v], pt = t[v];
   const int own = element[v];
-  const bool inside = inside_other_element(grid, own, px, py, pt, cell_start, slot_element, element_slice_begin,
-                                           slice_begin, slice_boundary, x, y, t);
+  float way_out_x, way_out_y;
+  const uchar bits = overlap_test(v, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
+                                  box_x0, box_y0, box_x1, box_y1, x, y, t, &way_out_x, &way_out_y);
+  const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx = 0.0f, sy = 0.0f, st = 0.0f;
   float closest2 = INFINITY;
@@ -93,9 +99,11 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
     }
   }
   const float k = p.k_repulsion;
-  rpl_x[v] = inside ? 0.0f : k * sx;
-  rpl_y[v] = inside ? 0.0f : k * sy;
-  rpl_t[v] = inside ? 0.0f : k * st;
+  rpl_x[v] = overlapping ? 0.0f : k * sx;
+  rpl_y[v] = overlapping ? 0.0f : k * sy;
+  rpl_t[v] = overlapping ? 0.0f : k * st;
   closest[v] = sqrt(closest2);
-  inside_flag[v] = inside ? 1 : 0;
+  contact[v] = bits;
+  depth_x[v] = way_out_x;
+  depth_y[v] = way_out_y;
 }

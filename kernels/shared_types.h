@@ -18,6 +18,19 @@ typedef float ap_float;
 #define AP_VERTEX_BOUNDARY 1
 #define AP_VERTEX_ANCHOR 2
 
+/* ContactBit values (solver.hpp): what the overlap and container tests found at a vertex. */
+#define AP_CONTACT_OVERLAP 1
+#define AP_CONTACT_OUTSIDE 2
+#define AP_CONTACT_WALL 4
+#define AP_CONTACT_INSIDE 8
+
+/* GrowthChange values (reference.hpp): what grow_slices did to a slice's g. */
+#define AP_GROWTH_GREW 1
+#define AP_GROWTH_SHRANK 2
+
+/* How far inside the container the containment projection puts a vertex (reference.hpp). */
+#define AP_CONTAINMENT_MARGIN 1e-5f
+
 /* SpringClass values (element.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
 #define AP_SPRING_CLASSES 5
 
@@ -39,12 +52,16 @@ typedef struct {
  * converts it (static_cast<float>, products formed in double first). */
 typedef struct {
   ap_float k_repulsion, repulsion_epsilon;
+  ap_float k_wall;                      /* wall_repulsion * k_repulsion */
   ap_float k_spring[AP_SPRING_CLASSES]; /* by SpringClass */
-  ap_float k_target, k_overlap, k_boundary, k_torsion, k_temporal;
+  ap_float k_target, k_overlap, k_overlap_depth, k_boundary, k_torsion, k_temporal;
   ap_float dt;
   ap_float velocity_cap;                /* velocity_cap * dt */
   ap_float growth_step;                 /* growth_rate * dt */
+  ap_float shrink_step;                 /* shrink_rate * dt */
+  ap_float growth_ratio;
   ap_float max_growth;
+  ap_float stop_gap;
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -26,12 +26,14 @@ struct Params {
   // §5 forces
   double k_repulsion = 8e-8;        ///< Eq. 1
   double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
+  double wall_repulsion = 10.0;     ///< the container's wall repels a boundary vertex like this many Eq. 1 terms
   double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
   double k_shear = 5000.0;          ///< Eq. 2, shear springs
   double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
   double k_time = 5.0;              ///< Eq. 2, time springs
   double k_target = 5000.0;         ///< Eq. 2, target-point springs of guided elements
   double k_overlap = 5.0;           ///< Eq. 3
+  double k_overlap_depth = 5.0;     ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
   double k_boundary = 5.0;          ///< Eq. 4
   double k_torsion = 2e-4;          ///< Eq. 5
   double k_temporal = 1.0;          ///< Eq. 6
@@ -42,6 +44,8 @@ struct Params {
 
   // §5.3 growth and stopping
   double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
+  double shrink_rate = 0.01;        ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
+  double growth_ratio = 1.3;        ///< an element's largest g is at most growth_ratio × its smallest
   double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
   double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
   int max_iterations = 100000;      ///< hard cap on steps

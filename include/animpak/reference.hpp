@@ -71,22 +71,39 @@ struct RepulsionResult {
 };
 
 /// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
-/// `near` triangles, then over centroids of `far` triangles. The force is zero when `inside` (Eq. 3
+/// `near` triangles, then over centroids of `far` triangles. The force is zero when `overlapping` (Eq. 3
 /// takes over) or v is not a boundary vertex; `closest` is computed for every boundary vertex.
 /// repulsion.cpp.
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
                                 const CollisionGrid& grid, std::int32_t v,
                                 const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
-                                bool inside);
+                                bool overlapping);
 
-/// Whether boundary vertex v lies inside another element that owns one of the `near` envelope
-/// triangles: that element's boundary polygon interpolated linearly at v's t, even–odd test in x, y.
-/// overlap.cpp.
-bool inside_other_element(const Topology& topo, const SimState& state, std::int32_t v,
-                          const std::vector<std::int32_t>& near);
+/// Per global slice, the box of its boundary polygon (x0 ≤ x ≤ x1, y0 ≤ y ≤ y1), from one snapshot of
+/// positions. overlap.cpp.
+struct SliceBoxes {
+  std::vector<float> x0, y0, x1, y1;
+};
+void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out);
 
-/// Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles. overlap.cpp.
-Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+/// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
+struct OverlapResult {
+  bool overlap = false;  ///< v lies inside another element, or v's boundary edge crosses one's outline
+  bool inside = false;   ///< v itself lies inside another element
+  float qx = 0.0f, qy = 0.0f;  ///< when inside: the closest point on that element's outline (at v's t)
+};
+
+/// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
+/// vertex of its slice) against every other element's boundary polygon interpolated linearly at v's t,
+/// skipping elements whose slice boxes miss the edge. Interior vertices and elements with fewer than two
+/// slices never overlap. overlap.cpp.
+OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v);
+
+/// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, for a vertex inside
+/// another element, k_ovr_depth (q − x) towards the closest point q of that element's outline, so the
+/// push grows with depth (docs/parameters.md). overlap.cpp.
+Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
+                    const OverlapResult& overlap);
 
 /// Stiffness of one spring class (Eq. 2's k_edg per class).
 float spring_stiffness(const Params& params, SpringClass c);
@@ -98,7 +115,23 @@ Vec3f spring_force(const Topology& topo, const SimState& state, const Params& pa
 /// vertices without a target. target.cpp.
 Vec3f target_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
 
-/// Eq. 4: k_bdr (p_b − x) in x, y for a vertex outside the container. boundary.cpp.
+/// Where a point lies against the container (x, y only: the container is the same at every t).
+struct ContainerQuery {
+  bool inside = true;          ///< inside the outline and outside every hole (even–odd over all rings)
+  float distance2 = std::numeric_limits<float>::infinity();  ///< squared distance to the nearest segment
+  float qx = 0.0f, qy = 0.0f;  ///< that nearest point (the first segment reaching the minimum wins)
+};
+
+/// The even–odd test always; the nearest boundary point only when `nearest` or the point is outside.
+/// A world without a container has every point inside. boundary.cpp.
+ContainerQuery container_query(const ContainerGeometry& box, float px, float py, bool nearest);
+
+/// The container's force on a point, from its query: outside, Eq. 4, k_bdr (p_b − x) in x, y; inside, for
+/// a boundary vertex (`boundary`), the wall repels like a neighbour, wall_repulsion · k_rpl · u/|u| ·
+/// 1/(ε + |u|²) with u = x − p_b (Eq. 1's form; docs/parameters.md, "Containment"). boundary.cpp.
+Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, float py, bool boundary);
+
+/// The container's force on vertex v. boundary.cpp.
 Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
 
 /// Current centroid of every slice (mean of its vertices in index order), for Eq. 5. torsion.cpp.
@@ -128,9 +161,11 @@ struct ForceBreakdown {
 };
 
 struct StepForces {
-  ForceField total;                 ///< Eq. 7 per vertex
-  std::vector<float> closest;       ///< per vertex; +inf for interior vertices and when nothing is near
-  std::vector<std::uint8_t> inside; ///< per vertex: 1 when found inside another element (growth pauses)
+  ForceField total;                  ///< Eq. 7 per vertex
+  /// Per boundary vertex, the distance to the nearest other element or container wall (the slice gap of
+  /// §5.3 counts the wall as a neighbour); +inf for interior vertices.
+  std::vector<float> closest;
+  std::vector<std::uint8_t> contact; ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
 };
 
 /// Eq. 7 for every vertex from one snapshot of positions. step_forces.cpp.
@@ -151,14 +186,26 @@ void apply_simultaneity(const Topology& topo, SimState& state, std::int32_t e);
 /// Loop: both vertices of every loop pair move to the average of their x, y; t untouched.
 void apply_loop(const Topology& topo, SimState& state);
 
+/// Containment: every vertex outside the container moves to the nearest point of the container's boundary,
+/// a hair (containment_margin) inside, and stops in x, y. A hard constraint like those of §5.2, because
+/// the linear Eq. 4 loses against the stiff springs of a grown element (docs/parameters.md).
+inline constexpr float containment_margin = 1e-5f;
+void apply_containment(const Topology& topo, SimState& state);
+
 // ---- growth (§5.3), growth.cpp -------------------------------------------------------------------------
 
-/// Grows by growth_rate · Δt_sim (up to max_growth) every slice none of whose vertices is `inside`
-/// another element; `grew` marks them. Returns how many grew.
-std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& inside, const Params& params,
-                         SimState& state, std::vector<std::uint8_t>& grew);
+/// Values of the per-slice `changed` flags grow_slices writes.
+enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2 };
 
-/// Recomputes the rest length of every spring with an end on a slice marked in `grew`.
-void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& grew, SimState& state);
+/// One growth step (docs/parameters.md, "Growth"): a slice with a vertex that overlaps another element or
+/// lies outside the container shrinks by shrink_rate · Δt_sim (not below 1); one with a boundary vertex
+/// nearer the wall than stop_gap, or at max_growth, keeps its g; any other grows by growth_rate · Δt_sim.
+/// Then every slice is limited to growth_ratio × the smallest g of its element. `changed` marks what
+/// moved; returns how many slices grew.
+std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
+                         SimState& state, std::vector<std::uint8_t>& changed);
+
+/// Recomputes the rest length of every spring with an end on a slice marked in `changed`.
+void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state);
 
 }  // namespace animpak::reference

@@ -23,7 +23,8 @@ struct StepStatistics {
   float max_slice_gap = 0.0f;   ///< largest per-slice closest distance to another element (§5.3 stop test)
   float min_slice_gap = 0.0f;
   double growing_share = 0.0;   ///< share of slices whose g grew in the last step
-  std::int64_t overlapping_vertices = 0;
+  std::int64_t overlapping_vertices = 0;  ///< boundary vertices inside another element or crossing one
+  std::int64_t outside_vertices = 0;      ///< vertices outside the container (before containment moved them)
   float min_growth = 1.0f, max_growth = 1.0f;
   bool finite = true;           ///< every position and velocity is finite
   std::int32_t first_bad_vertex = -1;  ///< when not finite
@@ -68,7 +69,7 @@ class Backend {
   virtual ~Backend() = default;
   virtual std::string name() const = 0;
   /// One step: grid (every grid_rebuild_interval steps), forces, integration, per-element constraints,
-  /// the loop pass, growth and rest lengths.
+  /// the loop pass, containment, growth and rest lengths.
   virtual void step() = 0;
   virtual StepStatistics statistics() = 0;
   virtual SimState state() = 0;  ///< a full read-back (checkpoints, rendering)

@@ -23,6 +23,15 @@ enum VertexFlag : std::uint8_t {
   vertex_last_slice = 8,
 };
 
+/// What the overlap and container tests found at a vertex (StepForces::contact), one bit each; the
+/// kernels use the same values (shared_types.h, AP_CONTACT_*).
+enum ContactBit : std::uint8_t {
+  contact_overlap = 1,  ///< inside another element, or its boundary edge crosses one (growth shrinks)
+  contact_outside = 2,  ///< outside the container (growth shrinks)
+  contact_wall = 4,     ///< a boundary vertex nearer the container's boundary than stop_gap (growth pauses)
+  contact_inside = 8,   ///< inside another element (the depth term of the overlap force)
+};
+
 /// The container extruded over t: line segments of the outline and of every hole.
 struct ContainerGeometry {
   std::vector<float> ax, ay, bx, by;  ///< segment i runs from (ax[i], ay[i]) to (bx[i], by[i])

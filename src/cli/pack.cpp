@@ -51,7 +51,7 @@ class Progress {
     const int filled = static_cast<int>(width * std::clamp(elapsed / std::max(elapsed + remaining, 1e-9), 0.0, 1.0));
     std::ostringstream line;
     line << "iter " << st.iteration << "  gap " << (std::isfinite(st.max_slice_gap) ? std::to_string(st.max_slice_gap) : "inf")
-         << "  growing " << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices
+         << "  growing " << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices << "  outside " << st.outside_vertices
          << "  g " << st.min_growth << ".." << st.max_growth << "  " << clock_text(elapsed) << " (~" << clock_text(remaining)
          << " left)";
     if (tty_)

@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 28> table{{
+const std::array<ParamInfo, 32> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "arc length between boundary samples"},
     {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
@@ -19,12 +19,14 @@ const std::array<ParamInfo, 28> table{{
     {"seed_spacing", &Params::seed_spacing, 0.01, 1.0, "distance between unguided seeds when filling (§4)"},
     {"k_repulsion", &Params::k_repulsion, 0.0, inf, "k_rpl, repulsion strength (Eq. 1)"},
     {"repulsion_epsilon", &Params::repulsion_epsilon, 1e-12, inf, "ε, softening of Eq. 1"},
+    {"wall_repulsion", &Params::wall_repulsion, 0.0, inf, "Eq. 1 terms the container's wall counts as"},
     {"k_edge", &Params::k_edge, 0.0, inf, "k_edg of slice edge springs (Eq. 2)"},
     {"k_shear", &Params::k_shear, 0.0, inf, "k_edg of shear springs (Eq. 2)"},
     {"k_negative_space", &Params::k_negative_space, 0.0, inf, "k_edg of negative-space springs (Eq. 2)"},
     {"k_time", &Params::k_time, 0.0, inf, "k_edg of time springs (Eq. 2)"},
     {"k_target", &Params::k_target, 0.0, inf, "k_edg of target-point springs (Eq. 2, §4)"},
     {"k_overlap", &Params::k_overlap, 0.0, inf, "k_ovr, overlap strength (Eq. 3)"},
+    {"k_overlap_depth", &Params::k_overlap_depth, 0.0, inf, "pull of an inside vertex out of the other element"},
     {"k_boundary", &Params::k_boundary, 0.0, inf, "k_bdr, container strength (Eq. 4)"},
     {"k_torsion", &Params::k_torsion, 0.0, inf, "k_tor, torsion strength (Eq. 5)"},
     {"k_temporal", &Params::k_temporal, 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
@@ -33,6 +35,8 @@ const std::array<ParamInfo, 28> table{{
     {"cell_size", &Params::cell_size, 0.005, 1.0, "collision grid cell edge (§5.1)"},
     {"grid_rebuild_interval", &Params::grid_rebuild_interval, 1, 1000, "rebuild the grid every k steps"},
     {"growth_rate", &Params::growth_rate, 0.0, inf, "g += growth_rate · Δt_sim per free step (§5.3)"},
+    {"shrink_rate", &Params::shrink_rate, 0.0, inf, "g -= shrink_rate · Δt_sim per step while overlapping"},
+    {"growth_ratio", &Params::growth_ratio, 1.0, inf, "largest g of an element ≤ growth_ratio × its smallest"},
     {"stop_gap", &Params::stop_gap, 0.0, 1.0, "stop when the largest per-slice gap is below this (§5.3)"},
     {"stop_growth", &Params::stop_growth, 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
     {"max_iterations", &Params::max_iterations, 1, 100000000, "hard cap on simulation steps"},

@@ -33,7 +33,9 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     }
     result.last_good = backend.state();
     if (control.on_check) control.on_check(result.last);
-    if (result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
+    // §5.3's gap test, and nothing overlapping or outside: a packing that stops must be a correct one.
+    if (result.last.max_slice_gap < static_cast<float>(params.stop_gap) && result.last.overlapping_vertices == 0 &&
+        result.last.outside_vertices == 0) {
       result.reason = StopReason::gap;
       break;
     }

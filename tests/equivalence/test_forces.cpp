@@ -7,7 +7,7 @@ namespace animpak::test {
 namespace {
 
 struct Coverage {
-  int inside = 0, boundary = 0, target = 0, repulsion = 0;
+  int inside = 0, crossing = 0, wall = 0, boundary = 0, target = 0, repulsion = 0;
 };
 
 // Compares one world's forces on every device; returns what the world exercised.
@@ -16,8 +16,10 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
   reference::ForceBreakdown ref_parts;
   const reference::StepForces ref = reference::step_forces(w.topo, w.state, params, grid, &ref_parts);
   Coverage c;
-  for (std::size_t v = 0; v < ref.inside.size(); ++v) {
-    c.inside += ref.inside[v];
+  for (std::size_t v = 0; v < ref.contact.size(); ++v) {
+    c.inside += (ref.contact[v] & contact_inside) != 0;
+    c.crossing += (ref.contact[v] & (contact_overlap | contact_inside)) == contact_overlap;
+    c.wall += (ref.contact[v] & contact_wall) != 0;
     c.boundary += ref_parts.boundary.x[v] != 0.0f;
     c.target += ref_parts.target.x[v] != 0.0f;
     c.repulsion += ref_parts.repulsion.x[v] != 0.0f;
@@ -31,7 +33,7 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
                              bit_difference("total.y", ref.total.y, dev.total.y) +
                              bit_difference("total.t", ref.total.t, dev.total.t) +
                              bit_difference("closest", ref.closest, dev.closest) +
-                             bit_difference("inside", ref.inside, dev.inside);
+                             bit_difference("contact", ref.contact, dev.contact);
     INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
     CHECK(diff.empty());
   }
@@ -69,11 +71,14 @@ TEST_CASE("forces: random worlds, default and paper constants", "[equivalence][o
     const World w = random_world(seed, shape);
     for (const Params& params : {Params{}, paper_params()}) {
       const Coverage c = check_forces(w, params, "seed " + std::to_string(seed));
-      total.inside += c.inside, total.boundary += c.boundary, total.target += c.target, total.repulsion += c.repulsion;
+      total.inside += c.inside, total.crossing += c.crossing, total.wall += c.wall;
+      total.boundary += c.boundary, total.target += c.target, total.repulsion += c.repulsion;
     }
   }
   // The worlds must exercise every branch that differs between forces, or the comparison says little.
   CHECK(total.inside > 0);
+  CHECK(total.crossing > 0);
+  CHECK(total.wall > 0);
   CHECK(total.boundary > 0);
   CHECK(total.target > 0);
   CHECK(total.repulsion > 0);
@@ -113,6 +118,22 @@ TEST_CASE("forces: elements touching the container and a hole", "[equivalence][o
   b.add_element(square_tube(0.2f, 0.8f, 0.06f, {0.0f, 0.5f, 1.0f}));    // around the second hole
   const World w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
+}
+
+TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.add_element(square_tube(0.5f, 0.5f, 0.005f, {0.0f, 0.5f, 1.0f}));  // deep inside the next one
+  b.add_element(square_tube(0.5f, 0.5f, 0.12f, {0.0f, 0.4f, 1.0f}));
+  // A plus sign of two bars: only edges cross.
+  b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));
+  b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) {
+    const Coverage c = check_forces(w, params, "deep and crossing");
+    CHECK(c.inside > 0);
+    CHECK(c.crossing > 0);
+  }
 }
 
 TEST_CASE("forces: one element alone", "[equivalence][opencl]") {

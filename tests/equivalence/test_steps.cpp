@@ -17,6 +17,8 @@ std::string statistics_difference(const StepStatistics& a, const StepStatistics&
   if (a.growing_share != b.growing_share) s << "growing_share " << a.growing_share << " vs " << b.growing_share << "\n";
   if (a.overlapping_vertices != b.overlapping_vertices)
     s << "overlapping_vertices " << a.overlapping_vertices << " vs " << b.overlapping_vertices << "\n";
+  if (a.outside_vertices != b.outside_vertices)
+    s << "outside_vertices " << a.outside_vertices << " vs " << b.outside_vertices << "\n";
   if (a.finite != b.finite || a.first_bad_vertex != b.first_bad_vertex) s << "finiteness differs\n";
   return s.str();
 }

@@ -108,7 +108,8 @@ TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
 }
 
 TEST_CASE("boundary: Eq. 4 on a unit-square container") {
-  const Params p = test::paper_params();
+  Params p = test::paper_params();
+  p.wall_repulsion = 0.0;  // Eq. 4 alone; the wall's repulsion inside is the next case
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {1.25f, 0.5f}, {-0.5f, -0.25f}, {1.0f, 0.5f}}, 0.5f}}, false);
   const test::World w = b.build();
@@ -125,8 +126,28 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
   CHECK((on_edge.x == 0.0f && on_edge.y == 0.0f));
 }
 
+TEST_CASE("boundary: the wall repels a boundary vertex inside the container like Eq. 1, interior vertices not") {
+  const Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
+  WorldBuilder b;
+  b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
+  b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
+  test::World w = b.build();
+  // Vertex 0: nearest wall the hole's edge x = 0.375, u = (−0.125, 0): 100 · (−1, 0) / (1 + 0.125²).
+  const Vec3f f0 = boundary_force(w.topo, w.state, p, 0);
+  CHECK(f0.x == Approx(-100.0 / (1.0 + 0.015625)).epsilon(1e-6));
+  CHECK(f0.y == 0.0f);
+  // Vertex 1: the outline's y = 1, u = (0, −0.1).
+  const Vec3f f1 = boundary_force(w.topo, w.state, p, 1);
+  CHECK(f1.x == 0.0f);
+  CHECK(f1.y == Approx(-100.0 / (1.0 + 0.01)).epsilon(1e-6));
+  w.topo.flags[1] = 0;  // an interior vertex feels nothing inside
+  const Vec3f interior = boundary_force(w.topo, w.state, p, 1);
+  CHECK((interior.x == 0.0f && interior.y == 0.0f && interior.t == 0.0f));
+}
+
 TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
-  const Params p = test::paper_params();
+  Params p = test::paper_params();
+  p.wall_repulsion = 0.0;
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.5f, 0.5625f}, {0.25f, 0.5f}}, 0.5f}}, false);
@@ -189,11 +210,18 @@ TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triang
   WorldBuilder b;
   b.add_element({{test::square(0.5f, 0.5f, 0.5f), 0.5f}});  // fan (0,1,2), (0,2,3) over (0,0)..(1,1)
   const test::World w = b.build();
-  const Vec3f f1 = overlap_force(w.topo, w.state, p, 1);  // only in (0,1,2): centroid (2/3, 1/3)
+  const OverlapResult crossing{true, false};  // an edge crossing only: Eq. 3 without the depth term
+  const Vec3f f1 = overlap_force(w.topo, w.state, p, 1, crossing);  // only in (0,1,2): centroid (2/3, 1/3)
   CHECK(f1.x == Approx(-5.0 / 3.0).epsilon(1e-6));
   CHECK(f1.y == Approx(5.0 / 3.0).epsilon(1e-6));
   CHECK(f1.t == 0.0f);
-  const Vec3f f0 = overlap_force(w.topo, w.state, p, 0);  // both: (2/3, 1/3) + (1/3, 2/3)
+  const Vec3f f0 = overlap_force(w.topo, w.state, p, 0, crossing);  // both: (2/3, 1/3) + (1/3, 2/3)
   CHECK(f0.x == Approx(5.0).epsilon(1e-6));
   CHECK(f0.y == Approx(5.0).epsilon(1e-6));
+  const Vec3f none = overlap_force(w.topo, w.state, p, 0, OverlapResult{});  // no overlap, no force
+  CHECK((none.x == 0.0f && none.y == 0.0f && none.t == 0.0f));
+  // Inside another element: plus k_ovr_depth (q − x) towards the way out q.
+  const Vec3f d = overlap_force(w.topo, w.state, p, 0, OverlapResult{true, true, 0.25f, -0.5f});
+  CHECK(d.x == Approx(5.0 + p.k_overlap_depth * 0.25).epsilon(1e-6));
+  CHECK(d.y == Approx(5.0 + p.k_overlap_depth * -0.5).epsilon(1e-6));
 }

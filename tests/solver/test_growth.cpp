@@ -1,8 +1,10 @@
-// §5.3 growth on a real (tiny) world: a slice with a vertex inside another element keeps its g, the
-// others grow by exactly growth_rate · Δt_sim up to max_growth, and only the springs with an end on a
-// grown slice get new rest lengths.
+// §5.3 growth on a real (tiny) world (docs/parameters.md, "Growth"): a slice that overlaps or spills
+// shrinks, one at the wall keeps its g, the others grow by exactly growth_rate · Δt_sim up to max_growth
+// and never past growth_ratio × their element's smallest slice; only the springs with an end on a
+// changed slice get new rest lengths.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
 
 #include "animpak/reference.hpp"
@@ -21,38 +23,53 @@ bool same_float(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("grow_slices: a slice with an inside vertex pauses, the others grow by rate · dt, capped") {
+TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wall pause, the others grow, capped") {
   const World w = tiny_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
   Params params = w.params;
   params.growth_rate = 3.0;  // step 0.15: visible in float at every g used below
+  params.shrink_rate = 2.0;  // 0.1
   params.max_growth = 2.0;
+  params.growth_ratio = 100.0;  // no ratio limit in this case
   const float step = static_cast<float>(params.growth_rate * params.dt);
+  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
 
   SimState state = w.state;
-  const std::int32_t blocked = 1, nearly_full = 3, full = 7;
+  const std::int32_t overlapping = 1, nearly_full = 3, outside = 4, at_wall = 6, full = 7, at_floor = 8;
+  state.growth[overlapping] = 1.5f;
   state.growth[nearly_full] = 1.9f;  // 1.9 + 0.15 passes the cap: clamps to 2
+  state.growth[outside] = 1.5f;
+  state.growth[at_wall] = 1.5f;
   state.growth[full] = 2.0f;         // already at the cap: does not count as growing
-  state.growth[5] = 1.25f;
-  std::vector<std::uint8_t> inside(topo.vertex_count(), 0);
-  inside[topo.slice_begin[blocked + 1] - 1] = 1;  // the last vertex of slice 1 only
+  state.growth[at_floor] = 1.05f;    // overlapping: shrinks to 1, never below the start
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap;  // the last vertex of the slice only
+  contact[topo.slice_begin[outside]] = contact_outside;
+  contact[topo.slice_begin[at_wall] + 1] = contact_wall;
+  contact[topo.slice_begin[at_floor]] = contact_overlap | contact_inside;
 
   const SimState before = state;
-  std::vector<std::uint8_t> grew;
-  const std::int32_t count = reference::grow_slices(topo, inside, params, state, grew);
-  REQUIRE(grew.size() == static_cast<std::size_t>(topo.slice_count()));
-  CHECK(count == topo.slice_count() - 2);
+  std::vector<std::uint8_t> changed;
+  const std::int32_t count = reference::grow_slices(topo, contact, params, state, changed);
+  REQUIRE(changed.size() == static_cast<std::size_t>(topo.slice_count()));
+  CHECK(count == topo.slice_count() - 5);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
-    if (s == blocked || s == full) {
-      CHECK(grew[s] == 0);
+    if (s == overlapping || s == outside) {
+      CHECK(changed[s] == reference::growth_shrank);
+      CHECK(same_float(state.growth[s], before.growth[s] - shrink));
+    } else if (s == at_floor) {
+      CHECK(changed[s] == reference::growth_shrank);
+      CHECK(state.growth[s] == 1.0f);
+    } else if (s == at_wall || s == full) {
+      CHECK(changed[s] == reference::growth_kept);
       CHECK(same_float(state.growth[s], before.growth[s]));
     } else if (s == nearly_full) {
-      CHECK(grew[s] == 1);
+      CHECK(changed[s] == reference::growth_grew);
       CHECK(state.growth[s] == 2.0f);
     } else {
-      CHECK(grew[s] == 1);
+      CHECK(changed[s] == reference::growth_grew);
       CHECK(same_float(state.growth[s], before.growth[s] + step));
     }
   }
@@ -60,6 +77,41 @@ TEST_CASE("grow_slices: a slice with an inside vertex pauses, the others grow by
   // Nothing else of the state moves.
   CHECK(state.x == before.x);
   CHECK(state.spring_rest == before.spring_rest);
+}
+
+TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of its element") {
+  const World w = tiny_world();
+  const Topology& topo = w.topology;
+  REQUIRE(topo.element_count() == 2);
+  Params params = w.params;
+  params.growth_rate = 1.0;  // 0.05 per step
+  params.growth_ratio = 1.3;
+  SimState state = w.state;
+  // Element 0's slice 2 sits at the wall for good; its other slices may grow up to 1.3 × its g.
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  contact[topo.slice_begin[2]] = contact_wall;
+  std::vector<std::uint8_t> changed;
+  for (int step = 0; step < 40; ++step) reference::grow_slices(topo, contact, params, state, changed);
+  for (std::int32_t s = topo.element_slice_begin[0]; s < topo.element_slice_begin[1]; ++s) {
+    INFO("slice " << s);
+    CHECK(state.growth[s] <= 1.3f * state.growth[2]);
+  }
+  CHECK(state.growth[2] == 1.0f);
+  CHECK(state.growth[0] == 1.3f);
+  // Element 1 is free and grows evenly: 40 steps of 0.05.
+  for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
+    CHECK(state.growth[s] == Approx(3.0).epsilon(1e-5));
+
+  // One slice overlapping drags the element's largest slices down with it: the bound holds every step.
+  contact.assign(topo.vertex_count(), 0);
+  contact[topo.slice_begin[topo.element_slice_begin[1]]] = contact_overlap;
+  for (int step = 0; step < 10; ++step) {
+    reference::grow_slices(topo, contact, params, state, changed);
+    float lo = 1e9f, hi = 0.0f;
+    for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
+      lo = std::min(lo, state.growth[s]), hi = std::max(hi, state.growth[s]);
+    CHECK(hi <= 1.3f * lo);
+  }
 }
 
 TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice change, to their g references") {

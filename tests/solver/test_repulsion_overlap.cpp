@@ -95,6 +95,16 @@ TEST_CASE("repulsion: interior vertices get none") {
   CHECK(std::isinf(r.closest));
 }
 
+namespace {
+
+OverlapResult overlap_at(const test::World& w, std::int32_t v) {
+  SliceBoxes boxes;
+  slice_boxes(w.topo, w.state, boxes);
+  return overlap_test(w.topo, w.state, boxes, v);
+}
+
+}  // namespace
+
 TEST_CASE("overlap: found inside a second element even when a third element's triangle is nearer") {
   const Params p = test::paper_params();
   WorldBuilder b;
@@ -119,19 +129,76 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
     if (d < best) best = d, best_element = w.topo.env_element[tri];
   }
   REQUIRE(best_element == 2);
-  REQUIRE(std::any_of(q.near.begin(), q.near.end(), [&](std::int32_t tri) { return w.topo.env_element[tri] == 1; }));
-  CHECK(inside_other_element(w.topo, w.state, v, q.near));
+  const OverlapResult r = overlap_at(w, v);
+  CHECK(r.overlap);
+  CHECK(r.inside);
+  // The way out is B's nearest edge, y = 0.47, straight up from the vertex.
+  CHECK(r.qx == 0.5f);
+  CHECK(r.qy == 0.47f);
 
   WorldBuilder without_b;
   without_b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));
   without_b.add_element(test::square_tube(0.525f, 0.49f, 0.01f, times));
   const test::World w2 = without_b.build();
-  const CollisionGrid g2 = build_collision_grid(w2.topo, w2.state, p);
-  CHECK_FALSE(inside_other_element(w2.topo, w2.state, v, query(w2, g2, v).near));
+  CHECK_FALSE(overlap_at(w2, v).overlap);
+}
+
+TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged") {
+  // The paper's test looks for the other element's envelope in the 3×3×3 block of cells around the
+  // vertex (cells of 0.04). Here the vertex sits at the centre of a large square, 0.1 (2.5 cells) from
+  // its outline, where the block finds no envelope triangle of it at all.
+  const Params p = test::paper_params();
+  const auto times = times26();
+  WorldBuilder b;
+  b.add_element(test::square_tube(0.5f, 0.5f, 0.005f, times));  // A: tiny, at the centre
+  b.add_element(test::square_tube(0.5f, 0.5f, 0.1f, times));    // B: around it
+  const test::World w = b.build();
+  const std::int32_t v = 12 * 4;
+  const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
+  const Query q = query(w, g, v);
+  REQUIRE(std::none_of(q.near.begin(), q.near.end(), [&](std::int32_t tri) { return w.topo.env_element[tri] == 1; }));
+  const OverlapResult r = overlap_at(w, v);
+  CHECK(r.overlap);
+  CHECK(r.inside);
+  // The depth term of the overlap force grows with depth: it points to B's outline, 0.095 away.
+  const Vec3f f = overlap_force(w.topo, w.state, p, v, r);
+  const Vec3f eq3 = overlap_force(w.topo, w.state, p, v, OverlapResult{true, false});
+  CHECK(std::hypot(f.x - eq3.x, f.y - eq3.y) == Approx(p.k_overlap_depth * 0.095).epsilon(1e-4));
+}
+
+TEST_CASE("overlap: two elements whose edges cross with no vertex inside are both flagged") {
+  // Two thin bars crossing like a plus sign: no corner of either lies inside the other, but a long
+  // edge of each crosses the other's outline twice.
+  const auto times = times26();
+  const auto bar = [&](float w, float h) {
+    std::vector<test::TinySlice> slices;
+    for (const float t : times)
+      slices.push_back({{{0.5f - w, 0.5f - h}, {0.5f + w, 0.5f - h}, {0.5f + w, 0.5f + h}, {0.5f - w, 0.5f + h}}, t});
+    return slices;
+  };
+  WorldBuilder b;
+  b.add_element(bar(0.1f, 0.01f));  // horizontal
+  b.add_element(bar(0.01f, 0.1f));  // vertical
+  const test::World w = b.build();
+  int inside = 0, flagged = 0;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const OverlapResult r = overlap_at(w, v);
+    inside += r.inside;
+    flagged += r.overlap;
+  }
+  CHECK(inside == 0);
+  // Per slice, the horizontal bar's two long edges start at its corners 0 (top, going +x) and 2
+  // (bottom, going −x); so for the vertical bar (corners 1 and 3).
+  for (int s = 0; s < 26; ++s)
+    for (const int e : {0, 1}) {
+      const std::int32_t base = (e * 26 + s) * 4;
+      CHECK(overlap_at(w, base + (e == 0 ? 0 : 1)).overlap);
+      CHECK(overlap_at(w, base + (e == 0 ? 2 : 3)).overlap);
+    }
+  CHECK(flagged == 2 * 2 * 26);
 }
 
 TEST_CASE("overlap: the other element's boundary is interpolated linearly between its slices") {
-  const Params p = test::paper_params();
   const auto times = times26();
   // B grows with t: half-size h(t) = 0.02 + 0.08 t on each slice. The query sits 0.05 right of B's
   // centre, so it is inside exactly when h(t) > 0.05, i.e. t > 0.375 — between slices 0.36 and 0.40.
@@ -143,10 +210,7 @@ TEST_CASE("overlap: the other element's boundary is interpolated linearly betwee
     b.add_element({{diamond(0.55f, 0.5f, 0.02f), t}}, false);
     b.add_element(grow);
     const test::World w = b.build();
-    const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-    const Query q = query(w, g, 0);
-    REQUIRE(!q.near.empty());
-    CHECK(inside_other_element(w.topo, w.state, 0, q.near) == inside);
+    CHECK(overlap_at(w, 0).inside == inside);
   }
 }
 
@@ -157,8 +221,12 @@ TEST_CASE("overlap: never inside one's own element, and interior vertices are no
   test::World w = b.build();
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const std::int32_t v = 12 * 4;
-  std::vector<std::int32_t> all(w.topo.envelope_count());
-  for (std::int32_t i = 0; i < w.topo.envelope_count(); ++i) all[i] = i;
-  CHECK_FALSE(inside_other_element(w.topo, w.state, v, all));
+  CHECK_FALSE(overlap_at(w, v).overlap);
   CHECK(query(w, g, v).near.empty());
+  // The same vertex without its boundary flag, inside a second element, is not tested.
+  b.add_element(test::square_tube(0.5f, 0.5f, 0.2f, times26()));
+  w = b.build();
+  REQUIRE(overlap_at(w, v).inside);
+  w.topo.flags[v] &= static_cast<std::uint8_t>(~vertex_boundary);
+  CHECK_FALSE(overlap_at(w, v).overlap);
 }

@@ -10,19 +10,25 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
-static_assert(sizeof(ForceParams) == 16 * 4 && offsetof(ForceParams, k_spring) == 8 &&
-              offsetof(ForceParams, k_target) == 28 && offsetof(ForceParams, max_growth) == 60);
+static_assert(sizeof(ForceParams) == 21 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+              offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 76);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
+static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
+              AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside);
+static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank);
+static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);
 static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
 
 ForceParams force_params(const Params& params) {
   ForceParams p{};
   p.k_repulsion = static_cast<float>(params.k_repulsion);
   p.repulsion_epsilon = static_cast<float>(params.repulsion_epsilon);
+  p.k_wall = static_cast<float>(params.wall_repulsion * params.k_repulsion);
   for (int c = 0; c < AP_SPRING_CLASSES; ++c) p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
   p.k_target = static_cast<float>(params.k_target);
   p.k_overlap = static_cast<float>(params.k_overlap);
+  p.k_overlap_depth = static_cast<float>(params.k_overlap_depth);
   p.k_boundary = static_cast<float>(params.k_boundary);
   p.k_torsion = static_cast<float>(params.k_torsion);
   p.k_temporal = static_cast<float>(params.k_temporal);
@@ -30,7 +36,10 @@ ForceParams force_params(const Params& params) {
   // Products in double first, then one conversion (integrate.cpp, growth.cpp).
   p.velocity_cap = static_cast<float>(params.velocity_cap * params.dt);
   p.growth_step = static_cast<float>(params.growth_rate * params.dt);
+  p.shrink_step = static_cast<float>(params.shrink_rate * params.dt);
+  p.growth_ratio = static_cast<float>(params.growth_ratio);
   p.max_growth = static_cast<float>(params.max_growth);
+  p.stop_gap = static_cast<float>(params.stop_gap);
   return p;
 }
 

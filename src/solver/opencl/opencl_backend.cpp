@@ -120,16 +120,21 @@ class DeviceBackend final : public OpenclBackend {
                      slot_c = work(it, "slot_c"), slot_cx = work(ft, "slot_cx"), slot_cy = work(ft, "slot_cy"),
                      slot_ct = work(ft, "slot_ct");
     const cl::Buffer rpl_x = work(fn, "repulsion_x"), rpl_y = work(fn, "repulsion_y"), rpl_t = work(fn, "repulsion_t"),
-                     rpl_closest = work(fn, "repulsion_closest"), rpl_inside = work(n, "repulsion_inside");
+                     rpl_closest = work(fn, "repulsion_closest"), rpl_contact = work(n, "repulsion_contact"),
+                     depth_x = work(fn, "overlap_depth_x"), depth_y = work(fn, "overlap_depth_y");
     const cl::Buffer slice_cx = work(fs, "slice_cx"), slice_cy = work(fs, "slice_cy");
+    const cl::Buffer box_x0 = work(fs, "slice_box_x0"), box_y0 = work(fs, "slice_box_y0"),
+                     box_x1 = work(fs, "slice_box_x1"), box_y1 = work(fs, "slice_box_y1");
+    const cl::Buffer proposed = work(fs, "proposed_growth");
     fx_ = work(fn, "fx"), fy_ = work(fn, "fy"), ft_ = work(fn, "ft");
     // Before the first step the statistics see what the reference starts from: no gap, no overlap.
     closest_ = rw(std::vector<float>(n, std::numeric_limits<float>::infinity()), "closest");
-    inside_ = rw(std::vector<std::uint8_t>(n, 0), "inside");
-    grew_ = rw(std::vector<std::uint8_t>(slices, 0), "grew");
+    contact_ = rw(std::vector<std::uint8_t>(n, 0), "contact");
+    changed_ = rw(std::vector<std::uint8_t>(slices, 0), "growth_changed");
     breakdown_ = work(1, "breakdown (unused)");
     slice_gap_ = work(fs, "slice_gap");
-    slice_inside_ = work(sizeof(std::int32_t) * slices, "slice_inside");
+    slice_overlap_ = work(sizeof(std::int32_t) * slices, "slice_overlap");
+    slice_outside_ = work(sizeof(std::int32_t) * slices, "slice_outside");
     slice_bad_ = work(sizeof(std::int32_t) * slices, "slice_bad");
 
     envelope_cells_ = Kernel(program, "envelope_cells");
@@ -151,32 +156,39 @@ class DeviceBackend final : public OpenclBackend {
     grid_gather_ = Kernel(program, "grid_gather");
     grid_gather_.bind(grid_, sorted_buf_, env_element, env_a, env_b, env_c, env_cx_, env_cy_, env_ct_, slot_element,
                       slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct);
+    slice_boxes_ = Kernel(program, "slice_boxes");
+    slice_boxes_.bind(world_, slice_begin, slice_boundary, x_, y_, box_x0, box_y0, box_x1, box_y1);
     repulsion_ = Kernel(program, "repulsion");
-    repulsion_.bind(grid_, p, boundary_count_, boundary_buf_, x_, y_, t_, element, cell_start_buf_, slot_element,
-                    slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices, slice_begin, slice_boundary,
-                    rpl_x, rpl_y, rpl_t, rpl_closest, rpl_inside);
+    repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, element, slice,
+                    cell_start_buf_, slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices,
+                    slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, rpl_x, rpl_y, rpl_t, rpl_closest,
+                    rpl_contact, depth_x, depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, slice_begin, x_, y_, slice_cx, slice_cy);
     forces_ = Kernel(program, "step_forces");
     breakdown_arg_ =
         forces_.bind(world_, p, x_, y_, t_, slice, flags, rest_t, rest_dx, rest_dy, target, spring_begin, spring_other,
                      spring_class, rest_, tri_a, tri_b, tri_c, tri_begin, tri_list, rpl_x, rpl_y, rpl_t, rpl_closest,
-                     rpl_inside, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx, seg_by, slice_cx, slice_cy, fx_,
-                     fy_, ft_, closest_, inside_, breakdown_) - 1;
+                     rpl_contact, depth_x, depth_y, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx, seg_by,
+                     slice_cx, slice_cy, fx_, fy_, ft_, closest_, contact_, breakdown_) - 1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
     constraints_ = Kernel(program, "slice_constraints");
     constraints_.bind(world_, slice_begin, slice_element, element_slices, t_);
     loop_ = Kernel(program, "loop_constraint");
     loop_.bind(world_, loop_end, loop_start, x_, y_);
+    containment_ = Kernel(program, "containment");
+    containment_.bind(world_, seg_ax, seg_ay, seg_bx, seg_by, x_, y_, vx_, vy_);
+    propose_growth_ = Kernel(program, "propose_growth");
+    propose_growth_.bind(world_, p, slice_begin, contact_, growth_, proposed);
     grow_ = Kernel(program, "grow_slices");
-    grow_.bind(world_, p, slice_begin, inside_, growth_, grew_);
+    grow_.bind(world_, p, slice_element, element_slices, proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");
-    rest_lengths_.bind(world_, slice, spring_begin, spring_other, grew_, growth_, ref_x, ref_y, ref_t, ref_cx, ref_cy,
-                       rest_);
+    rest_lengths_.bind(world_, slice, spring_begin, spring_other, changed_, growth_, ref_x, ref_y, ref_t, ref_cx,
+                       ref_cy, rest_);
     statistics_ = Kernel(program, "slice_statistics");
-    statistics_.bind(world_, slice_begin, closest_, inside_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_inside_,
-                     slice_bad_);
+    statistics_.bind(world_, slice_begin, closest_, contact_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_overlap_,
+                     slice_outside_, slice_bad_);
     spring_count_ = initial.spring_rest.size();
     check(queue_.finish(), "clFinish(upload)");
   }
@@ -191,11 +203,14 @@ class DeviceBackend final : public OpenclBackend {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
+    timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
     timed(times_.forces, repulsion_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
     timed(times_.integrate, integrate_.run(queue_, world_.vertices));
     timed(times_.constraints, constraints_.run(queue_, world_.slices));
     timed(times_.loop, loop_.run(queue_, world_.loops));
+    timed(times_.constraints, containment_.run(queue_, world_.vertices));
+    timed(times_.growth, propose_growth_.run(queue_, world_.slices));
     timed(times_.growth, grow_.run(queue_, world_.slices));
     timed(times_.growth, rest_lengths_.run(queue_, world_.vertices));
     ++iteration_;
@@ -205,21 +220,23 @@ class DeviceBackend final : public OpenclBackend {
     const std::int32_t slices = world_.slices;
     timed(times_.statistics, statistics_.run(queue_, slices));
     std::vector<float> gap(slices), growth(slices);
-    std::vector<std::int32_t> inside(slices), bad(slices);
-    std::vector<std::uint8_t> grew(slices);
+    std::vector<std::int32_t> overlapping(slices), outside(slices), bad(slices);
+    std::vector<std::uint8_t> changed(slices);
     read(slice_gap_, gap, "slice_gap");
-    read(slice_inside_, inside, "slice_inside");
+    read(slice_overlap_, overlapping, "slice_overlap");
+    read(slice_outside_, outside, "slice_outside");
     read(slice_bad_, bad, "slice_bad");
     read(growth_, growth, "growth");
-    read(grew_, grew, "grew", true);
+    read(changed_, changed, "growth_changed", true);
     settle_times();
     PhaseStopwatch w(times_.statistics);
     StepStatistics st;
     st.iteration = iteration_;
     std::int32_t grown = 0;
     for (std::int32_t s = 0; s < slices; ++s) {
-      grown += grew[s];
-      st.overlapping_vertices += inside[s];
+      grown += changed[s] == AP_GROWTH_GREW;
+      st.overlapping_vertices += overlapping[s];
+      st.outside_vertices += outside[s];
       if (st.finite && bad[s] >= 0) st.finite = false, st.first_bad_vertex = bad[s];
     }
     reduce_slice_statistics(gap, growth, grown, st);
@@ -254,16 +271,17 @@ class DeviceBackend final : public OpenclBackend {
     world.breakdown = out != nullptr ? 1 : 0;
     forces_.set(0, world);
     slice_centroids_.run(queue_, world_.slices);
+    slice_boxes_.run(queue_, world_.slices);
     repulsion_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
     forces_.set(0, world_);
     reference::StepForces r;
     r.total.assign(n);
     r.closest.resize(n);
-    r.inside.resize(n);
+    r.contact.resize(n);
     read(fx_, r.total.x, "fx"), read(fy_, r.total.y, "fy"), read(ft_, r.total.t, "ft");
     read(closest_, r.closest, "closest");
-    read(inside_, r.inside, "inside", true);
+    read(contact_, r.contact, "contact", true);
     if (out != nullptr) {
       std::vector<float> all(static_cast<std::size_t>(3) * AP_FORCE_COMPONENTS * n);
       read(breakdown_, all, "breakdown", true);
@@ -428,10 +446,11 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer boundary_buf_;
   cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
-  cl::Buffer fx_, fy_, ft_, closest_, inside_, grew_, breakdown_, slice_gap_, slice_inside_, slice_bad_;
+  cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
+      slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_, grow_,
-      rest_lengths_, statistics_;
+      grid_order_, grid_gather_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_,
+      containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
   std::vector<std::pair<double*, cl::Event>> pending_;

@@ -13,12 +13,13 @@ class ReferenceBackend final : public Backend {
   ReferenceBackend(const Topology& topology, SimState initial, const Params& params)
       : topo_(topology), state_(std::move(initial)), params_(params) {
     slice_gap_.assign(topo_.slice_count(), std::numeric_limits<float>::infinity());
-    inside_.assign(topo_.vertex_count(), 0);
+    contact_.assign(topo_.vertex_count(), 0);
   }
 
   std::string name() const override { return "reference"; }
 
-  // One step in the order of design.md "One step"; each phase is timed on its own.
+  // One step: grid, forces, integration, constraints (§5.2, then containment), growth (§5.3); each
+  // phase is timed on its own.
   void step() override {
     if (state_.iteration % static_cast<std::uint64_t>(params_.grid_rebuild_interval) == 0 || grid_.n == 0) {
       PhaseStopwatch w(times_.grid);
@@ -45,9 +46,13 @@ class ReferenceBackend final : public Backend {
       reference::apply_loop(topo_, state_);
     }
     {
+      PhaseStopwatch w(times_.constraints);
+      reference::apply_containment(topo_, state_);
+    }
+    {
       PhaseStopwatch w(times_.growth);
-      grown_ = reference::grow_slices(topo_, forces.inside, params_, state_, grew_);
-      reference::update_rest_lengths(topo_, grew_, state_);
+      grown_ = reference::grow_slices(topo_, forces.contact, params_, state_, changed_);
+      reference::update_rest_lengths(topo_, changed_, state_);
     }
     {
       PhaseStopwatch w(times_.statistics);
@@ -57,7 +62,7 @@ class ReferenceBackend final : public Backend {
           gap = forces.closest[v] < gap ? forces.closest[v] : gap;
         slice_gap_[s] = gap;
       }
-      inside_ = std::move(forces.inside);
+      contact_ = std::move(forces.contact);
     }
     ++state_.iteration;
   }
@@ -67,7 +72,10 @@ class ReferenceBackend final : public Backend {
     StepStatistics st;
     st.iteration = state_.iteration;
     reduce_slice_statistics(slice_gap_, state_.growth, grown_, st);
-    for (std::uint8_t f : inside_) st.overlapping_vertices += f;
+    for (const std::uint8_t c : contact_) {
+      st.overlapping_vertices += (c & contact_overlap) != 0;
+      st.outside_vertices += (c & contact_outside) != 0;
+    }
     for (std::int32_t v = 0; v < topo_.vertex_count() && st.finite; ++v) {
       const bool ok = std::isfinite(state_.x[v]) && std::isfinite(state_.y[v]) && std::isfinite(state_.t[v]) &&
                       std::isfinite(state_.vx[v]) && std::isfinite(state_.vy[v]) && std::isfinite(state_.vt[v]);
@@ -85,7 +93,7 @@ class ReferenceBackend final : public Backend {
   Params params_;
   reference::CollisionGrid grid_;
   std::vector<float> slice_gap_;
-  std::vector<std::uint8_t> inside_, grew_;
+  std::vector<std::uint8_t> contact_, changed_;
   std::int32_t grown_ = 0;
   PhaseTimes times_;
 };

@@ -1,8 +1,10 @@
 // Boundary force, paper Eq. 4: F_bdr = k_bdr (p_b − x) for a vertex outside the container, p_b the
-// closest point on the container's boundary. The container is the same in every t, so the test and
-// the force are in x, y only. Holes count: the even–odd rule over the segments of all rings puts a
-// vertex inside a hole outside the container, and p_b is searched on every ring (the authors'
-// hole branch pulled towards the outer ring only, notes §3.12.7).
+// closest point on the container's boundary; the wall's repulsion on a boundary vertex inside; and the
+// containment projection that backs them up (docs/parameters.md, "Containment"). The
+// container is the same in every t, so the test and the force are in x, y only. Holes count: the
+// even–odd rule over the segments of all rings puts a vertex inside a hole outside the container, and
+// p_b is searched on every ring.
+#include <cmath>
 #include <limits>
 
 #include "animpak/reference.hpp"
@@ -16,18 +18,19 @@ bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float
   return px < xi;
 }
 
-Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
-  const ContainerGeometry& box = topo.container;
+ContainerQuery container_query(const ContainerGeometry& box, float px, float py, bool nearest) {
+  ContainerQuery q;
   const std::size_t segments = box.ax.size();
-  const float px = state.x[v], py = state.y[v];
+  if (segments == 0) return q;
   bool inside = false;
   for (std::size_t i = 0; i < segments; ++i)
     if (ray_crosses_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i])) inside = !inside;
-  if (inside || segments == 0) return {};
+  q.inside = inside;
+  q.qx = px;
+  q.qy = py;
+  if (inside && !nearest) return q;
 
   // Closest point over all segments; the first segment reaching the minimum wins.
-  float best2 = std::numeric_limits<float>::infinity();
-  float qx = px, qy = py;
   for (std::size_t i = 0; i < segments; ++i) {
     const float dx = box.bx[i] - box.ax[i], dy = box.by[i] - box.ay[i];
     const float len2 = dx * dx + dy * dy;
@@ -38,14 +41,53 @@ Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& 
     const float cx = box.ax[i] + dx * s, cy = box.ay[i] + dy * s;
     const float ex = px - cx, ey = py - cy;
     const float d2 = ex * ex + ey * ey;
-    if (d2 < best2) {
-      best2 = d2;
-      qx = cx;
-      qy = cy;
+    if (d2 < q.distance2) {
+      q.distance2 = d2;
+      q.qx = cx;
+      q.qy = cy;
     }
   }
-  const float k = static_cast<float>(params.k_boundary);
-  return {k * (qx - px), k * (qy - py), 0.0f};
+  return q;
+}
+
+Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, float py, bool boundary) {
+  if (!q.inside) {
+    const float k = static_cast<float>(params.k_boundary);
+    return {k * (q.qx - px), k * (q.qy - py), 0.0f};
+  }
+  // Inside, a boundary vertex is pushed off the wall as by a neighbour's closest point (Eq. 1), so an
+  // element pressed to the wall, which stops growing there, moves back into open space.
+  if (!boundary || !(q.distance2 > 0.0f) || !(q.distance2 < std::numeric_limits<float>::infinity())) return {};
+  const float ux = px - q.qx, uy = py - q.qy;
+  const float inv_len = 1.0f / std::sqrt(q.distance2);
+  const float w = inv_len * (1.0f / (static_cast<float>(params.repulsion_epsilon) + q.distance2));
+  const float k = static_cast<float>(params.wall_repulsion * params.k_repulsion);
+  return {k * (ux * w), k * (uy * w), 0.0f};
+}
+
+Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
+  const float px = state.x[v], py = state.y[v];
+  const bool boundary = (topo.flags[v] & vertex_boundary) != 0;
+  return boundary_force(params, container_query(topo.container, px, py, boundary), px, py, boundary);
+}
+
+void apply_containment(const Topology& topo, SimState& state) {
+  const std::int32_t n = topo.vertex_count();
+  for (std::int32_t v = 0; v < n; ++v) {
+    const float px = state.x[v], py = state.y[v];
+    const ContainerQuery q = container_query(topo.container, px, py, false);
+    if (q.inside) continue;
+    // Past p_b along the direction from x to p_b, so rounding cannot leave the vertex on the outside;
+    // a vertex exactly on the boundary has no such direction and stays.
+    const float dx = q.qx - px, dy = q.qy - py;
+    const float d2 = dx * dx + dy * dy;
+    if (!(d2 > 0.0f)) continue;
+    const float w = containment_margin / std::sqrt(d2);
+    state.x[v] = q.qx + dx * w;
+    state.y[v] = q.qy + dy * w;
+    state.vx[v] = 0.0f;
+    state.vy[v] = 0.0f;
+  }
 }
 
 }  // namespace animpak::reference

@@ -1,33 +1,60 @@
+// Growth of §5.3 with the containment and steadiness rules of docs/parameters.md ("Growth"): the paper
+// pauses a slice that overlaps; here an overlapping or spilling slice shrinks back, a slice touching the
+// wall pauses, and no slice outgrows growth_ratio × the smallest slice of its element, so an element's
+// size changes smoothly over the loop.
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
 
-// §5.3: a slice grows by growth_rate · Δt_sim when none of its vertices is inside another element,
-// up to max_growth; otherwise its growth pauses. Returns the number of slices that grew.
-std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& inside, const Params& params,
-                         SimState& state, std::vector<std::uint8_t>& grew) {
+std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
+                         SimState& state, std::vector<std::uint8_t>& changed) {
   const float step = static_cast<float>(params.growth_rate * params.dt);
+  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
   const float cap = static_cast<float>(params.max_growth);
+  const float ratio = static_cast<float>(params.growth_ratio);
   const std::int32_t slices = topo.slice_count();
-  grew.assign(slices, 0);
-  std::int32_t count = 0;
+
+  // Each slice's own proposal from its contacts.
+  std::vector<float> proposed(slices);
   for (std::int32_t s = 0; s < slices; ++s) {
-    bool blocked = false;
-    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1] && !blocked; ++v) blocked = inside[v] != 0;
-    if (blocked || state.growth[s] >= cap) continue;
-    const float g = state.growth[s] + step;
-    state.growth[s] = g < cap ? g : cap;
-    grew[s] = 1;
-    ++count;
+    std::uint8_t bits = 0;
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) bits |= contact[v];
+    const float g = state.growth[s];
+    float next = g;
+    if ((bits & (contact_overlap | contact_outside)) != 0) {
+      next = g - shrink;
+      if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
+    } else if ((bits & contact_wall) == 0 && g < cap) {
+      next = g + step;
+      if (next > cap) next = cap;
+    }
+    proposed[s] = next;
   }
-  return count;
+
+  // The element's smallest proposal bounds every slice of it.
+  changed.assign(slices, growth_kept);
+  std::int32_t grown = 0;
+  for (std::int32_t e = 0; e < topo.element_count(); ++e) {
+    const std::int32_t first = topo.element_slice_begin[e], end = topo.element_slice_begin[e + 1];
+    if (first == end) continue;
+    float smallest = proposed[first];
+    for (std::int32_t s = first + 1; s < end; ++s) smallest = proposed[s] < smallest ? proposed[s] : smallest;
+    const float limit = ratio * smallest;
+    for (std::int32_t s = first; s < end; ++s) {
+      const float g = proposed[s] < limit ? proposed[s] : limit;
+      if (g > state.growth[s]) changed[s] = growth_grew, ++grown;
+      if (g < state.growth[s]) changed[s] = growth_shrank;
+      state.growth[s] = g;
+    }
+  }
+  return grown;
 }
 
-// Rest lengths of every spring with an end on a slice that grew, from the scaled reference copy.
-void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& grew, SimState& state) {
+// Rest lengths of every spring with an end on a slice whose g changed, from the scaled reference copy.
+void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state) {
   for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
-      if (grew[topo.slice[v]] || grew[topo.slice[topo.spring_other[k]]])
+      if (changed[topo.slice[v]] || changed[topo.slice[topo.spring_other[k]]])
         state.spring_rest[k] = reference_rest_length(topo, state.growth, v, k);
 }
 

@@ -1,7 +1,11 @@
-// Overlap detection and the overlap force, paper Eq. 3: F_ovr = k_ovr Σ_i (p_i − x), p_i the
-// centroids of the slice triangles incident on x. Unlike the authors' code (which tests only the
-// element of the single nearest closest point, notes §3.5), every other element owning a near
-// envelope triangle is tested, so a nearer third element cannot hide the one x is inside.
+// Overlap test and force, paper Eq. 3 (§5): a boundary vertex that penetrates another element is pushed
+// out, and its slice stops growing (§5.3). The paper finds penetrations through the collision grid's
+// near block; that misses a vertex more than one cell deep and an edge that crosses another element's
+// outline with neither end inside (thin parts: tails, legs). Here every boundary vertex is tested against
+// every other element whose boundary polygon, interpolated linearly at the vertex's t, can reach it (a
+// box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk.
+// The force adds to Eq. 3 a pull towards the other element's outline that grows with depth
+// (docs/parameters.md, "Overlaps").
 #include <algorithm>
 
 #include "animpak/reference.hpp"
@@ -14,46 +18,107 @@ namespace {
 // vertices at one t after every step).
 float slice_t(const Topology& topo, const SimState& state, std::int32_t s) { return state.t[topo.slice_begin[s]]; }
 
-// Even–odd test of (px, py) against element e's boundary polygon interpolated linearly at t between
-// the first pair of consecutive slices whose t values bracket t. Outside the element's t range: no.
-bool inside_element_at(const Topology& topo, const SimState& state, std::int32_t e, float px, float py, float t) {
-  for (std::int32_t s = topo.element_slice_begin[e]; s + 1 < topo.element_slice_begin[e + 1]; ++s) {
-    const float t0 = slice_t(topo, state, s), t1 = slice_t(topo, state, s + 1);
-    if (!(std::min(t0, t1) <= t && t <= std::max(t0, t1))) continue;
-    // Equal slice times (a flat pair) take the lower slice's polygon.
-    const float w = t1 != t0 ? (t - t0) / (t1 - t0) : 0.0f;
-    const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
-    const std::int32_t count = topo.slice_boundary[s];
-    bool inside = false;
-    for (std::int32_t k = 0; k < count; ++k) {
-      const std::int32_t j = k + 1 == count ? 0 : k + 1;
-      const float ax = state.x[lo + k] + (state.x[hi + k] - state.x[lo + k]) * w;
-      const float ay = state.y[lo + k] + (state.y[hi + k] - state.y[lo + k]) * w;
-      const float bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
-      const float by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
-      if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-    }
-    return inside;
-  }
-  return false;
+float orient(float ax, float ay, float bx, float by, float cx, float cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
+
+bool opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
 
 }  // namespace
 
-bool inside_other_element(const Topology& topo, const SimState& state, std::int32_t v,
-                          const std::vector<std::int32_t>& near) {
-  if ((topo.flags[v] & vertex_boundary) == 0) return false;
-  std::vector<std::int32_t> tested;
-  for (const std::int32_t tri : near) {
-    const std::int32_t e = topo.env_element[tri];
-    if (e == topo.element[v] || std::find(tested.begin(), tested.end(), e) != tested.end()) continue;
-    tested.push_back(e);
-    if (inside_element_at(topo, state, e, state.x[v], state.y[v], state.t[v])) return true;
+void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
+  const std::int32_t slices = topo.slice_count();
+  out.x0.assign(slices, 0.0f);
+  out.y0.assign(slices, 0.0f);
+  out.x1.assign(slices, 0.0f);
+  out.y1.assign(slices, 0.0f);
+  for (std::int32_t s = 0; s < slices; ++s) {
+    const std::int32_t lo = topo.slice_begin[s], count = topo.slice_boundary[s];
+    if (count == 0) continue;
+    float x0 = state.x[lo], x1 = x0, y0 = state.y[lo], y1 = y0;
+    for (std::int32_t v = lo + 1; v < lo + count; ++v) {
+      x0 = state.x[v] < x0 ? state.x[v] : x0;
+      x1 = state.x[v] > x1 ? state.x[v] : x1;
+      y0 = state.y[v] < y0 ? state.y[v] : y0;
+      y1 = state.y[v] > y1 ? state.y[v] : y1;
+    }
+    out.x0[s] = x0, out.y0[s] = y0, out.x1[s] = x1, out.y1[s] = y1;
   }
-  return false;
 }
 
-Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
+OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v) {
+  OverlapResult r;
+  if ((topo.flags[v] & vertex_boundary) == 0) return r;
+  const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
+  const std::int32_t own_lo = topo.slice_begin[own_slice], own_count = topo.slice_boundary[own_slice];
+  const std::int32_t next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
+  const float px = state.x[v], py = state.y[v], pt = state.t[v];
+  const float nx = state.x[next], ny = state.y[next];
+  const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
+  const std::int32_t own_index = own_slice - topo.element_slice_begin[own];
+  float best2 = 0.0f;
+
+  for (std::int32_t e = 0; e < topo.element_count(); ++e) {
+    if (e == own) continue;
+    const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
+    if (count < 2) continue;
+    // The pair of e's slices around v's t: start at v's own slice index (slices stay near their rest
+    // times), then walk down or up.
+    std::int32_t k = std::min(own_index, count - 2);
+    while (k > 0 && pt < slice_t(topo, state, first + k)) --k;
+    while (k < count - 2 && pt > slice_t(topo, state, first + k + 1)) ++k;
+    const std::int32_t s = first + k;
+    const float t0 = slice_t(topo, state, s), t1 = slice_t(topo, state, s + 1);
+    if (!(std::min(t0, t1) <= pt && pt <= std::max(t0, t1))) continue;
+    // The interpolated polygon lies in the union of the two slices' boxes.
+    const float bx0 = std::min(boxes.x0[s], boxes.x0[s + 1]), bx1 = std::max(boxes.x1[s], boxes.x1[s + 1]);
+    const float by0 = std::min(boxes.y0[s], boxes.y0[s + 1]), by1 = std::max(boxes.y1[s], boxes.y1[s + 1]);
+    if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) continue;
+
+    // Equal slice times (a flat pair) take the lower slice's polygon.
+    const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
+    const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
+    const std::int32_t edges = topo.slice_boundary[s];
+    bool inside = false, crosses = false;
+    float near2 = std::numeric_limits<float>::infinity(), qx = px, qy = py;
+    for (std::int32_t i = 0; i < edges; ++i) {
+      const std::int32_t j = i + 1 == edges ? 0 : i + 1;
+      const float ax = state.x[lo + i] + (state.x[hi + i] - state.x[lo + i]) * w;
+      const float ay = state.y[lo + i] + (state.y[hi + i] - state.y[lo + i]) * w;
+      const float bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
+      const float by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
+      if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
+      // A proper crossing of v's boundary edge with this edge (touching does not count).
+      if (opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
+          opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by)))
+        crosses = true;
+      // The closest point of this edge, as for the container (boundary.cpp).
+      const float dx = bx - ax, dy = by - ay;
+      const float len2 = dx * dx + dy * dy;
+      float f = 0.0f;
+      if (len2 > 0.0f) f = ((px - ax) * dx + (py - ay) * dy) / len2;
+      if (f < 0.0f) f = 0.0f;
+      if (f > 1.0f) f = 1.0f;
+      const float cx = ax + dx * f, cy = ay + dy * f;
+      const float ux = px - cx, uy = py - cy;
+      const float d2 = ux * ux + uy * uy;
+      if (d2 < near2) near2 = d2, qx = cx, qy = cy;
+    }
+    if (crosses) r.overlap = true;
+    // Inside several elements: the nearest way out, the first element reaching it wins.
+    if (inside && (!r.inside || near2 < best2)) {
+      r.overlap = r.inside = true;
+      best2 = near2;
+      r.qx = qx;
+      r.qy = qy;
+    }
+  }
+  return r;
+}
+
+Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
+                    const OverlapResult& overlap) {
+  if (!overlap.overlap) return {};
   const float x = state.x[v], y = state.y[v], t = state.t[v];
   Vec3f sum;
   for (std::int32_t k = topo.tri_begin[v]; k < topo.tri_begin[v + 1]; ++k) {
@@ -67,7 +132,13 @@ Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& p
     sum.t = sum.t + (pt - t);
   }
   const float k_ovr = static_cast<float>(params.k_overlap);
-  return {k_ovr * sum.x, k_ovr * sum.y, k_ovr * sum.t};
+  Vec3f f{k_ovr * sum.x, k_ovr * sum.y, k_ovr * sum.t};
+  if (overlap.inside) {
+    const float k_depth = static_cast<float>(params.k_overlap_depth);
+    f.x = f.x + k_depth * (overlap.qx - x);
+    f.y = f.y + k_depth * (overlap.qy - y);
+  }
+  return f;
 }
 
 }  // namespace animpak::reference

@@ -26,7 +26,7 @@ void add_term(float ux, float uy, float ut, float eps, Vec3f& sum) {
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
                                 const CollisionGrid& grid, std::int32_t v,
                                 const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
-                                bool inside) {
+                                bool overlapping) {
   RepulsionResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const Vec3f x{state.x[v], state.y[v], state.t[v]};
@@ -45,9 +45,9 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
   }
   for (const std::int32_t tri : far) add_term(x.x - grid.cx[tri], x.y - grid.cy[tri], x.t - grid.ct[tri], eps, sum);
 
-  // The closest distance feeds growth and the stop test even while the vertex is inside.
+  // The closest distance feeds the stop test even while the vertex overlaps.
   r.closest = std::sqrt(closest2);
-  if (inside) return r;
+  if (overlapping) return r;
   const float k = static_cast<float>(params.k_repulsion);
   r.force = {k * sum.x, k * sum.y, k * sum.t};
   return r;

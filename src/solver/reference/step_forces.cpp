@@ -1,9 +1,12 @@
-// Total force, paper Eq. 7, for every vertex from one snapshot of positions (design.md "One step",
-// phase 2). Per vertex, in this order: the grid queries, the overlap test (Eq. 3 replaces Eq. 1 for a
-// vertex inside another element), then each force. The sum is formed left to right in Eq. 7's order,
-// with the target-point spring (an Eq. 2 spring) right after the edge springs:
+// Total force, paper Eq. 7, for every vertex from one snapshot of positions (docs/parameters.md lists
+// what we add to the paper). Per vertex, in this order: the grid queries, the overlap test (Eq. 3
+// replaces Eq. 1 for a vertex that overlaps another element), the container query, then each force.
+// The sum is formed left to right in Eq. 7's order, with the target-point spring (an Eq. 2 spring)
+// right after the edge springs:
 //   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
 // The kernels add in exactly this order.
+#include <cmath>
+
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
@@ -20,32 +23,39 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   StepForces r;
   r.total.assign(n);
   r.closest.assign(n, std::numeric_limits<float>::infinity());
-  r.inside.assign(n, 0);
+  r.contact.assign(n, 0);
   if (out != nullptr) {
     for (ForceField* f : {&out->repulsion, &out->springs, &out->target, &out->boundary, &out->overlap,
                           &out->torsion, &out->temporal})
       f->assign(n);
   }
 
-  // Slice centroids first: a per-slice pass whose result every vertex of the slice reads (Eq. 5).
+  // Per-slice passes first, whose results every vertex of the slice reads: the centroids (Eq. 5) and the
+  // boxes of the boundary polygons (the overlap test).
   std::vector<float> cx, cy;
   slice_centroids(topo, state, cx, cy);
+  SliceBoxes boxes;
+  slice_boxes(topo, state, boxes);
+  const float stop_gap = static_cast<float>(params.stop_gap);
 
   std::vector<std::int32_t> near, far;
   for (std::int32_t v = 0; v < n; ++v) {
     near.clear();
     far.clear();
-    if ((topo.flags[v] & vertex_boundary) != 0) {
-      const Vec3f q{state.x[v], state.y[v], state.t[v]};
+    const bool boundary = (topo.flags[v] & vertex_boundary) != 0;
+    const float px = state.x[v], py = state.y[v];
+    if (boundary) {
+      const Vec3f q{px, py, state.t[v]};
       near_triangles(grid, topo, q, topo.element[v], near);
       far_triangles(grid, topo, q, topo.element[v], far);
     }
-    const bool inside = inside_other_element(topo, state, v, near);
-    const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, inside);
+    const OverlapResult overlap = overlap_test(topo, state, boxes, v);
+    const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
+    const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f edg = spring_force(topo, state, params, v);
     const Vec3f tgt = target_force(topo, state, params, v);
-    const Vec3f bdr = boundary_force(topo, state, params, v);
-    const Vec3f ovr = inside ? overlap_force(topo, state, params, v) : Vec3f{};
+    const Vec3f bdr = boundary_force(params, wall, px, py, boundary);
+    const Vec3f ovr = overlap_force(topo, state, params, v, overlap);
     const std::int32_t s = topo.slice[v];
     const Vec3f tor = torsion_force(topo, state, params, v, cx[s], cy[s]);
     const Vec3f tmp = temporal_force(topo, state, params, v);
@@ -53,8 +63,16 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     r.total.x[v] = rpl.force.x + edg.x + tgt.x + bdr.x + ovr.x + tor.x + tmp.x;
     r.total.y[v] = rpl.force.y + edg.y + tgt.y + bdr.y + ovr.y + tor.y + tmp.y;
     r.total.t[v] = rpl.force.t + edg.t + tgt.t + bdr.t + ovr.t + tor.t + tmp.t;
-    r.closest[v] = rpl.closest;
-    r.inside[v] = inside ? 1 : 0;
+    // The wall is a neighbour too (§5.3's slice gap): a lone element stops at the container.
+    std::uint8_t contact = wall.inside ? 0 : contact_outside;
+    if (boundary) {
+      const float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
+      r.closest[v] = wall_gap < rpl.closest ? wall_gap : rpl.closest;
+      if (wall_gap < stop_gap) contact |= contact_wall;
+    }
+    if (overlap.overlap) contact |= contact_overlap;
+    if (overlap.inside) contact |= contact_inside;
+    r.contact[v] = contact;
     if (out != nullptr) {
       out->repulsion.set(v, rpl.force);
       out->springs.set(v, edg);

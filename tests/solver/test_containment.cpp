@@ -1,0 +1,93 @@
+// Containment (docs/parameters.md, "Containment"): the container's wall is a neighbour in the slice gap
+// of §5.3, a slice at the wall stops growing, and a vertex that a step leaves outside is put back.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "animpak/run.hpp"
+#include "animpak/scene.hpp"
+#include "scene/tiny_scenes.hpp"
+#include "tiny_worlds.hpp"
+
+using namespace animpak;
+using namespace animpak::reference;
+using animpak::test::WorldBuilder;
+
+TEST_CASE("containment: a vertex outside the container or inside a hole moves just inside, and stops") {
+  WorldBuilder b;
+  b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.1f)});  // a hole in the middle
+  b.add_element({{{{1.2f, 0.5f}, {0.52f, 0.47f}, {0.3f, 0.3f}}, 0.5f}}, false);
+  test::World w = b.build();
+  w.state.vx = {1.0f, 2.0f, 3.0f};
+  w.state.vy = {1.0f, 2.0f, 3.0f};
+  apply_containment(w.topo, w.state);
+  // Vertex 0 was 0.2 right of the outline: it lands a hair left of x = 1.
+  CHECK(w.state.x[0] < 1.0f);
+  CHECK(w.state.x[0] == Approx(1.0f - containment_margin).epsilon(1e-6));
+  CHECK(w.state.y[0] == 0.5f);
+  // Vertex 1 was in the hole [0.4, 0.6]², 0.07 below its top edge y = 0.4 and 0.08 from its right edge
+  // x = 0.6: it leaves through the top.
+  CHECK(w.state.x[1] == 0.52f);
+  CHECK(w.state.y[1] < 0.4f);
+  CHECK(w.state.y[1] == Approx(0.4f - containment_margin).epsilon(1e-6));
+  // Both are now inside, and stopped; vertex 2 was inside and keeps everything.
+  for (int v : {0, 1}) {
+    CHECK(container_query(w.topo.container, w.state.x[v], w.state.y[v], false).inside);
+    CHECK((w.state.vx[v] == 0.0f && w.state.vy[v] == 0.0f));
+  }
+  CHECK((w.state.x[2] == 0.3f && w.state.y[2] == 0.3f && w.state.vx[2] == 3.0f));
+}
+
+TEST_CASE("containment: a slice whose boundary touches the wall is flagged and stops growing") {
+  const Params p = test::paper_params();
+  WorldBuilder b;
+  std::vector<float> times;
+  for (int k = 0; k <= 25; ++k) times.push_back(static_cast<float>(k) / 25.0f);
+  std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.05f, times);
+  slices[7].ring = test::square(0.95f - p.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
+  slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                     // slice 9 spills past it
+  b.add_element(slices);
+  const test::World w = b.build();
+  const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
+  const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+  for (int s = 0; s < 26; ++s) {
+    std::uint8_t bits = 0;
+    float gap = std::numeric_limits<float>::infinity();
+    for (int v = s * 4; v < s * 4 + 4; ++v) bits |= f.contact[v], gap = std::min(gap, f.closest[v]);
+    INFO("slice " << s);
+    CHECK(((bits & contact_wall) != 0) == (s == 7 || s == 9));
+    CHECK(((bits & contact_outside) != 0) == (s == 9));
+    // Nothing else is near, so the gap is the wall's: 0.45 for the centred slices.
+    if (s != 7 && s != 9) CHECK(gap == Approx(0.45f).epsilon(1e-5));
+    if (s == 9) CHECK(gap == 0.0f);
+  }
+  SimState state = w.state;
+  Params grow = p;
+  grow.growth_ratio = 100.0;
+  std::vector<std::uint8_t> changed;
+  grow_slices(w.topo, f.contact, grow, state, changed);
+  CHECK(changed[7] == growth_kept);
+  CHECK(changed[9] == growth_kept);  // at g = 1 already: a spilling slice cannot shrink below the start
+  CHECK(changed[8] == growth_grew);
+}
+
+TEST_CASE("containment: a lone element in a large container stops at the wall, inside it") {
+  // One star in the heart. Without the wall as a neighbour its slice gap stays infinite, the stop test
+  // never passes and it grows to max_growth, far past the heart.
+  const World w = make_world(parse_scene(
+      test::star_scene(1, 5, 2, {"", R"("cell_size": 0.2, "interior_spacing": 0.5, "max_iterations": 60000)"}),
+      "tiny.json", "/"));
+  REQUIRE(w.elements.size() == 1);
+  auto backend = make_reference_backend(w.topology, w.state, w.params);
+  RunControl control;
+  control.max_iterations = static_cast<std::uint64_t>(w.params.max_iterations);
+  const RunResult r = run_simulation(*backend, w.params, control);
+  INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations");
+  REQUIRE(r.reason == StopReason::gap);
+  CHECK(r.last.max_growth < static_cast<float>(w.params.max_growth) / 2);
+  CHECK(r.last.max_growth > 3.0f);  // it did grow to the wall: a tenth of the heart's width at least
+  int outside = 0;
+  for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v)
+    outside += !w.container.contains({r.last_good.x[v], r.last_good.y[v]});
+  CHECK(outside == 0);
+}
