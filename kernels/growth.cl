@@ -5,6 +5,7 @@
 
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world, const ForceParams p,
+                             const int growing,               /* input: 0 in the settling phase */
                              __global const int* slice_begin, /* input: slices + 1 */
                              __global const uchar* contact,   /* input: AP_CONTACT_* per vertex, from step_forces */
                              __global const float* growth,    /* input: g per slice */
@@ -18,7 +19,7 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
   if ((bits & (AP_CONTACT_OVERLAP | AP_CONTACT_OUTSIDE)) != 0) {
     next = g - p.shrink_step;
     if (next < 1.0f) next = 1.0f;
-  } else if ((bits & AP_CONTACT_WALL) == 0 && g < p.max_growth) {
+  } else if (growing != 0 && (bits & AP_CONTACT_WALL) == 0 && g < p.max_growth) {
     next = g + p.growth_step;
     if (next > p.max_growth) next = p.max_growth;
   }

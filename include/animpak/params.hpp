@@ -49,6 +49,7 @@ struct Params {
   double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
   double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
   int max_iterations = 100000;      ///< hard cap on steps
+  int settle_iterations = 3000;     ///< after the gap test passes, steps without growth to clear overlaps
   int check_interval = 10;          ///< NaN/Inf check and statistics every k steps
   double max_growth = 15.0;         ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
 

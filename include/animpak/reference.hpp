@@ -200,10 +200,10 @@ enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shra
 /// One growth step (docs/parameters.md, "Growth"): a slice with a vertex that overlaps another element or
 /// lies outside the container shrinks by shrink_rate · Δt_sim (not below 1); one with a boundary vertex
 /// nearer the wall than stop_gap, or at max_growth, keeps its g; any other grows by growth_rate · Δt_sim.
-/// Then every slice is limited to growth_ratio × the smallest g of its element. `changed` marks what
-/// moved; returns how many slices grew.
+/// Then every slice is limited to growth_ratio × the smallest g of its element. Without `growing` (the
+/// settling phase) no slice grows. `changed` marks what moved; returns how many slices grew.
 std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                         SimState& state, std::vector<std::uint8_t>& changed);
+                         bool growing, SimState& state, std::vector<std::uint8_t>& changed);
 
 /// Recomputes the rest length of every spring with an end on a slice marked in `changed`.
 void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state);

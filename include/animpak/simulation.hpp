@@ -14,7 +14,7 @@
 
 namespace animpak {
 
-enum class StopReason { running, gap, growth, max_iterations, interrupted, non_finite };
+enum class StopReason { running, gap, unsettled, growth, max_iterations, interrupted, non_finite };
 const char* stop_reason_name(StopReason r);
 
 /// Reduced statistics of the latest step (no full read-back needed).
@@ -73,6 +73,9 @@ class Backend {
   virtual void step() = 0;
   virtual StepStatistics statistics() = 0;
   virtual SimState state() = 0;  ///< a full read-back (checkpoints, rendering)
+  /// Stops growth for good (slices may still shrink): the settling phase of the stop test. Recorded in
+  /// the state's settling_since.
+  virtual void stop_growth() = 0;
   /// Phase times so far. A device backend adds a launch's time once it has completed: call finish()
   /// before reading them (statistics() and state() finish too).
   virtual const PhaseTimes& times() const = 0;

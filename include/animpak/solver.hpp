@@ -96,6 +96,9 @@ struct SimState {
   std::vector<float> spring_rest; ///< rest length per CSR slot (both ends of a spring hold the same value)
   std::vector<float> growth;      ///< g per global slice (§5.3)
   std::uint64_t iteration = 0;
+  /// The iteration at which growth stopped for the settling phase (docs/parameters.md, "Stop test"),
+  /// or 0 while slices still grow.
+  std::uint64_t settling_since = 0;
 };
 
 /// §5.3: the rest length of CSR slot `slot` of vertex `v`: the distance between the spring's two ends

@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 32> table{{
+const std::array<ParamInfo, 33> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "arc length between boundary samples"},
     {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
@@ -40,6 +40,7 @@ const std::array<ParamInfo, 32> table{{
     {"stop_gap", &Params::stop_gap, 0.0, 1.0, "stop when the largest per-slice gap is below this (§5.3)"},
     {"stop_growth", &Params::stop_growth, 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
     {"max_iterations", &Params::max_iterations, 1, 100000000, "hard cap on simulation steps"},
+    {"settle_iterations", &Params::settle_iterations, 0, 100000000, "steps without growth to clear overlaps at the end"},
     {"check_interval", &Params::check_interval, 1, 100000, "NaN check and statistics every k steps"},
     // The two below are not the paper's but shape every result, so they are overridable too.
     {"max_growth", &Params::max_growth, 1.0, inf, "cap on a slice's growth factor g"},

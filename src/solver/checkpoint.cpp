@@ -96,6 +96,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put<std::uint64_t>(c.seed);
   w.put_string(c.stop_reason);
   w.put<std::uint64_t>(c.state.iteration);
+  w.put<std::uint64_t>(c.state.settling_since);
   for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
                         &c.state.spring_rest, &c.state.growth})
     w.put_array(*a);
@@ -140,6 +141,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   c.seed = r.get<std::uint64_t>();
   c.stop_reason = r.get_string();
   c.state.iteration = r.get<std::uint64_t>();
+  c.state.settling_since = r.get<std::uint64_t>();
   for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
                   &c.state.growth})
     *a = r.get_array<float>();

@@ -33,10 +33,24 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     }
     result.last_good = backend.state();
     if (control.on_check) control.on_check(result.last);
-    // §5.3's gap test, and nothing overlapping or outside: a packing that stops must be a correct one.
-    if (result.last.max_slice_gap < static_cast<float>(params.stop_gap) && result.last.overlapping_vertices == 0 &&
-        result.last.outside_vertices == 0) {
+    // §5.3's gap test ends growth; then the packing settles without growing until nothing overlaps or
+    // spills (docs/parameters.md, "Stop test"), so a packing that stops is one the solver sees as correct.
+    const bool clean = result.last.overlapping_vertices == 0 && result.last.outside_vertices == 0;
+    std::uint64_t settling_since = result.last_good.settling_since;
+    if (settling_since == 0 && result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
+      if (clean) {
+        result.reason = StopReason::gap;
+        break;
+      }
+      backend.stop_growth();
+      settling_since = iteration;
+      result.last_good.settling_since = settling_since;
+    } else if (settling_since != 0 && clean) {
       result.reason = StopReason::gap;
+      break;
+    }
+    if (settling_since != 0 && iteration - settling_since >= static_cast<std::uint64_t>(params.settle_iterations)) {
+      result.reason = StopReason::unsettled;
       break;
     }
     if (params.stop_growth > 0.0 && result.last.min_growth >= static_cast<float>(params.stop_growth)) {

@@ -95,6 +95,7 @@ inline std::string state_difference(const SimState& ref, const SimState& dev) {
     if (!d.empty()) out += d + "\n";
   }
   if (ref.iteration != dev.iteration) out += "iteration differs\n";
+  if (ref.settling_since != dev.settling_since) out += "settling_since differs\n";
   return out;
 }
 

@@ -25,8 +25,9 @@ std::string statistics_difference(const StepStatistics& a, const StepStatistics&
 
 // Runs `steps` steps on both backends, comparing the state every `compare_every` steps and the
 // statistics at the end; stops at the first step that differs so the message points at it.
+// With `settle_at` > 0 both stop growing (the settling phase) after that step.
 void check_steps(const Topology& topo, const SimState& initial, const Params& params, int steps, int compare_every,
-                 const std::string& label) {
+                 const std::string& label, int settle_at = 0) {
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (devices.empty()) {
     WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
@@ -38,6 +39,7 @@ void check_steps(const Topology& topo, const SimState& initial, const Params& pa
     const std::string where = label + " on " + d.device.name + " (grid sorted on the " + grid_sort_name(sort) + ")";
     CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
     for (int step = 1; step <= steps; ++step) {
+      if (step == settle_at + 1 && settle_at > 0) ref->stop_growth(), dev->stop_growth();
       ref->step();
       dev->step();
       if (step % compare_every != 0 && step != steps) continue;
@@ -75,6 +77,7 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
   const animpak::World world = make_world(parse_scene(text, dir / "scene.json", dir));
   REQUIRE(world.elements.size() == 4);
   check_steps(world.topology, world.state, world.params, 100, 10, "star scene");
+  check_steps(world.topology, world.state, world.params, 60, 10, "star scene, settling from step 30", 30);
 }
 
 }  // namespace animpak::test

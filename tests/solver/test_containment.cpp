@@ -65,7 +65,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   Params grow = p;
   grow.growth_ratio = 100.0;
   std::vector<std::uint8_t> changed;
-  grow_slices(w.topo, f.contact, grow, state, changed);
+  grow_slices(w.topo, f.contact, grow, true, state, changed);
   CHECK(changed[7] == growth_kept);
   CHECK(changed[9] == growth_kept);  // at g = 1 already: a spilling slice cannot shrink below the start
   CHECK(changed[8] == growth_grew);

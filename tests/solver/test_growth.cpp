@@ -51,7 +51,7 @@ TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wal
 
   const SimState before = state;
   std::vector<std::uint8_t> changed;
-  const std::int32_t count = reference::grow_slices(topo, contact, params, state, changed);
+  const std::int32_t count = reference::grow_slices(topo, contact, params, true, state, changed);
   REQUIRE(changed.size() == static_cast<std::size_t>(topo.slice_count()));
   CHECK(count == topo.slice_count() - 5);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
@@ -91,7 +91,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
   contact[topo.slice_begin[2]] = contact_wall;
   std::vector<std::uint8_t> changed;
-  for (int step = 0; step < 40; ++step) reference::grow_slices(topo, contact, params, state, changed);
+  for (int step = 0; step < 40; ++step) reference::grow_slices(topo, contact, params, true, state, changed);
   for (std::int32_t s = topo.element_slice_begin[0]; s < topo.element_slice_begin[1]; ++s) {
     INFO("slice " << s);
     CHECK(state.growth[s] <= 1.3f * state.growth[2]);
@@ -106,7 +106,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   contact.assign(topo.vertex_count(), 0);
   contact[topo.slice_begin[topo.element_slice_begin[1]]] = contact_overlap;
   for (int step = 0; step < 10; ++step) {
-    reference::grow_slices(topo, contact, params, state, changed);
+    reference::grow_slices(topo, contact, params, true, state, changed);
     float lo = 1e9f, hi = 0.0f;
     for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
       lo = std::min(lo, state.growth[s]), hi = std::max(hi, state.growth[s]);

@@ -51,7 +51,8 @@ class DeviceBackend final : public OpenclBackend {
  public:
   DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
                 GridSort sort)
-      : topo_(topology), info_(info), iteration_(initial.iteration), rebuild_(params.grid_rebuild_interval),
+      : topo_(topology), info_(info), iteration_(initial.iteration), settling_since_(initial.settling_since),
+        rebuild_(params.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
     validate(topo_);
     const cl::Device device = opencl::device_for(info);
@@ -180,7 +181,7 @@ class DeviceBackend final : public OpenclBackend {
     containment_ = Kernel(program, "containment");
     containment_.bind(world_, seg_ax, seg_ay, seg_bx, seg_by, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
-    propose_growth_.bind(world_, p, slice_begin, contact_, growth_, proposed);
+    propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, slice_begin, contact_, growth_, proposed);
     grow_ = Kernel(program, "grow_slices");
     grow_.bind(world_, p, slice_element, element_slices, proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");
@@ -197,6 +198,11 @@ class DeviceBackend final : public OpenclBackend {
   const DeviceInfo& device() const override { return info_; }
   GridSort grid_sort() const override { return sort_; }
   void finish() override { settle_times(); }
+  void stop_growth() override {
+    if (settling_since_ != 0) return;
+    settling_since_ = iteration_;
+    propose_growth_.set(2, 0);
+  }
   const PhaseTimes& times() const override { return times_; }
 
   void step() override {
@@ -255,6 +261,7 @@ class DeviceBackend final : public OpenclBackend {
     read(growth_, s.growth, "growth", true);
     settle_times();
     s.iteration = iteration_;
+    s.settling_since = settling_since_;
     return s;
   }
 
@@ -428,6 +435,7 @@ class DeviceBackend final : public OpenclBackend {
   Topology topo_;
   DeviceInfo info_;
   std::uint64_t iteration_;
+  std::uint64_t settling_since_;
   int rebuild_;
   GridSort sort_;
   bool grid_built_ = false;

@@ -51,7 +51,7 @@ class ReferenceBackend final : public Backend {
     }
     {
       PhaseStopwatch w(times_.growth);
-      grown_ = reference::grow_slices(topo_, forces.contact, params_, state_, changed_);
+      grown_ = reference::grow_slices(topo_, forces.contact, params_, state_.settling_since == 0, state_, changed_);
       reference::update_rest_lengths(topo_, changed_, state_);
     }
     {
@@ -85,6 +85,9 @@ class ReferenceBackend final : public Backend {
   }
 
   SimState state() override { return state_; }
+  void stop_growth() override {
+    if (state_.settling_since == 0) state_.settling_since = state_.iteration;
+  }
   const PhaseTimes& times() const override { return times_; }
 
  private:
@@ -120,6 +123,7 @@ const char* stop_reason_name(StopReason r) {
   switch (r) {
     case StopReason::running: return "running";
     case StopReason::gap: return "gap";
+    case StopReason::unsettled: return "unsettled";
     case StopReason::growth: return "growth";
     case StopReason::max_iterations: return "max_iterations";
     case StopReason::interrupted: return "interrupted";

@@ -7,7 +7,7 @@
 namespace animpak::reference {
 
 std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                         SimState& state, std::vector<std::uint8_t>& changed) {
+                         bool growing, SimState& state, std::vector<std::uint8_t>& changed) {
   const float step = static_cast<float>(params.growth_rate * params.dt);
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
   const float cap = static_cast<float>(params.max_growth);
@@ -24,7 +24,7 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     if ((bits & (contact_overlap | contact_outside)) != 0) {
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
-    } else if ((bits & contact_wall) == 0 && g < cap) {
+    } else if (growing && (bits & contact_wall) == 0 && g < cap) {
       next = g + step;
       if (next > cap) next = cap;
     }
