@@ -274,16 +274,18 @@ FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& 
   SegmentGrid grid(segments);
 
   // Art-to-art distance: the smallest distance between a boundary segment of one and one of the other
-  // (holes included, for art lying inside another's hole).
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t s = first[i]; s < first[i + 1] && nearest[i] > 0.0; ++s)
-      nearest[i] = grid.nearest(segments[s].a, segments[s].b, nearest[i],
-                                [i](int owner) { return owner >= 0 && owner != int(i); });
+  // (holes included, for art lying inside another's hole). Alone, an element has no gap.
   if (n >= 2) {
-    m.min_gap = *std::min_element(nearest.begin(), nearest.end());
-    double sum = 0.0;
-    for (double d : nearest) sum += d;
-    m.mean_gap = sum / double(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t s = first[i]; s < first[i + 1] && nearest[i] > 0.0; ++s)
+        nearest[i] = grid.nearest(segments[s].a, segments[s].b, nearest[i],
+                                  [i](int owner) { return owner >= 0 && owner != int(i); });
+    // Art that collapsed to nothing has no boundary and no distance; it is left out.
+    double sum = 0.0, least = infinity;
+    int measured = 0;
+    for (double d : nearest)
+      if (std::isfinite(d)) sum += d, least = std::min(least, d), ++measured;
+    if (measured > 0) m.min_gap = least, m.mean_gap = sum / measured;
   }
 
   // Channel widths: from points along every element's outer rings to the nearest other art or the
