@@ -41,6 +41,15 @@ struct Outline {
 };
 Outline element_outline(const NormalizedArt& art, double offset);
 
+/// The region one art path paints when drawn with `points` (indexed like path.polylines) and
+/// `stroke_width`: its fill under its fill rule, every closed subpath counting as filled (SVG fills open
+/// subpaths too when the path has a fill), united with its stroke band (round joins and caps), the
+/// band's arcs within `tolerance` of true circles. Disjoint rings under the non-zero rule, outer
+/// rings counter-clockwise in y-up terms and holes clockwise, on a 1e-9 grid. element_outline offsets
+/// the union of these; docs/quality.md measures frames with it.
+std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
+                                              double stroke_width, double tolerance);
+
 enum class SpringClass : std::uint8_t { edge = 0, shear = 1, negative_space = 2, time = 3, target = 4 };
 inline constexpr int spring_class_count = 5;
 const char* spring_class_name(SpringClass c);

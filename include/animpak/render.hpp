@@ -85,16 +85,92 @@ struct FrameStyle {
 /// One frame: every element's art replayed on its interpolated slice, in element order.
 Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style);
 
-/// Quality of one frame, measured on the elements' slice boundaries (their offset outlines) and on
-/// the rasterized art.
+/// A share of art (outside the container, or overlapping another element) counts when it exceeds
+/// this: 0.2 % of the art's area (docs/quality.md).
+inline constexpr double quality_share_threshold = 0.002;
+
+struct ElementShare {
+  int element = -1;
+  double share = 0.0;
+};
+
+struct PairShare {
+  int a = -1, b = -1;  ///< element ids, a < b
+  double share = 0.0;
+};
+
+/// Quality of one frame, measured exactly on the elements' painted art (polygon booleans, never a
+/// raster) against the container; every distance and area in container unit coordinates.
+/// docs/quality.md says how each number is computed.
 struct FrameMetrics {
   double t = 0.0;
-  double coverage = 0.0;   ///< share of the container's area covered by elements' art
-  double min_gap = 0.0;    ///< smallest distance between two elements' offset outlines (0: channels touch)
-  double mean_gap = 0.0;   ///< mean over elements of that distance to the nearest other element
-  int overlapping_pairs = 0;  ///< pairs of elements whose art shares pixels
+  double coverage = 0.0;    ///< area((∪ art) ∩ container) / area(container)
+  double min_gap = 0.0;     ///< smallest art-to-art distance over all pairs (0: some art touches or overlaps)
+  double mean_gap = 0.0;    ///< mean over elements of the distance from its art to the nearest other art
+  double channel_cv = 0.0;  ///< coefficient of variation of the channel widths sampled along every outline
+  std::vector<double> area;           ///< per element: the area of its art
+  std::vector<double> outside_share;  ///< per element: area(art − container) / area(art)
+  std::vector<PairShare> overlaps;    ///< every pair whose art overlaps: area / the smaller art's area
+
+  /// Elements whose outside share exceeds quality_share_threshold.
+  std::vector<ElementShare> elements_outside() const {
+    std::vector<ElementShare> out;
+    for (std::size_t i = 0; i < outside_share.size(); ++i)
+      if (outside_share[i] > quality_share_threshold) out.push_back({int(i), outside_share[i]});
+    return out;
+  }
+  /// Pairs whose overlap share exceeds quality_share_threshold.
+  std::vector<PairShare> overlapping() const {
+    std::vector<PairShare> out;
+    for (const PairShare& p : overlaps)
+      if (p.share > quality_share_threshold) out.push_back(p);
+    return out;
+  }
+  /// The element with the largest outside share (element −1 when there is none), counted or not.
+  ElementShare worst_outside() const {
+    ElementShare worst;
+    for (std::size_t i = 0; i < outside_share.size(); ++i)
+      if (outside_share[i] > worst.share) worst = {int(i), outside_share[i]};
+    return worst;
+  }
+  /// The pair with the largest overlap share (a = b = −1 when no art overlaps), counted or not.
+  PairShare worst_overlap() const {
+    PairShare worst;
+    for (const PairShare& p : overlaps)
+      if (p.share > worst.share) worst = p;
+    return worst;
+  }
 };
+
+/// A planar region as rings under a fill rule, in container unit coordinates.
+struct Region {
+  std::vector<std::vector<Vec2>> rings;
+  FillRule rule = FillRule::nonzero;
+};
+
+/// What an art drawn with `points` paints (painted_region of every path, united), with the art's
+/// stroke widths times `stroke_scale`, exactly as draw_art and the SVG frames draw it.
+Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_scale);
+
+/// The metrics of one arrangement: each element's art region and the container region (t is left 0).
+FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& container);
+
+/// The container as a region: the outline minus the holes (even–odd).
+Region container_region(const Container& container);
+
+/// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
+/// draw it (element_at, replay_art, element_scale), measured with measure_regions.
 FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
+
+/// The middle of every slice interval, t = (s + 0.5) / (n_s − 1) for s = 0 … n_s − 2: the times
+/// farthest from any slice, where interpolated elements can overlap unseen by the slices (paper §6).
+std::vector<double> between_slice_times(int slices);
+
+/// The metrics of the rendered frames and of the times between slices.
+struct PackingQuality {
+  std::vector<FrameMetrics> frames;
+  std::vector<FrameMetrics> between_slices;
+};
 
 enum class FrameFormat { png, gif, mp4, svg };
 
@@ -107,7 +183,8 @@ struct FrameOutput {
 };
 
 /// Writes `count` frames one at a time (never all in memory): frames/frame_NNNN.png (and .svg), then
-/// animation.gif / animation.mp4 through ffmpeg. Returns the metrics of every frame.
-std::vector<FrameMetrics> write_frames(const World& world, const SimState& state, const FrameOutput& out);
+/// animation.gif / animation.mp4 through ffmpeg. Returns the metrics of every frame and of every time
+/// between slices.
+PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out);
 
 }  // namespace animpak

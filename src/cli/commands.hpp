@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "animpak/render.hpp"  // FrameMetrics, a plain struct: declaring it links nothing from animpak_render
+#include "animpak/render.hpp"  // PackingQuality, plain structs: declaring it links nothing from animpak_render
 #include "bench_report.hpp"
 
 namespace animpak::cli {
@@ -44,8 +44,8 @@ struct PackOptions {
 };
 
 /// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
-/// returns the frame metrics for stats.json. Empty: pack writes no frames (--no-render).
-using FrameRenderer = std::function<std::vector<FrameMetrics>(const World& world, const std::filesystem::path& dir)>;
+/// returns the quality of the frames and between slices for stats.json. Empty: pack writes no frames (--no-render).
+using FrameRenderer = std::function<PackingQuality(const World& world, const std::filesystem::path& dir)>;
 
 int pack(const PackOptions& options, const FrameRenderer& render_frames);
 

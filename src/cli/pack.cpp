@@ -161,8 +161,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
-  if (render_frames && result.reason != StopReason::interrupted) report.frames = render_frames(world, out);
+  if (render_frames && result.reason != StopReason::interrupted) report.quality = render_frames(world, out);
   write_stats(out / "stats.json", report);
+  if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);
   return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
 }
 

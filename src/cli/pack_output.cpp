@@ -4,6 +4,10 @@
 
 #include <chrono>
 #include <fstream>
+#include <iomanip>
+#include <limits>
+#include <set>
+#include <sstream>
 
 #include "animpak/error.hpp"
 
@@ -35,6 +39,105 @@ LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state)
   return loaded;
 }
 
+QualitySummary summarize(const std::vector<FrameMetrics>& metrics) {
+  QualitySummary q;
+  q.times = int(metrics.size());
+  if (metrics.empty()) return q;
+  std::set<std::pair<int, int>> pairs;
+  q.coverage_min = std::numeric_limits<double>::infinity();
+  q.coverage_max = -q.coverage_min;
+  q.min_gap = q.coverage_min;
+  for (const FrameMetrics& m : metrics) {
+    q.element_times += int(m.outside_share.size());
+    q.outside += int(m.elements_outside().size());
+    const ElementShare out = m.worst_outside();
+    if (out.share > q.worst_outside.share) q.worst_outside = out, q.worst_outside_t = m.t;
+    for (const PairShare& p : m.overlapping()) pairs.insert({p.a, p.b}), ++q.overlapping;
+    const PairShare overlap = m.worst_overlap();
+    if (overlap.share > q.worst_overlap.share) q.worst_overlap = overlap, q.worst_overlap_t = m.t;
+    q.coverage_min = std::min(q.coverage_min, m.coverage);
+    q.coverage_max = std::max(q.coverage_max, m.coverage);
+    q.coverage_mean += m.coverage / double(metrics.size());
+    q.min_gap = std::min(q.min_gap, m.min_gap);
+    q.channel_cv_mean += m.channel_cv / double(metrics.size());
+    q.channel_cv_max = std::max(q.channel_cv_max, m.channel_cv);
+  }
+  q.overlapping_pairs = int(pairs.size());
+  return q;
+}
+
+namespace {
+
+std::string percent(double share, int decimals) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << 100.0 * share;
+  return s.str();
+}
+
+std::string summary_line(const std::string& label, const QualitySummary& q) {
+  std::ostringstream s;
+  s << label << ": " << q.outside << " of " << q.element_times << " element-frames outside (worst "
+    << percent(q.worst_outside.share, 1) << " %), " << q.overlapping << " overlapping pair-frames in "
+    << q.overlapping_pairs << " pairs (worst " << percent(q.worst_overlap.share, 1) << " %), coverage "
+    << percent(q.coverage_min, 0) << "–" << percent(q.coverage_max, 0) << " %, channel CV " << std::fixed
+    << std::setprecision(2) << q.channel_cv_mean;
+  return s.str();
+}
+
+nlohmann::json element_share(const World& w, const ElementShare& e) {
+  return {{"element", e.element >= 0 ? nlohmann::json(w.elements[e.element].name) : nlohmann::json()},
+          {"share", e.share}};
+}
+
+nlohmann::json pair_share(const World& w, const PairShare& p) {
+  auto name = [&](int i) { return i >= 0 ? nlohmann::json(w.elements[i].name) : nlohmann::json(); };
+  return {{"a", name(p.a)}, {"b", name(p.b)}, {"share", p.share}};
+}
+
+nlohmann::json metrics_json(const World& w, const std::vector<FrameMetrics>& metrics) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const FrameMetrics& m : metrics) {
+    nlohmann::json outside = nlohmann::json::array(), overlaps = nlohmann::json::array();
+    for (const ElementShare& e : m.elements_outside()) outside.push_back(element_share(w, e));
+    const std::vector<PairShare> overlapping = m.overlapping();
+    for (const PairShare& p : overlapping) overlaps.push_back(pair_share(w, p));
+    out.push_back({{"t", m.t},
+                   {"coverage", m.coverage},
+                   {"min_gap", m.min_gap},
+                   {"mean_gap", m.mean_gap},
+                   {"channel_cv", m.channel_cv},
+                   {"overlapping_pairs", overlapping.size()},
+                   {"elements_outside", outside},
+                   {"overlaps", overlaps},
+                   {"worst_outside", element_share(w, m.worst_outside())},
+                   {"worst_overlap", pair_share(w, m.worst_overlap())}});
+  }
+  return out;
+}
+
+nlohmann::json summary_json(const World& w, const QualitySummary& q) {
+  nlohmann::json worst_outside = element_share(w, q.worst_outside), worst_overlap = pair_share(w, q.worst_overlap);
+  worst_outside["t"] = q.worst_outside_t;
+  worst_overlap["t"] = q.worst_overlap_t;
+  return {{"times", q.times},
+          {"element_frames", q.element_times},
+          {"element_frames_outside", q.outside},
+          {"worst_outside", worst_outside},
+          {"overlapping_pair_frames", q.overlapping},
+          {"overlapping_pairs", q.overlapping_pairs},
+          {"worst_overlap", worst_overlap},
+          {"coverage", {{"min", q.coverage_min}, {"max", q.coverage_max}, {"mean", q.coverage_mean}}},
+          {"min_gap", q.min_gap},
+          {"channel_cv", {{"mean", q.channel_cv_mean}, {"max", q.channel_cv_max}}}};
+}
+
+}  // namespace
+
+std::string quality_lines(const PackingQuality& quality) {
+  return summary_line("quality", summarize(quality.frames)) + "\n" +
+         summary_line("between slices", summarize(quality.between_slices)) + "\n";
+}
+
 void write_stats(const std::filesystem::path& file, const PackReport& r) {
   using nlohmann::json;
   const World& w = r.world;
@@ -49,16 +152,6 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       sum += w.state.growth[s];
     }
     growth.push_back({{"element", w.elements[e].name}, {"min", lo}, {"mean", sum / (end - begin)}, {"max", hi}});
-  }
-  json frames = json::array();
-  double coverage = 0, min_gap = std::numeric_limits<double>::infinity();
-  int max_overlaps = 0;
-  for (const FrameMetrics& m : r.frames) {
-    frames.push_back({{"t", m.t}, {"coverage", m.coverage}, {"min_gap", m.min_gap}, {"mean_gap", m.mean_gap},
-                      {"overlapping_pairs", m.overlapping_pairs}});
-    coverage += m.coverage / double(r.frames.size());
-    min_gap = std::min(min_gap, m.min_gap);
-    max_overlaps = std::max(max_overlaps, m.overlapping_pairs);
   }
   json seconds = {{"setup", r.setup_seconds}, {"simulation", r.result.seconds}};
   for (const NamedPhase& phase : phase_fields) seconds[phase.name] = r.times.*phase.seconds;
@@ -77,10 +170,12 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       {"stop_reason", r.checkpoint.stop_reason},
       {"seconds", seconds},
       {"final_growth", growth},
-      {"frames", frames},
-      {"summary",
-       {{"mean_coverage", coverage}, {"min_gap", r.frames.empty() ? 0.0 : min_gap},
-        {"max_overlapping_pairs", max_overlaps}}},
+      {"frames", metrics_json(w, r.quality.frames)},
+      {"between_slices", metrics_json(w, r.quality.between_slices)},
+      {"quality",
+       {{"share_threshold", quality_share_threshold},
+        {"frames", summary_json(w, summarize(r.quality.frames))},
+        {"between_slices", summary_json(w, summarize(r.quality.between_slices))}}},
   };
   std::ofstream out(file);
   out << stats.dump(2) << "\n";

@@ -1,4 +1,4 @@
-// What `pack` and `render` share: the world rebuilt from a checkpoint, and stats.json. Drawing the frames
+// What `pack` and `render` share: the world rebuilt from a checkpoint, stats.json and the quality lines. Drawing the frames
 // lives in render_commands.cpp, so that animpak-solve links no rendering library.
 #pragma once
 
@@ -23,12 +23,32 @@ struct PackReport {
   const RunResult& result;
   const PhaseTimes& times;
   const Checkpoint& checkpoint;
-  std::vector<FrameMetrics> frames;
+  PackingQuality quality;  ///< empty when no frames were rendered
   double setup_seconds = 0.0;
   std::string device;  ///< the backend's name
   std::string driver;  ///< the device's driver and platform version
 };
 
 void write_stats(const std::filesystem::path& file, const PackReport& report);
+
+/// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
+struct QualitySummary {
+  int times = 0;
+  int element_times = 0;        ///< elements × times
+  int outside = 0;              ///< element-times whose art is more than the threshold outside
+  ElementShare worst_outside;   ///< largest outside share at any time, counted or not
+  double worst_outside_t = 0.0;
+  int overlapping = 0;          ///< pair-times whose overlap exceeds the threshold
+  int overlapping_pairs = 0;    ///< distinct pairs among them
+  PairShare worst_overlap;      ///< largest overlap share at any time, counted or not
+  double worst_overlap_t = 0.0;
+  double coverage_min = 0.0, coverage_max = 0.0, coverage_mean = 0.0;
+  double min_gap = 0.0;
+  double channel_cv_mean = 0.0, channel_cv_max = 0.0;
+};
+QualitySummary summarize(const std::vector<FrameMetrics>& metrics);
+
+/// The two lines pack and render print at the end: "quality: …" for the frames and "between slices: …".
+std::string quality_lines(const PackingQuality& quality);
 
 }  // namespace animpak::cli

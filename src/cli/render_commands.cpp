@@ -19,8 +19,8 @@ FrameFormat parse_format(const std::string& name) {
   throw UsageError("--format " + name + ": expected png, gif, mp4 or svg");
 }
 
-/// Writes the frames in the requested formats into `dir` and returns their metrics.
-std::vector<FrameMetrics> render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
+/// Writes the frames in the requested formats into `dir` and returns their quality.
+PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
   FrameOutput out;
   out.dir = dir;
   out.count = options.frames;
@@ -102,8 +102,9 @@ class RenderingFrontend final : public Frontend {
 int render(const RenderOptions& options) {
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
   LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
-  const auto frames = render_frames(loaded.world, options.dir, options.frames);
-  std::cerr << "animpak: rendered " << frames.size() << " frames into " << options.dir.string() << "\n";
+  const PackingQuality quality = render_frames(loaded.world, options.dir, options.frames);
+  std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
+  std::cout << quality_lines(quality);
   return 0;
 }
 

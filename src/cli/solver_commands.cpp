@@ -39,7 +39,7 @@ class SolverFrontend final : public Frontend {
     return [](const World&, const std::filesystem::path& dir) {
       std::cerr << "animpak: no frames rendered (animpak-solve has no rendering library); render them with "
                    "`animpak render " << dir.string() << "` on a machine with the rendering stack\n";
-      return std::vector<FrameMetrics>{};
+      return PackingQuality{};
     };
   }
 

@@ -36,10 +36,10 @@ Vec2 to_unit(const cl::IntPoint& p) {
   return {static_cast<double>(p.X) / clipper_scale, static_cast<double>(p.Y) / clipper_scale};
 }
 
-cl::Path to_path(const Polyline& line) {
+cl::Path to_path(const std::vector<Vec2>& points) {
   cl::Path path;
-  path.reserve(line.points.size());
-  for (Vec2 p : line.points) path.push_back(to_int(p));
+  path.reserve(points.size());
+  for (Vec2 p : points) path.push_back(to_int(p));
   return path;
 }
 
@@ -51,25 +51,35 @@ cl::Paths union_of(const cl::Paths& paths, cl::PolyFillType rule) {
   return out;
 }
 
-// The visible area of one path: its fill under its own fill rule (SVG fills open subpaths as if closed),
-// plus its stroke, which is visible art too and so must lie inside the element.
-cl::Paths painted_area(const ArtPath& path) {
+// The visible area of one path drawn with `points` (its own, or replayed on a deformed slice) and
+// `stroke_width`: its fill under its own fill rule (SVG fills open subpaths as if closed), plus its
+// stroke, which is visible art too and so must lie inside the element.
+cl::Paths painted_area(const ArtPath& path, const std::vector<std::vector<Vec2>>& points, double stroke_width,
+                       double tolerance) {
   cl::Paths fill;
-  cl::ClipperOffset stroke(2.0, arc_tolerance * clipper_scale);
-  bool stroked = path.stroke.enabled && path.stroke_width > 0.0;
-  for (const Polyline& line : path.polylines) {
-    cl::Path p = to_path(line);
+  cl::ClipperOffset stroke(2.0, tolerance * clipper_scale);
+  bool stroked = path.stroke.enabled && stroke_width > 0.0;
+  for (std::size_t q = 0; q < path.polylines.size() && q < points.size(); ++q) {
+    const bool closed = path.polylines[q].closed;
+    cl::Path p = to_path(points[q]);
     if (p.empty()) continue;
-    if ((line.closed || path.fill.enabled) && p.size() >= 3) fill.push_back(p);
-    if (stroked) stroke.AddPath(p, cl::jtRound, line.closed ? cl::etClosedLine : cl::etOpenRound);
+    if ((closed || path.fill.enabled) && p.size() >= 3) fill.push_back(p);
+    if (stroked) stroke.AddPath(p, cl::jtRound, closed ? cl::etClosedLine : cl::etOpenRound);
   }
   cl::Paths area = union_of(fill, path.fill_rule == FillRule::evenodd ? cl::pftEvenOdd : cl::pftNonZero);
   if (stroked) {
     cl::Paths band;
-    stroke.Execute(band, 0.5 * path.stroke_width * clipper_scale);
+    stroke.Execute(band, 0.5 * stroke_width * clipper_scale);
     area.insert(area.end(), band.begin(), band.end());
   }
   return area;
+}
+
+std::vector<std::vector<Vec2>> own_points(const ArtPath& path) {
+  std::vector<std::vector<Vec2>> points;
+  points.reserve(path.polylines.size());
+  for (const Polyline& line : path.polylines) points.push_back(line.points);
+  return points;
 }
 
 // 128-bit products of int64 differences cannot overflow, so the predicates below are exact.
@@ -127,6 +137,19 @@ bool ring_is_simple(const cl::Path& ring) {
 
 }  // namespace
 
+std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
+                                              double stroke_width, double tolerance) {
+  const cl::Paths region = union_of(painted_area(path, points, stroke_width, tolerance), cl::pftNonZero);
+  std::vector<std::vector<Vec2>> rings;
+  rings.reserve(region.size());
+  for (const cl::Path& ring : region) {
+    rings.emplace_back();
+    rings.back().reserve(ring.size());
+    for (const cl::IntPoint& p : ring) rings.back().push_back(to_unit(p));
+  }
+  return rings;
+}
+
 NormalizedArt normalize_art(const ArtShape& art) {
   const Box box = art.bounds();
   for (const ArtPath& path : art.paths)
@@ -161,7 +184,7 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   const std::string name = source_name(art.art);
   cl::Paths all;
   for (const ArtPath& path : art.art.paths) {
-    cl::Paths area = painted_area(path);
+    cl::Paths area = painted_area(path, own_points(path), path.stroke_width, arc_tolerance);
     all.insert(all.end(), area.begin(), area.end());
   }
   const cl::Paths shape = union_of(all, cl::pftNonZero);

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 #include "animpak/error.hpp"
@@ -24,36 +25,104 @@ std::string hex(Rgba c) {
   return s;
 }
 
-// One SVG frame in unit coordinates: every element's paths replayed, with their paint.
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// One id per element, its name: unguided copies are named "star#3" and guided elements get unique
+// user names (the scene parser rejects repeats), but a guided "star#3" or "container" could still meet
+// another id, so a repeat gets "-2", "-3", … appended.
+std::vector<std::string> element_ids(const World& world) {
+  std::set<std::string> taken{"container", "background"};
+  std::vector<std::string> ids;
+  for (const ElementInstance& e : world.elements) {
+    std::string id = e.name;
+    for (int k = 2; taken.count(id); ++k) id = e.name + "-" + std::to_string(k);
+    taken.insert(id);
+    ids.push_back(id);
+  }
+  return ids;
+}
+
+// The path data of polylines mapped by `to`: "M x y L x y … Z".
+template <class Map>
+void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& polylines, const std::vector<bool>& closed,
+                     Map to) {
+  for (std::size_t q = 0; q < polylines.size(); ++q) {
+    for (std::size_t k = 0; k < polylines[q].size(); ++k) {
+      const Vec2 p = to(polylines[q][k]);
+      out << (k ? " L" : (q ? " M" : "M")) << p.x << ' ' << p.y;
+    }
+    if (closed[q]) out << " Z";
+  }
+}
+
+// One SVG frame in the container art's coordinates, so that it lays over the container's own art: the
+// container (outline and holes, even–odd) first, then one group per element, id its name, holding its
+// paths in drawing order with their paint. Strokes have round joins and caps as draw_art paints them.
 void write_svg(const World& world, const SimState& state, double tf, const FrameStyle& style,
-               const std::filesystem::path& file) {
+               const std::vector<std::string>& ids, const std::filesystem::path& file) {
   std::ofstream out(file);
   if (!out) throw InputError(file.string() + ": cannot write; check that the folder is writable");
-  out << std::setprecision(6);
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 1 1\" width=\"" << style.size << "\" height=\""
-      << style.size << "\">\n<rect width=\"1\" height=\"1\" fill=\"" << hex(style.background) << "\"/>\n";
+  const ArtFrame& frame = world.container.frame;
+  auto to_art = [&](Vec2 p) { return frame.to_art(p); };
+  Box box;
+  for (Vec2 p : world.container.outline) box.add(to_art(p));
+  // The margin of draw_frame's pictures: 2 % of the height on every side.
+  const double margin = 0.02 * box.height();
+  const double x = box.min.x - margin, y = box.min.y - margin, w = box.width() + 2 * margin, h = box.height() + 2 * margin;
+  const double art_per_unit = 1.0 / frame.scale;
+  out << std::setprecision(10);
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x << ' ' << y << ' ' << w << ' ' << h
+      << "\" width=\"" << raster_width({{x, y}, {x + w, y + h}}, style.size) << "\" height=\"" << style.size << "\">\n";
+  out << "<rect id=\"background\" x=\"" << x << "\" y=\"" << y << "\" width=\"" << w << "\" height=\"" << h
+      << "\" fill=\"" << hex(style.background) << "\"/>\n";
+
+  std::vector<std::vector<Vec2>> rings{world.container.outline};
+  rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
+  out << "<path id=\"container\" d=\"";
+  write_path_data(out, rings, std::vector<bool>(rings.size(), true), to_art);
+  out << "\" fill-rule=\"evenodd\" fill=\"none\"";
+  // draw_frame's grey line, max(1, size / 400) pixels wide.
+  if (style.draw_container)
+    out << " stroke=\"#8c8c8c\" stroke-width=\"" << std::max(1.0, style.size / 400.0) * h / style.size << "\"";
+  else out << " stroke=\"none\"";
+  out << "/>\n";
+
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
     const SpacetimeElement& lib = world.library[world.elements[i].library];
     const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
-    const double stroke_scale = element_scale(world, int(i), positions);
+    const double stroke_scale = element_scale(world, int(i), positions) * art_per_unit;
     const ArtPoints points = replay_art(lib.binding, lib.slice, positions);
+    out << "<g id=\"" << xml_escaped(ids[i]) << "\">\n";
     for (std::size_t p = 0; p < lib.art.art.paths.size(); ++p) {
       const ArtPath& path = lib.art.art.paths[p];
+      std::vector<bool> closed;
+      for (const Polyline& line : path.polylines) closed.push_back(line.closed);
       out << "<path d=\"";
-      for (std::size_t q = 0; q < points[p].size(); ++q) {
-        for (std::size_t k = 0; k < points[p][q].size(); ++k)
-          out << (k ? " L" : "M") << points[p][q][k].x << ' ' << points[p][q][k].y;
-        if (path.polylines[q].closed) out << " Z";
-      }
+      write_path_data(out, points[p], closed, to_art);
       out << "\" fill=\"" << (path.fill.enabled ? hex(path.fill.color) : "none") << "\"";
       if (path.fill.enabled && path.fill.color.a < 1) out << " fill-opacity=\"" << path.fill.color.a << "\"";
       if (path.fill_rule == FillRule::evenodd) out << " fill-rule=\"evenodd\"";
       if (path.stroke.enabled && path.stroke_width > 0)
         out << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << path.stroke_width * stroke_scale
-            << "\" stroke-linejoin=\"round\"";
+            << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+      if (path.stroke.enabled && path.stroke.color.a < 1) out << " stroke-opacity=\"" << path.stroke.color.a << "\"";
       if (path.paint_order == PaintOrder::stroke_then_fill) out << " paint-order=\"stroke\"";
       out << "/>\n";
     }
+    out << "</g>\n";
   }
   out << "</svg>\n";
   if (!out) throw InputError(file.string() + ": writing failed; check free disk space");
@@ -80,18 +149,20 @@ std::string quoted(const std::filesystem::path& p) {
 
 }  // namespace
 
-std::vector<FrameMetrics> write_frames(const World& world, const SimState& state, const FrameOutput& out) {
+PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out) {
   auto wants = [&](FrameFormat f) { return std::find(out.formats.begin(), out.formats.end(), f) != out.formats.end(); };
   const std::filesystem::path frames = out.dir / "frames";
   std::filesystem::create_directories(frames);
   const bool raster = wants(FrameFormat::png) || wants(FrameFormat::gif) || wants(FrameFormat::mp4);
-  std::vector<FrameMetrics> metrics;
+  const std::vector<std::string> ids = element_ids(world);
+  PackingQuality quality;
   const std::vector<double> times = frame_times(out.count, world.loop);
   for (int i = 0; i < out.count; ++i) {
     if (raster) draw_frame(world, state, times[i], out.style).write(frames / frame_name(i, "png"));
-    if (wants(FrameFormat::svg)) write_svg(world, state, times[i], out.style, frames / frame_name(i, "svg"));
-    metrics.push_back(measure_frame(world, state, times[i]));
+    if (wants(FrameFormat::svg)) write_svg(world, state, times[i], out.style, ids, frames / frame_name(i, "svg"));
+    quality.frames.push_back(measure_frame(world, state, times[i]));
   }
+  for (double t : between_slice_times(world.params.slices)) quality.between_slices.push_back(measure_frame(world, state, t));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");
@@ -106,7 +177,7 @@ std::vector<FrameMetrics> write_frames(const World& world, const SimState& state
     run_ffmpeg(input + " -vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white\" -c:v libx264 -pix_fmt yuv420p " + quoted(mp4),
                mp4);
   }
-  return metrics;
+  return quality;
 }
 
 }  // namespace animpak

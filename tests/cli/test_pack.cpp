@@ -165,7 +165,24 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["min_gap"].get<double>() > 0.0);
     CHECK(f["mean_gap"].get<double>() >= f["min_gap"].get<double>());
     CHECK(f["overlapping_pairs"] == 0);
+    CHECK(f["channel_cv"].get<double>() > 0.0);
+    CHECK(f["elements_outside"].empty());
+    CHECK(f["overlaps"].empty());
   }
+  // Five slices: the middles of the four intervals.
+  REQUIRE(stats["between_slices"].size() == 4);
+  CHECK(stats["between_slices"][0]["t"].get<double>() == Approx(0.125));
+  for (const char* times : {"frames", "between_slices"}) {
+    INFO(times);
+    const auto& q = stats["quality"][times];
+    CHECK(q["element_frames"] == 3 * stats[times].size());
+    CHECK(q["element_frames_outside"] == 0);
+    CHECK(q["overlapping_pair_frames"] == 0);
+    CHECK(q["coverage"]["min"].get<double>() <= q["coverage"]["mean"].get<double>());
+    CHECK(q["coverage"]["mean"].get<double>() <= q["coverage"]["max"].get<double>());
+  }
+  CHECK_THAT(r.out, Contains("quality: 0 of 12 element-frames outside") &&
+                        Contains("between slices: 0 of 12 element-frames outside"));
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
@@ -180,4 +197,5 @@ TEST_CASE("animpak render: a packed folder moved together with its scene still r
   INFO(r.err);
   CHECK(r.code == 0);
   CHECK(fs::exists(moved / "out" / "frames" / "frame_0000.png"));
+  CHECK_THAT(r.out, Contains("quality: ") && Contains("between slices: "));
 }
