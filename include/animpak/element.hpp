@@ -33,6 +33,10 @@ struct NormalizedArt {
 /// Throws InputError (naming the art file) when the art has no drawable point or a zero-size box.
 NormalizedArt normalize_art(const ArtShape& art);
 
+/// Everything `art` paints, fills and strokes at their width, as one region: outer rings counter-clockwise
+/// (positive signed area), holes clockwise, in the art's own coordinates.
+std::vector<std::vector<Vec2>> painted_region(const ArtShape& art);
+
 /// The element's outer outline: union of all paths, offset by `offset`, largest piece kept.
 struct Outline {
   std::vector<Vec2> ring;              ///< simple polygon, counter-clockwise in y-up terms, no repeat

@@ -15,7 +15,8 @@ namespace animpak {
 struct Params {
   // §3 spacetime elements
   double offset = 0.04;             ///< Δs, channel of negative space around each element (unit square)
-  double boundary_spacing = 0.15;   ///< arc length between boundary samples of the offset outline
+  double boundary_spacing = 0.15;   ///< longest boundary edge, between samples of the offset outline
+  double boundary_tolerance = 0.008;  ///< largest distance between the boundary polygon and the outline
   double interior_spacing = 0.15;   ///< minimum distance between interior (Poisson-disk) samples
   int slices = 100;                 ///< n_s, slices along the time axis
 

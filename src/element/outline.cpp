@@ -20,8 +20,13 @@ namespace cl = ClipperLib;
 constexpr double clipper_scale = 1e9;
 // Largest distance between a round join and its polygon, in unit-square units (≈44 segments per full
 // circle at Δs = 0.04; the last chord of a join spans up to 1.5 steps, so up to 2.25e-4 inside Δs). The
-// outline is resampled at boundary_spacing afterwards, so finer arcs buy nothing.
+// outline is simplified to boundary_tolerance (80× this at its default) afterwards, so finer arcs buy
+// nothing.
 constexpr double arc_tolerance = 1e-4;
+// Closing radii tried, in unit-square units, to bridge detached art into one outline
+// (docs/parameters.md "Bridging detached art").
+constexpr double bridge_step = 0.005;
+constexpr double max_bridge_radius = 0.25;
 
 std::string source_name(const ArtShape& art) {
   return art.source.empty() ? std::string("<art>") : art.source.string();
@@ -80,6 +85,44 @@ std::vector<std::vector<Vec2>> own_points(const ArtPath& path) {
   points.reserve(path.polylines.size());
   for (const Polyline& line : path.polylines) points.push_back(line.points);
   return points;
+}
+
+// Everything the art paints, as one union under the nonzero rule.
+cl::Paths painted_union(const ArtShape& art) {
+  cl::Paths all;
+  for (const ArtPath& path : art.paths) {
+    cl::Paths area = painted_area(path, own_points(path), path.stroke_width, arc_tolerance);
+    all.insert(all.end(), area.begin(), area.end());
+  }
+  return union_of(all, cl::pftNonZero);
+}
+
+cl::Paths offset_by(const cl::Paths& paths, double delta) {
+  cl::ClipperOffset offset(2.0, arc_tolerance * clipper_scale);
+  offset.AddPaths(paths, cl::jtRound, cl::etClosedPolygon);
+  cl::Paths out;
+  offset.Execute(out, delta * clipper_scale);
+  return out;
+}
+
+struct Piece {
+  double area = 0.0;  // int64 units²
+  cl::Path contour;
+};
+
+// The outer contours of the union of `paths`, largest first; holes are dropped because the element is
+// solid (§3.1 samples only "the outer boundary of the offset path"). Strictly simple output splits
+// pieces that only touch at a vertex, so every contour is simple.
+std::vector<Piece> outer_pieces(const cl::Paths& paths) {
+  cl::Clipper clean;
+  clean.StrictlySimple(true);
+  clean.AddPaths(paths, cl::ptSubject, true);
+  cl::PolyTree tree;
+  clean.Execute(cl::ctUnion, tree, cl::pftNonZero, cl::pftNonZero);
+  std::vector<Piece> pieces;
+  for (const cl::PolyNode* node : tree.Childs) pieces.push_back({std::fabs(cl::Area(node->Contour)), node->Contour});
+  std::stable_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.area > b.area; });
+  return pieces;
 }
 
 // 128-bit products of int64 differences cannot overflow, so the predicates below are exact.
@@ -180,54 +223,59 @@ NormalizedArt normalize_art(const ArtShape& art) {
   return out;
 }
 
+std::vector<std::vector<Vec2>> painted_region(const ArtShape& art) {
+  std::vector<std::vector<Vec2>> rings;
+  for (const cl::Path& path : painted_union(art)) {
+    std::vector<Vec2>& ring = rings.emplace_back();
+    ring.reserve(path.size());
+    for (const cl::IntPoint& p : path) ring.push_back(to_unit(p));
+  }
+  return rings;
+}
+
 Outline element_outline(const NormalizedArt& art, double offset) {
   const std::string name = source_name(art.art);
-  cl::Paths all;
-  for (const ArtPath& path : art.art.paths) {
-    cl::Paths area = painted_area(path, own_points(path), path.stroke_width, arc_tolerance);
-    all.insert(all.end(), area.begin(), area.end());
-  }
-  const cl::Paths shape = union_of(all, cl::pftNonZero);
+  const cl::Paths shape = painted_union(art.art);
   double shape_area = 0.0;
   for (const cl::Path& p : shape) shape_area += cl::Area(p);
   if (!(shape_area > 0.0))
     throw InputError(name + ": the art encloses no area (no filled region and no stroke with a width)");
 
   // §3.1, Fig. 2a: offset by Δs with round joins so the channel of negative space has constant width.
-  cl::ClipperOffset grow(2.0, arc_tolerance * clipper_scale);
-  grow.AddPaths(shape, cl::jtRound, cl::etClosedPolygon);
-  cl::Paths grown;
-  grow.Execute(grown, offset * clipper_scale);
-  // Strictly simple output splits pieces that only touch at a vertex, so the kept ring is simple.
-  cl::Clipper clean;
-  clean.StrictlySimple(true);
-  clean.AddPaths(grown, cl::ptSubject, true);
-  cl::PolyTree tree;
-  clean.Execute(cl::ctUnion, tree, cl::pftNonZero, cl::pftNonZero);
-
-  // Keep the largest outer piece; its holes are dropped because the element is solid (§3.1 samples only
-  // "the outer boundary of the offset path").
-  std::vector<std::pair<double, const cl::Path*>> pieces;
-  for (const cl::PolyNode* node : tree.Childs)
-    pieces.emplace_back(std::fabs(cl::Area(node->Contour)), &node->Contour);
-  std::sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  if (pieces.empty() || !(pieces.front().first > 0.0))
-    throw InputError(name + ": the offset outline has no area");
+  const cl::Paths grown = offset_by(shape, offset);
+  std::vector<Piece> pieces = outer_pieces(grown);
+  if (pieces.empty() || !(pieces.front().area > 0.0)) throw InputError(name + ": the offset outline has no area");
+  // Art apart from the main body (a whisker, a fin filament, a detached eye) must stay inside the
+  // element, or the solver never sees it (docs/parameters.md "Bridging detached art"): close the offset
+  // outline (offset out by r, offset back) with the smallest radius r, in steps, that joins the pieces.
+  // The union with the plain offset keeps every point of the outline at least Δs from the art.
+  const std::size_t separate = pieces.size();
+  double radius = 0.0;
+  while (pieces.size() > 1 && radius < max_bridge_radius) {
+    radius = std::min(radius + bridge_step, max_bridge_radius);
+    cl::Paths closed = offset_by(offset_by(shape, offset + radius), -radius);
+    closed.insert(closed.end(), grown.begin(), grown.end());
+    pieces = outer_pieces(closed);
+  }
 
   Outline out;
   out.source = name;
+  std::ostringstream note;
+  if (separate > 1 && pieces.size() < separate)
+    note << name << ": bridged " << separate << " disjoint outline pieces with a closing of radius " << radius
+         << (pieces.size() > 1 ? "; " : "");
   if (pieces.size() > 1) {
-    std::ostringstream note;
-    note << name << ": kept the largest of " << pieces.size() << " disjoint outline pieces (area "
-         << pieces.front().first / (clipper_scale * clipper_scale) << "); dropped " << pieces.size() - 1
-         << " with area";
+    note << (note.tellp() > 0 ? "" : name + ": ") << "kept the largest of " << pieces.size()
+         << " disjoint outline pieces (area " << pieces.front().area / (clipper_scale * clipper_scale)
+         << "); dropped " << pieces.size() - 1 << " with area";
     for (std::size_t i = 1; i < pieces.size(); ++i)
-      note << (i > 1 ? ", " : " ") << pieces[i].first / (clipper_scale * clipper_scale);
-    note << " (their art is still drawn, bound to the nearest triangle)";
-    out.notes.push_back(note.str());
+      note << (i > 1 ? ", " : " ") << pieces[i].area / (clipper_scale * clipper_scale);
+    note << " (farther than a closing of radius " << max_bridge_radius
+         << " bridges; their art is still drawn, bound to the nearest triangle)";
   }
+  if (note.tellp() > 0) out.notes.push_back(note.str());
 
-  cl::Path ring = *pieces.front().second;
+  cl::Path ring = std::move(pieces.front().contour);
   // Drop repeated and collinear points (within 2 integer units, i.e. 2e-9).
   cl::CleanPolygon(ring, 2.0);
   if (ring.size() < 3 || !ring_is_simple(ring))

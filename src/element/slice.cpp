@@ -1,4 +1,4 @@
-// Paper §3.1, Fig. 2b–c: one slice. Evenly spaced samples on the offset outline, Poisson-disk samples
+// Paper §3.1, Fig. 2b–c: one slice. Samples on the offset outline (evenly spaced, refined at tips), Poisson-disk samples
 // inside, a constrained Delaunay triangulation (CGAL; the only translation unit that includes it, because
 // it compiles slowly), then the shear edges and the negative-space edges that brace the slice.
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -44,24 +44,67 @@ double uniform(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
-// `count` points evenly spaced by arc length around `ring`, whose perimeter is `length`.
-std::vector<Vec2> resample(const std::vector<Vec2>& ring, double length, int count) {
-  const std::size_t n = ring.size();
-  std::vector<Vec2> out;
-  out.reserve(static_cast<std::size_t>(count));
-  std::size_t seg = 0;
-  double seg_start = 0.0;  // arc length at ring[seg]
-  for (int k = 0; k < count; ++k) {
-    const double s = length * k / count;
-    while (seg + 1 < n && seg_start + norm(ring[seg + 1] - ring[seg]) <= s) {
-      seg_start += norm(ring[seg + 1] - ring[seg]);
-      ++seg;
+// The outline parametrized by arc length from ring[0]: arc[i] is the arc length at ring[i].
+struct ArcRing {
+  const std::vector<Vec2>& ring;
+  std::vector<double> arc;
+  double length = 0.0;
+
+  explicit ArcRing(const std::vector<Vec2>& r) : ring(r) {
+    arc.reserve(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      arc.push_back(length);
+      length += norm(ring[(i + 1) % ring.size()] - ring[i]);
     }
-    const Vec2 a = ring[seg], b = ring[(seg + 1) % n];
-    const double len = norm(b - a);
-    out.push_back(len > 0.0 ? a + (b - a) * ((s - seg_start) / len) : a);
   }
-  return out;
+
+  Vec2 at(double s) const {
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(arc.begin(), arc.end(), s) - arc.begin()) - 1;
+    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+    const double len = norm(b - a);
+    return len > 0.0 ? a + (b - a) * ((s - arc[i]) / len) : a;
+  }
+};
+
+// docs/parameters.md "Sampling the outline": the boundary samples, as arc lengths in [0, length). The
+// paper's evenly spaced samples cut the round caps that the offset puts on the art's tips; here the
+// outline is simplified as by Douglas–Peucker (every outline point within `tolerance` of its chord), and
+// a chord longer than `spacing` is cut into equal arcs, so straight runs keep the paper's even spacing.
+// The span from ring[0] to the outline point farthest from it and the span back start the subdivision.
+std::vector<double> boundary_samples(const ArcRing& outline, double spacing, double tolerance) {
+  const std::vector<Vec2>& ring = outline.ring;
+  std::size_t far = 0;
+  for (std::size_t i = 1; i < ring.size(); ++i)
+    if (norm(ring[i] - ring[0]) > norm(ring[far] - ring[0])) far = i;
+  // Spans still to settle; the last is the next along the outline, so samples come out in order.
+  std::vector<std::pair<double, double>> spans{{outline.arc[far], outline.length}, {0.0, outline.arc[far]}};
+  std::vector<double> samples;
+  while (!spans.empty()) {
+    const auto [a, b] = spans.back();
+    spans.pop_back();
+    const Vec2 p = outline.at(a), q = outline.at(b);
+    // The outline point strictly inside the span farthest from the chord, if farther than the tolerance.
+    double worst = tolerance, split = a;
+    const auto first = std::upper_bound(outline.arc.begin(), outline.arc.end(), a);
+    const auto last = std::lower_bound(outline.arc.begin(), outline.arc.end(), b);
+    for (auto it = first; it < last; ++it) {
+      const double d = segment_distance(ring[static_cast<std::size_t>(it - outline.arc.begin())], p, q);
+      if (d > worst) worst = d, split = *it;
+    }
+    if (split > a) {
+      spans.push_back({split, b});
+      spans.push_back({a, split});
+      continue;
+    }
+    // Equal arcs no longer than `spacing`, so no chord is either.
+    const int parts = static_cast<int>(std::ceil((b - a) / spacing));
+    if (norm(q - p) > spacing && parts > 1) {
+      for (int k = parts; k-- > 0;) spans.push_back({a + (b - a) * k / parts, k + 1 == parts ? b : a + (b - a) * (k + 1) / parts});
+      continue;
+    }
+    samples.push_back(a);
+  }
+  return samples;
 }
 
 // Bridson Poisson-disk sampling over the boundary's box; samples are then kept only when inside the
@@ -220,23 +263,24 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
     throw InputError(name + ": the element's outline has fewer than three points or no area");
   if (!(params.boundary_spacing > 0.0) || !(params.interior_spacing > 0.0))
     throw InputError(name + ": boundary_spacing and interior_spacing must be positive");
-  const double length = perimeter(outline.ring);
-  // §3.1 "evenly-spaced samples around the outer boundary": the count is rounded so the spacing along
-  // the outline is exactly perimeter / count.
-  int count = std::max(3, static_cast<int>(std::lround(length / params.boundary_spacing)));
-  // A coarse sampling can cut across a narrow neck and make the boundary polygon cross itself; refine
-  // until it is simple (a few rounds at most for any outline offset by Δs).
+  if (!(params.boundary_tolerance > 0.0))
+    throw InputError(name + ": boundary_tolerance must be positive");
+  const ArcRing arc_ring(outline.ring);
+  double spacing = params.boundary_spacing, tolerance = params.boundary_tolerance;
+  // A sampling can still cut across a neck narrower than the tolerance and make the boundary polygon
+  // cross itself; refine until it is simple (a few rounds at most for any outline offset by Δs).
   for (int attempt = 0; attempt < 12; ++attempt) {
     SliceMesh mesh;
-    mesh.vertices = resample(outline.ring, length, count);
-    mesh.boundary_count = count;
+    for (double s : boundary_samples(arc_ring, spacing, tolerance)) mesh.vertices.push_back(arc_ring.at(s));
+    mesh.boundary_count = static_cast<int>(mesh.vertices.size());
     const std::vector<Vec2> interior = interior_samples(mesh.vertices, params.interior_spacing, seed);
     mesh.vertices.insert(mesh.vertices.end(), interior.begin(), interior.end());
-    if (triangulate(mesh)) return mesh;
-    count = count + std::max(1, count / 4);
+    if (mesh.boundary_count >= 3 && triangulate(mesh)) return mesh;
+    spacing *= 0.8;
+    tolerance *= 0.5;
   }
   throw InputError(name + ": could not triangulate the element's outline (" + std::to_string(n) +
-                   " points, perimeter " + std::to_string(length) + "); it may be degenerate");
+                   " points, perimeter " + std::to_string(arc_ring.length) + "); it may be degenerate");
 }
 
 }  // namespace animpak

@@ -10,9 +10,11 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 33> table{{
+const std::array<ParamInfo, 34> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
-    {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "arc length between boundary samples"},
+    {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
+    {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
+     "largest distance between the boundary polygon and the offset outline"},
     {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
     {"slices", &Params::slices, 2, 1000, "n_s: slices along the time axis (§3.1)"},
     {"initial_scale", &Params::initial_scale, 0.001, 1.0, "size of every element at the start (§4)"},

@@ -2,8 +2,47 @@
 
 #include <algorithm>
 #include <cmath>
+#include <polyclipping/clipper.hpp>
 
 namespace animpak::test {
+
+namespace {
+namespace cl = ClipperLib;
+constexpr double clipper_scale = 1e9;  // as element_outline: 1e-9 in unit coordinates
+
+cl::Paths to_paths(const std::vector<std::vector<Vec2>>& rings) {
+  cl::Paths paths;
+  for (const auto& ring : rings) {
+    cl::Path& path = paths.emplace_back();
+    for (Vec2 p : ring)
+      path.push_back({static_cast<cl::cInt>(std::llround(p.x * clipper_scale)),
+                      static_cast<cl::cInt>(std::llround(p.y * clipper_scale))});
+  }
+  return paths;
+}
+
+double area_of(const cl::Paths& paths) {
+  double area = 0.0;
+  for (const cl::Path& p : paths) area += cl::Area(p);  // holes come out negative
+  return area / (clipper_scale * clipper_scale);
+}
+}  // namespace
+
+ArtShape star_art() {
+  return load_art(std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/star.svg");
+}
+
+ArtCoverage art_outside_boundary(const Built& b) {
+  const cl::Paths art = to_paths(painted_region(b.art.art));
+  const cl::Paths boundary = to_paths(
+      {std::vector<Vec2>(b.mesh.vertices.begin(), b.mesh.vertices.begin() + b.mesh.boundary_count)});
+  cl::Clipper clipper;
+  clipper.AddPaths(art, cl::ptSubject, true);
+  clipper.AddPaths(boundary, cl::ptClip, true);
+  cl::Paths outside;
+  clipper.Execute(cl::ctDifference, outside, cl::pftNonZero, cl::pftNonZero);
+  return {area_of(art), area_of(outside)};
+}
 
 std::string shape_path(const std::string& name) {
   return std::string(ANIMPAK_SOURCE_DIR) + "/examples/shapes/" + name + ".path";

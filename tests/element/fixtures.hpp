@@ -43,9 +43,10 @@ inline ArtShape bar_art() {
 inline ArtShape frame_art() {
   return filled_art({rect(0, 0, 10, 10), rect(3, 3, 7, 7)}, "frame.svg", FillRule::evenodd);
 }
-/// Two blobs far apart: the smaller is dropped with a note.
+/// Two blobs farther apart (0.7 of the unit square) than the outline bridges: the smaller is dropped
+/// with a note.
 inline ArtShape two_blobs_art() {
-  return filled_art({rect(0, 0, 10, 10), rect(20, 0, 23, 3)}, "blobs.svg");
+  return filled_art({rect(0, 0, 10, 40), rect(40, 0, 43, 3)}, "blobs.svg");
 }
 
 /// The five animals of examples/shapes, by file name.
@@ -61,6 +62,17 @@ struct Built {
   SliceMesh mesh;
 };
 Built build(const ArtShape& art, const Params& params = {}, std::uint64_t seed = 1);
+
+/// The default example's star (examples/default/star.svg): sharp points, a stroke, a detached eye.
+ArtShape star_art();
+
+/// Area of the art's painted region (fills and strokes, unit coordinates) and of the part of it outside
+/// the slice's boundary polygon, computed with Clipper.
+struct ArtCoverage {
+  double art = 0.0;
+  double outside = 0.0;
+};
+ArtCoverage art_outside_boundary(const Built& b);
 
 /// Exact-enough simplicity test of a closed ring (no two non-adjacent edges meet).
 bool ring_simple(const std::vector<Vec2>& ring);

@@ -89,7 +89,7 @@ TEST_CASE("element_outline keeps the largest piece and notes the dropped ones", 
   REQUIRE(outline.notes.size() == 1);
   CHECK_THAT(outline.notes[0], Catch::Contains("dropped 1") && Catch::Contains("blobs.svg"));
   CHECK(ring_contains(outline.ring, n.frame.to_unit({5, 5})));
-  CHECK_FALSE(ring_contains(outline.ring, n.frame.to_unit({21.5, 1.5})));
+  CHECK_FALSE(ring_contains(outline.ring, n.frame.to_unit({41.5, 1.5})));
 }
 
 TEST_CASE("element_outline includes open strokes and rejects art without area", "[element][outline]") {

@@ -10,14 +10,18 @@ using namespace animpak::test;
 
 namespace {
 
-// A slice made by hand: only boundary samples, no interior ones.
-SliceMesh boundary_only(const std::vector<Vec2>& ring, double spacing_scale = 1.0) {
+// A slice made by hand: only boundary samples, no interior ones. No edge of `ring` is longer than the
+// spacing and each corner is farther than the tolerance from its neighbours' chord, so the samples are
+// exactly the corners, in order from ring[0].
+SliceMesh boundary_only(const std::vector<Vec2>& ring) {
   Params params;
   params.interior_spacing = 10.0;  // larger than the shape: no interior sample survives
   Outline outline;
   outline.ring = ring;
-  params.boundary_spacing = perimeter(ring) / ring.size() * spacing_scale;
-  return build_slice(outline, params, 1);
+  params.boundary_spacing = perimeter(ring);
+  const SliceMesh mesh = build_slice(outline, params, 1);
+  REQUIRE(mesh.vertices == ring);
+  return mesh;
 }
 
 }  // namespace
