@@ -17,6 +17,7 @@ typedef float ap_float;
 /* VertexFlag bits (solver.hpp). */
 #define AP_VERTEX_BOUNDARY 1
 #define AP_VERTEX_ANCHOR 2
+#define AP_VERTEX_HOLD_ANGLE 16
 
 /* SpringClass values (element.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
 #define AP_SPRING_CLASSES 5
@@ -45,6 +46,7 @@ typedef struct {
   ap_float velocity_cap;                /* velocity_cap * dt */
   ap_float growth_step;                 /* growth_rate * dt */
   ap_float max_growth;
+  ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -34,6 +34,7 @@ struct Params {
   double k_overlap = 5.0;           ///< Eq. 3
   double k_boundary = 5.0;          ///< Eq. 4
   double k_torsion = 2e-4;          ///< Eq. 5
+  double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
   double k_temporal = 1.0;          ///< Eq. 6
   double dt = 0.05;                 ///< Δt_sim, explicit Euler step
   double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim

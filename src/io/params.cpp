@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 28> table{{
+const std::array<ParamInfo, 29> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "arc length between boundary samples"},
     {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
@@ -27,6 +27,8 @@ const std::array<ParamInfo, 28> table{{
     {"k_overlap", &Params::k_overlap, 0.0, inf, "k_ovr, overlap strength (Eq. 3)"},
     {"k_boundary", &Params::k_boundary, 0.0, inf, "k_bdr, container strength (Eq. 4)"},
     {"k_torsion", &Params::k_torsion, 0.0, inf, "k_tor, torsion strength (Eq. 5)"},
+    {"k_target_angle", &Params::k_target_angle, 0.0, inf,
+     "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)"},
     {"k_temporal", &Params::k_temporal, 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
     {"dt", &Params::dt, 1e-6, 1.0, "Δt_sim, explicit Euler step (§5)"},
     {"velocity_cap", &Params::velocity_cap, 0.0, inf, "speeds are capped at velocity_cap · Δt_sim (§5)"},

@@ -10,9 +10,11 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
-static_assert(sizeof(ForceParams) == 16 * 4 && offsetof(ForceParams, k_spring) == 8 &&
-              offsetof(ForceParams, k_target) == 28 && offsetof(ForceParams, max_growth) == 60);
-static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor);
+static_assert(sizeof(ForceParams) == 17 * 4 && offsetof(ForceParams, k_spring) == 8 &&
+              offsetof(ForceParams, k_target) == 28 && offsetof(ForceParams, max_growth) == 60 &&
+              offsetof(ForceParams, k_target_angle) == 64);
+static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
+              AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
 static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
 
@@ -31,6 +33,7 @@ ForceParams force_params(const Params& params) {
   p.velocity_cap = static_cast<float>(params.velocity_cap * params.dt);
   p.growth_step = static_cast<float>(params.growth_rate * params.dt);
   p.max_growth = static_cast<float>(params.max_growth);
+  p.k_target_angle = static_cast<float>(params.k_target_angle);
   return p;
 }
 
