@@ -63,7 +63,8 @@ void check_target_path(const SceneSpec& scene, std::size_t index, const Containe
                        describe_target(g.targets, k) + " lies " + where(p) +
                        "; the anchor cannot reach it, move it into the container");
   }
-  // Samples every path_step along each stretch: finer than any hole an element could pass around.
+  // Samples each stretch every path_step of the unit container (1 unit of a 500-unit artboard): only a
+  // hole or bay narrower than that can slip between two samples.
   constexpr double path_step = 0.002;
   for (std::size_t k = 0; k + 1 < g.targets.size(); ++k) {
     const Vec2 a = c.frame.to_unit({g.targets[k].x, g.targets[k].y});
