@@ -60,7 +60,8 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   const int s = slice[v];
   float tor_x = 0.0f, tor_y = 0.0f;
   const float tor_t = 0.0f;
-  torsion_force(p, px, py, slice_cx[s], slice_cy[s], rest_dir_x[v], rest_dir_y[v], &tor_x, &tor_y);
+  const float k_tor = (flags[v] & AP_VERTEX_HOLD_ANGLE) != 0 ? p.k_target_angle : p.k_torsion;
+  torsion_force(k_tor, px, py, slice_cx[s], slice_cy[s], rest_dir_x[v], rest_dir_y[v], &tor_x, &tor_y);
   const float tmp_x = 0.0f, tmp_y = 0.0f;
   const float tmp_t = temporal_force(p, rest_t[v], pt);
 

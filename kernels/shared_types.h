@@ -17,6 +17,7 @@ typedef float ap_float;
 /* VertexFlag bits (solver.hpp). */
 #define AP_VERTEX_BOUNDARY 1
 #define AP_VERTEX_ANCHOR 2
+#define AP_VERTEX_HOLD_ANGLE 16
 
 /* ContactBit values (solver.hpp): what the overlap and container tests found at a vertex. */
 #define AP_CONTACT_OVERLAP 1
@@ -62,6 +63,7 @@ typedef struct {
   ap_float growth_ratio;
   ap_float max_growth;
   ap_float stop_gap;
+  ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -24,14 +24,14 @@ __kernel void slice_centroids(const WorldInfo world,           /* input */
   }
 }
 
-/** Eq. 5: −sign(θ) k_tor u⊥ turning u = x − c back towards the rest direction (rx, ry). */
-void torsion_force(const ForceParams p, float px, float py, float cx, float cy, float rx, float ry, float* fx,
+/** Eq. 5: −sign(θ) k u⊥ turning u = x − c back towards the rest direction (rx, ry); the caller picks k,
+ * k_tor or k_target_angle. */
+void torsion_force(const float k, float px, float py, float cx, float cy, float rx, float ry, float* fx,
                    float* fy) {
   const float ux = px - cx, uy = py - cy;
   const float cross = rx * uy - ry * ux;
   if (cross == 0.0f) return;
   const float inv_len = 1.0f / sqrt(ux * ux + uy * uy);
-  const float k = p.k_torsion;
   const float signed_k = cross > 0.0f ? -k : k;
   *fx = signed_k * (-uy * inv_len);
   *fy = signed_k * (ux * inv_len);

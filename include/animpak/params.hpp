@@ -32,11 +32,12 @@ struct Params {
   double k_shear = 5000.0;          ///< Eq. 2, shear springs
   double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
   double k_time = 5.0;              ///< Eq. 2, time springs
-  double k_target = 5000.0;         ///< Eq. 2, target-point springs of guided elements
+  double k_target = 500.0;          ///< Eq. 2, target-point springs of guided elements (target slices only)
   double k_overlap = 5.0;           ///< Eq. 3
   double k_overlap_depth = 5.0;     ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
   double k_boundary = 5.0;          ///< Eq. 4
   double k_torsion = 2e-4;          ///< Eq. 5
+  double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
   double k_temporal = 1.0;          ///< Eq. 6
   double dt = 0.05;                 ///< Δt_sim, explicit Euler step
   double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim

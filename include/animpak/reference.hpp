@@ -138,7 +138,8 @@ Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& 
 void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx,
                      std::vector<float>& cy);
 
-/// Eq. 5 with the slice centroid (cx, cy) of v's slice. torsion.cpp.
+/// Eq. 5 with the slice centroid (cx, cy) of v's slice, at k_target_angle for a vertex_hold_angle vertex
+/// and k_torsion otherwise. torsion.cpp.
 Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
                     float cx, float cy);
 

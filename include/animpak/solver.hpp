@@ -18,9 +18,10 @@ struct Vec3f {
 
 enum VertexFlag : std::uint8_t {
   vertex_boundary = 1,   ///< on its slice's outer boundary (repulsion, overlap, envelope)
-  vertex_anchor = 2,     ///< the guided element's anchor (has a target-point spring)
+  vertex_anchor = 2,     ///< a guided element's anchor on a slice with a target (has a target-point spring)
   vertex_first_slice = 4,
   vertex_last_slice = 8,
+  vertex_hold_angle = 16,  ///< on a guided element's slice whose target gives an angle: Eq. 5 with k_target_angle
 };
 
 /// What the overlap and container tests found at a vertex (StepForces::contact), one bit each; the

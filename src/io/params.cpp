@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 34> table{{
+const std::array<ParamInfo, 35> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
     {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
@@ -31,6 +31,8 @@ const std::array<ParamInfo, 34> table{{
     {"k_overlap_depth", &Params::k_overlap_depth, 0.0, inf, "pull of an inside vertex out of the other element"},
     {"k_boundary", &Params::k_boundary, 0.0, inf, "k_bdr, container strength (Eq. 4)"},
     {"k_torsion", &Params::k_torsion, 0.0, inf, "k_tor, torsion strength (Eq. 5)"},
+    {"k_target_angle", &Params::k_target_angle, 0.0, inf,
+     "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)"},
     {"k_temporal", &Params::k_temporal, 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
     {"dt", &Params::dt, 1e-6, 1.0, "Δt_sim, explicit Euler step (§5)"},
     {"velocity_cap", &Params::velocity_cap, 0.0, inf, "speeds are capped at velocity_cap · Δt_sim (§5)"},

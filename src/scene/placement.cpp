@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "animpak/error.hpp"
 
@@ -42,6 +43,47 @@ TargetSample sample_targets(const std::vector<TargetSpec>& targets, const Contai
           mix(a.angle.value_or(0.0), b.angle.value_or(0.0)) * std::numbers::pi / 180.0};
 }
 
+std::string describe_target(const std::vector<TargetSpec>& targets, std::size_t k) {
+  std::ostringstream s;
+  s << "target " << k << " (x " << targets[k].x << ", y " << targets[k].y << ", t " << targets[k].t << ")";
+  return s.str();
+}
+
+// A target outside the container cannot be reached and is an input error. A straight stretch between
+// two targets that leaves the container only misplaces the initial path: the boundary force (Eq. 4)
+// pushes the slices back in, so it is a warning with the fix.
+void check_target_path(const SceneSpec& scene, std::size_t index, const Container& c, std::vector<std::string>& notes) {
+  const GuidedSpec& g = scene.guided[index];
+  const std::string who = "guided[" + std::to_string(index) + "] \"" + g.name + "\"";
+  auto where = [&](Vec2 p) { return ring_contains(c.outline, p) ? "in a hole of the container" : "outside the container"; };
+  for (std::size_t k = 0; k < g.targets.size(); ++k) {
+    const Vec2 p = c.frame.to_unit({g.targets[k].x, g.targets[k].y});
+    if (!c.contains(p))
+      throw InputError(scene.file.string() + ": " + who + ".targets[" + std::to_string(k) + "]: " +
+                       describe_target(g.targets, k) + " lies " + where(p) +
+                       "; the anchor cannot reach it, move it into the container");
+  }
+  // Samples each stretch every path_step of the unit container (1 unit of a 500-unit artboard): only a
+  // hole or bay narrower than that can slip between two samples.
+  constexpr double path_step = 0.002;
+  for (std::size_t k = 0; k + 1 < g.targets.size(); ++k) {
+    const Vec2 a = c.frame.to_unit({g.targets[k].x, g.targets[k].y});
+    const Vec2 b = c.frame.to_unit({g.targets[k + 1].x, g.targets[k + 1].y});
+    const int steps = std::max(1, static_cast<int>(std::ceil(norm(b - a) / path_step)));
+    for (int i = 1; i < steps; ++i) {
+      const Vec2 q = a + (static_cast<double>(i) / steps) * (b - a);
+      if (c.contains(q)) continue;
+      const bool hole = ring_contains(c.outline, q);
+      notes.push_back("warning: guided \"" + g.name + "\": the straight path from " + describe_target(g.targets, k) +
+                      " to target " + std::to_string(k + 1) + " runs " +
+                      (hole ? "through a hole of the container" : "outside the container") +
+                      "; the simulation will push it " + (hole ? "out" : "back in") +
+                      ", add a target in between to steer it");
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 Vec2 apply(const Placement& p, int slice, Vec2 q) {
@@ -62,7 +104,8 @@ Vec2 rest_centroid(const SpacetimeElement& e) {
 std::vector<Placement> place_guided(const SceneSpec& scene, const Container& container,
                                     const std::vector<SpacetimeElement>& library, std::vector<std::string>& notes) {
   std::vector<Placement> out;
-  for (const GuidedSpec& g : scene.guided) {
+  for (std::size_t gi = 0; gi < scene.guided.size(); ++gi) {
+    const GuidedSpec& g = scene.guided[gi];
     Placement p;
     p.library = library_index(scene, g.element);
     p.name = g.name;
@@ -71,15 +114,35 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
     p.pivot = rest_centroid(e);
     // The anchor is the slice vertex closest to the centroid (paper §4).
     p.anchor = nearest_index(e.slice.vertices, p.pivot);
+    check_target_path(scene, gi, container, notes);
+    // Paper §4: the anchor is sprung to the artist's target points only; the slices in between start
+    // on the interpolated path and are free to smooth it out. Each target acts on the slice nearest
+    // its t, and that slice is placed at the target itself, so its rest scale and angle are the
+    // target's.
+    std::vector<int> key_of_slice(e.slice_count, -1);
+    for (std::size_t k = 0; k < g.targets.size(); ++k) {
+      const TargetSpec& target = g.targets[k];
+      const int s = static_cast<int>(std::lround(target.t * (e.slice_count - 1)));
+      if (key_of_slice[s] >= 0)
+        throw InputError(scene.file.string() + ": guided[" + std::to_string(gi) + "] \"" + g.name + "\": targets " +
+                         std::to_string(key_of_slice[s]) + " and " + std::to_string(k) + " both fall on slice " +
+                         std::to_string(s) + " of " + std::to_string(e.slice_count) +
+                         "; move them further apart in t or raise `slices`");
+      key_of_slice[s] = static_cast<int>(k);
+    }
     for (int s = 0; s < e.slice_count; ++s) {
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
-      const TargetSample target = sample_targets(g.targets, container, t);
+      const int key = key_of_slice[s];
+      const TargetSample target = sample_targets(g.targets, container, key >= 0 ? g.targets[key].t : t);
       const double scale = scene.params.initial_scale * target.scale;
       const Vec2 anchor = e.position(s, p.anchor);
       p.scale.push_back(scale);
       p.angle.push_back(target.angle);
       p.offset.push_back(target.position - scale * rotate(anchor - p.pivot, target.angle));
-      p.targets.push_back({static_cast<float>(target.position.x), static_cast<float>(target.position.y), t});
+      p.path.push_back(target.position);
+      if (key >= 0)
+        p.keys.push_back({s, {static_cast<float>(target.position.x), static_cast<float>(target.position.y), t},
+                          g.targets[key].angle.has_value()});
     }
     out.push_back(std::move(p));
   }

@@ -16,7 +16,15 @@ struct Placement {
   std::vector<Vec2> offset;
   std::vector<double> scale, angle;
   int anchor = -1;  ///< slice vertex pulled to the targets (guided only)
-  std::vector<Vec3f> targets;  ///< per slice (guided only)
+  std::vector<Vec2> path;  ///< the anchor's initial position per slice (guided only)
+  /// A target acting on one slice (paper §4): the anchor's target point, and whether the target gives
+  /// an angle that the slice's orientation is held to.
+  struct Key {
+    int slice = 0;
+    Vec3f point;
+    bool hold_angle = false;
+  };
+  std::vector<Key> keys;  ///< one per target, in slice order (guided only)
   int loop_partner = -1;       ///< instance whose first slice this one's last slice meets
 };
 
@@ -25,7 +33,8 @@ Vec2 apply(const Placement& p, int slice, Vec2 q);
 /// Area centroid of the boundary ring of the rest slice.
 Vec2 rest_centroid(const SpacetimeElement& e);
 
-/// Guided placements, in scene order.
+/// Guided placements, in scene order. InputError for a target outside the container or in a hole, or
+/// two targets on one slice; a note warns when the straight path between two targets leaves it.
 std::vector<Placement> place_guided(const SceneSpec& scene, const Container& container,
                                     const std::vector<SpacetimeElement>& library, std::vector<std::string>& notes);
 
@@ -35,7 +44,7 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
                                       const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes);
 
 /// Throws InputError naming the elements and slice where two shrunken elements overlap or one leaves
-/// the container.
+/// the container (for a guided element: on a slice of one of its targets).
 void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
                       const std::vector<Placement>& placements);
 

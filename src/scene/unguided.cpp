@@ -26,8 +26,8 @@ std::vector<Vec2> free_seeds(const Container& c, double spacing, double margin, 
   std::vector<Vec2> seeds = poisson_disk(c, spacing, margin, rng);
   std::erase_if(seeds, [&](Vec2 p) {
     for (const Placement& g : guided)
-      for (const Vec3f& t : g.targets)
-        if (norm(p - Vec2{t.x, t.y}) < spacing) return true;
+      for (const Vec2 q : g.path)
+        if (norm(p - q) < spacing) return true;
     return false;
   });
   return seeds;
@@ -138,11 +138,16 @@ void check_placements(const Container& container, const std::vector<SpacetimeEle
   std::vector<Box> boxes(n);
   for (std::size_t i = 0; i < n; ++i) {
     const SpacetimeElement& e = library[placements[i].library];
+    // A guided element's slices between targets lie on the straight path between them, which may
+    // cross a hole or leave a concave container: place_guided warns, and the boundary force (Eq. 4)
+    // pushes them in. Only the slices of its targets must start inside.
+    std::vector<bool> must_fit(e.slice_count, !placements[i].guided);
+    for (const Placement::Key& key : placements[i].keys) must_fit[key.slice] = true;
     for (int s = 0; s < e.slice_count; ++s) {
       std::vector<Vec2> ring;
       for (int v = 0; v < e.slice.boundary_count; ++v) {
         const Vec2 p = apply(placements[i], s, e.position(s, v));
-        if (!container.contains(p))
+        if (must_fit[s] && !container.contains(p))
           throw InputError("element " + placements[i].name + " lies outside the container at slice " +
                            std::to_string(s) + " after shrinking; move its seed or targets inward");
         ring.push_back(p);

@@ -14,7 +14,9 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
   const int P = e.vertices_per_slice(), B = e.slice.boundary_count, n = e.slice_count;
   const auto V = static_cast<std::int32_t>(topo.element.size());
   const auto S = static_cast<std::int32_t>(topo.slice_boundary.size());
+  auto key = p.keys.begin();
   for (int s = 0; s < n; ++s) {
+    const bool keyed = key != p.keys.end() && key->slice == s;
     topo.slice_begin.push_back(V + s * P);
     topo.slice_boundary.push_back(B);
     topo.slice_element.push_back(index);
@@ -25,12 +27,13 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
       if (s == 0) flags |= vertex_first_slice;
       if (s == n - 1) flags |= vertex_last_slice;
       std::int32_t target = -1;
-      if (p.guided && v == p.anchor) {
+      if (keyed && key->hold_angle) flags |= vertex_hold_angle;
+      if (keyed && v == p.anchor) {
         flags |= vertex_anchor;
         target = static_cast<std::int32_t>(topo.target_x.size());
-        topo.target_x.push_back(p.targets[s].x);
-        topo.target_y.push_back(p.targets[s].y);
-        topo.target_t.push_back(p.targets[s].t);
+        topo.target_x.push_back(key->point.x);
+        topo.target_y.push_back(key->point.y);
+        topo.target_t.push_back(key->point.t);
       }
       topo.element.push_back(index);
       topo.slice.push_back(S + s);
@@ -44,6 +47,7 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
       state.y.push_back(static_cast<float>(q.y));
       state.t.push_back(t);
     }
+    if (keyed) ++key;
     for (const Triangle& tri : e.slice.triangles) {
       topo.tri_a.push_back(V + s * P + tri[0]);
       topo.tri_b.push_back(V + s * P + tri[1]);

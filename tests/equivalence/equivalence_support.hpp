@@ -113,7 +113,7 @@ struct RandomWorldShape {
   int ring = 6;          ///< boundary vertices per slice
   float min_radius = 0.03f, max_radius = 0.12f;
   bool hole = true;      ///< a square hole in the container
-  bool targets = true;   ///< a target point on element 0
+  bool targets = true;   ///< target points on element 0's first and last slices, which hold their angle
 };
 
 /// Ring elements at random places (so some overlap, some cross the container or the hole), random
@@ -150,8 +150,17 @@ inline World random_world(std::uint64_t seed, const RandomWorldShape& shape = {}
       b.add_spring(first + 1, first + shape.ring / 2 + 1, SpringClass::negative_space, uniform(0.0f, 0.1f));
     }
   }
-  if (shape.targets && shape.elements > 0) b.add_target(0, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 0.0f);
+  const bool targets = shape.targets && shape.elements > 0;
+  // Targets on keyed slices only (paper §4): the first and last slice of element 0, none in between.
+  const std::int32_t last_slice = (shape.slices - 1) * shape.ring;
+  if (targets) b.add_target(0, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 0.0f);
+  if (targets && last_slice > 0) b.add_target(last_slice, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 1.0f);
   World out = b.build();
+  if (targets)
+    for (int k = 0; k < shape.ring; ++k) {
+      out.topo.flags[k] |= vertex_hold_angle;
+      out.topo.flags[last_slice + k] |= vertex_hold_angle;
+    }
   fill_reference_copy(out);
   for (std::size_t v = 0; v < out.state.x.size(); ++v) {
     out.state.vx[v] = uniform(-0.001f, 0.001f);

@@ -136,6 +136,30 @@ TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[
   }
 }
 
+TEST_CASE("forces: sparse targets and keyed slices holding their angle, turned off their rest", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.add_element(square_tube(0.4f, 0.5f, 0.08f, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}));
+  b.add_element(square_tube(0.7f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));
+  b.add_target(0, 0.3f, 0.45f, 0.0f);   // element 0, slices 0 and 2 only
+  b.add_target(8, 0.45f, 0.55f, 0.5f);
+  World w = finish(b);
+  for (std::int32_t v : {0, 1, 2, 3, 8, 9, 10, 11}) w.topo.flags[v] |= vertex_hold_angle;
+  // Turn every slice by 0.3 rad about its centre so that both torsion constants act.
+  std::vector<float> cx, cy;
+  reference::slice_centroids(w.topo, w.state, cx, cy);
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const std::int32_t s = w.topo.slice[v];
+    const float ux = w.state.x[v] - cx[s], uy = w.state.y[v] - cy[s];
+    w.state.x[v] = cx[s] + 0.9553365f * ux - 0.2955202f * uy;
+    w.state.y[v] = cy[s] + 0.2955202f * ux + 0.9553365f * uy;
+  }
+  for (const Params& params : {Params{}, paper_params()}) {
+    const Coverage c = check_forces(w, params, "keyed slices");
+    CHECK(c.target == 2);
+  }
+}
+
 TEST_CASE("forces: one element alone", "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;

@@ -40,29 +40,90 @@ constexpr int kSlices = 5;
 
 }  // namespace
 
-TEST_CASE("build_world: a guided anchor sits on the targets interpolated at every slice's t") {
+TEST_CASE("build_world: a guided anchor starts on the interpolated path; only keyed slices get target points") {
   const World w = world_of(star_scene(1, kSlices, 3, kSwap));
   const Topology& topo = w.topology;
-  // Targets of "up" in art units; slice s lies at t = s / (n − 1), halfway between targets for odd s.
+  // Targets of "up" in art units at t = 0, 0.5, 1; slice s lies at t = s / (n − 1), halfway between
+  // targets for odd s, so slices 0, 2 and 4 carry the targets (paper §4).
   const Vec2 art[kSlices] = {{220, 250}, {235, 225}, {250, 200}, {265, 225}, {280, 250}};
   const ElementInstance& up = w.elements[0];
   REQUIRE(up.name == "up");
+  const SpacetimeElement& e = w.library[up.library];
+  std::int32_t anchor = -1;
+  for (std::int32_t v = topo.slice_begin[up.slice_begin]; v < topo.slice_begin[up.slice_begin + 1]; ++v)
+    if (topo.flags[v] & vertex_anchor) anchor = v - up.vertex_begin;
+  REQUIRE(anchor >= 0);
   for (int s = 0; s < kSlices; ++s) {
     INFO("slice " << s);
-    const std::int32_t slice = up.slice_begin + s;
-    std::vector<std::int32_t> anchors;
-    for (std::int32_t v = topo.slice_begin[slice]; v < topo.slice_begin[slice + 1]; ++v)
-      if (topo.flags[v] & vertex_anchor) anchors.push_back(v);
-    REQUIRE(anchors.size() == 1);
-    const std::int32_t v = anchors[0];
+    const std::int32_t v = up.vertex_begin + e.id(s, anchor);
     const Vec2 expected = w.container.frame.to_unit(art[s]);
     CHECK(w.state.x[v] == Approx(expected.x).margin(1e-6));
     CHECK(w.state.y[v] == Approx(expected.y).margin(1e-6));
+    const bool keyed = s % 2 == 0;
+    CHECK(((topo.flags[v] & vertex_anchor) != 0) == keyed);
+    if (!keyed) {
+      CHECK(topo.target[v] == -1);
+      continue;
+    }
     REQUIRE(topo.target[v] >= 0);
     CHECK(topo.target_x[topo.target[v]] == Approx(expected.x).margin(1e-6));
     CHECK(topo.target_y[topo.target[v]] == Approx(expected.y).margin(1e-6));
     CHECK(topo.target_t[topo.target[v]] == static_cast<float>(s) / (kSlices - 1));
   }
+}
+
+TEST_CASE("build_world: 3 targets on 9 slices give 3 target points, on the slices nearest the targets' t") {
+  const SceneExtras three{R"(, "guided": [
+      {"name": "walker", "element": "star",
+       "targets": [{"x": 220, "y": 250, "t": 0}, {"x": 250, "y": 200, "t": 0.3, "angle": 45}, {"x": 280, "y": 250, "t": 1}]}], "loop": false)",
+                          ""};
+  const World w = world_of(star_scene(0, 9, 3, three));
+  const Topology& topo = w.topology;
+  REQUIRE(topo.target_x.size() == 3);
+  std::vector<std::int32_t> keyed;
+  int holding = 0;
+  for (std::int32_t v = 0; v < topo.vertex_count(); ++v) {
+    if (topo.target[v] >= 0) keyed.push_back(topo.slice[v]);
+    holding += (topo.flags[v] & vertex_hold_angle) != 0;
+  }
+  // t = 0.3 lies nearest slice 2 (t 0.25) of 9.
+  CHECK(keyed == std::vector<std::int32_t>{0, 2, 8});
+  // Only the target with an angle holds its slice's orientation, on every vertex of that slice.
+  CHECK(holding == topo.slice_begin[3] - topo.slice_begin[2]);
+  for (std::int32_t v = topo.slice_begin[2]; v < topo.slice_begin[3]; ++v) CHECK((topo.flags[v] & vertex_hold_angle));
+  // The slice of target 1 is placed at the target itself: its anchor is on (250, 200).
+  const Vec2 expected = w.container.frame.to_unit({250, 200});
+  for (std::int32_t v = topo.slice_begin[2]; v < topo.slice_begin[3]; ++v) {
+    if (topo.target[v] < 0) continue;
+    CHECK(w.state.x[v] == Approx(expected.x).margin(1e-6));
+    CHECK(w.state.y[v] == Approx(expected.y).margin(1e-6));
+    CHECK(topo.target_t[topo.target[v]] == 0.25f);
+  }
+}
+
+TEST_CASE("build_world: a target path through a hole warns; a target outside or in a hole is an error") {
+  auto ring = [](const std::string& targets) {
+    return R"({"container": {"art": ")" + animpak::test::example_file("annulus/ring.svg") +
+           R"(", "outline": 0, "holes": [1]}, "elements": [{"name": "star", "art": ")" +
+           animpak::test::example_file("default/star.svg") +
+           R"(", "count": 0, "animation": {"preset": "rotate", "turns": 1}}], "guided": [{"name": "crosser", "element": "star", "targets": [)" +
+           targets + R"(]}], "loop": false, "seed": 1, "slices": 9})";
+  };
+  // Straight across the ring's middle: the hole (r 95 about (250, 250)) lies on the way.
+  const World across = world_of(ring(R"({"x": 420, "y": 250, "t": 0}, {"x": 80, "y": 250, "t": 0.5}, {"x": 250, "y": 80, "t": 1})"));
+  std::string notes;
+  for (const std::string& n : across.notes) notes += n + "\n";
+  CHECK_THAT(notes, Contains("guided \"crosser\": the straight path from target 0 (x 420, y 250, t 0) to target 1 runs "
+                             "through a hole of the container; the simulation will push it out, add a target in "
+                             "between to steer it"));
+  CHECK_THAT(notes, !Contains("from target 1"));  // (80, 250) to (250, 80) passes the hole at r 120
+
+  const std::string in_hole = error_of(ring(R"({"x": 420, "y": 250, "t": 0}, {"x": 250, "y": 250, "t": 1})"));
+  CHECK_THAT(in_hole, Contains("guided[0] \"crosser\".targets[1]") && Contains("in a hole of the container") &&
+                          Contains("move it into the container"));
+  const std::string outside = error_of(ring(R"({"x": 10, "y": 10, "t": 0}, {"x": 420, "y": 250, "t": 1})"));
+  CHECK_THAT(outside, Contains("guided[0] \"crosser\".targets[0]") && Contains("(x 10, y 10, t 0)") &&
+                          Contains("outside the container"));
 }
 
 TEST_CASE("build_world: loop pairs join an unguided element to itself and loop_to partners across") {

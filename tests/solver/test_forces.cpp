@@ -205,6 +205,43 @@ TEST_CASE("torsion: no force at the rest orientation") {
   }
 }
 
+TEST_CASE("torsion: a keyed slice holding its target angle turns back with k_target_angle, others with k_tor") {
+  Params p = test::paper_params();
+  p.k_target_angle = 2.0;
+  const double pi = 3.14159265358979323846;
+  // Two slices of a triangle rotated by +10° about their centroids; slice 0 is a guided target's slice
+  // with an angle (vertex_hold_angle), slice 1 an ordinary one.
+  const test::Ring tri = {{0.6f, 0.5f}, {0.4f, 0.4f}, {0.4f, 0.6f}};
+  WorldBuilder b;
+  b.add_element({{tri, 0.0f}, {tri, 1.0f}}, false);
+  test::World w = b.build();
+  for (int v = 0; v < 3; ++v) w.topo.flags[v] |= vertex_hold_angle;
+  const double a = 10.0 * pi / 180.0;
+  const double c = (0.6 + 0.4 + 0.4) / 3.0;  // centroid (c, 0.5)
+  for (int v = 0; v < 6; ++v) {
+    const double ux = w.state.x[v] - c, uy = w.state.y[v] - 0.5;
+    w.state.x[v] = static_cast<float>(c + std::cos(a) * ux - std::sin(a) * uy);
+    w.state.y[v] = static_cast<float>(0.5 + std::sin(a) * ux + std::cos(a) * uy);
+  }
+  std::vector<float> cx, cy;
+  slice_centroids(w.topo, w.state, cx, cy);
+  // Vertex 0 rests at direction 0° and now points at +10°: the force is k u⊥ backwards, closed form
+  // k · (sin 10°, −cos 10°).
+  const Vec3f held = torsion_force(w.topo, w.state, p, 0, cx[0], cy[0]);
+  CHECK(held.x == Approx(2.0 * std::sin(a)).margin(1e-5));
+  CHECK(held.y == Approx(-2.0 * std::cos(a)).margin(1e-5));
+  const Vec3f free = torsion_force(w.topo, w.state, p, 3, cx[1], cy[1]);
+  CHECK(free.x == Approx(0.1 * std::sin(a)).margin(1e-6));
+  CHECK(free.y == Approx(-0.1 * std::cos(a)).margin(1e-6));
+  for (int v = 0; v < 6; ++v) {
+    const int s = v / 3;
+    const Vec3f f = torsion_force(w.topo, w.state, p, v, cx[s], cy[s]);
+    const double ux = w.state.x[v] - cx[s], uy = w.state.y[v] - cy[s];
+    CHECK(std::hypot(f.x, f.y) == Approx(s == 0 ? 2.0 : 0.1).epsilon(1e-5));
+    CHECK((-uy * f.x + ux * f.y) < 0.0);  // turns back against the +10°
+  }
+}
+
 TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triangle centroids") {
   const Params p = test::paper_params();
   WorldBuilder b;

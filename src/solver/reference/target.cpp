@@ -1,7 +1,7 @@
 // Target-point springs of guided elements, paper Eq. 2 with class "target": a spring of rest length
 // ℓ = 0 from the anchor vertex to its target point in (x, y, t), so F = k_target · u/|u| · |u|².
-// (The authors' code uses a linear k = 0.1 "dock" force on keyframe slices, notes §3.12.2; the
-// paper is the specification.)
+// Only the anchors of the slices nearest the artist's targets have one (paper §4); the slices in
+// between are left to the other forces (docs/scene-format.md, docs/parameters.md `k_target`).
 #include <cmath>
 
 #include "animpak/reference.hpp"

@@ -7,6 +7,10 @@
 // when cross(u_r, u) = r_x u_y − r_y u_x > 0. Our y axis points down (as in the art files and
 // images), so what is counter-clockwise here looks clockwise on screen; the restoring direction does
 // not depend on that convention.
+//
+// Paper §4 lets the artist give a guided element's orientation at its targets; the slice of such a
+// target holds it with the same force at the larger k_target_angle (vertex_hold_angle), since the
+// rest direction already carries the target's angle (src/scene/placement.cpp places the slice so).
 #include <cmath>
 
 #include "animpak/reference.hpp"
@@ -39,7 +43,7 @@ Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& p
   // the centroid or one without a rest direction, since cross is 0 there.
   if (cross == 0.0f) return {};
   const float inv_len = 1.0f / std::sqrt(ux * ux + uy * uy);
-  const float k = static_cast<float>(params.k_torsion);
+  const float k = static_cast<float>((topo.flags[v] & vertex_hold_angle) != 0 ? params.k_target_angle : params.k_torsion);
   const float signed_k = cross > 0.0f ? -k : k;
   return {signed_k * (-uy * inv_len), signed_k * (ux * inv_len), 0.0f};
 }
