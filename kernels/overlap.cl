@@ -1,6 +1,7 @@
-/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex against
- * every other element's boundary polygon interpolated at its t, at any depth, with its boundary edge
- * tested for crossings on the same walk; the force adds a pull towards the other element's outline. */
+/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and the
+ * middles of the slice intervals next to it, against every other element's boundary polygon interpolated
+ * at their t, at any depth, with the boundary edge tested for crossings on the same walk; the force adds
+ * a pull along the way out of the other element. */
 
 /** Half-open ray-crossing step of the even-odd test (boundary.cpp: ray_crosses_segment). */
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {
@@ -42,29 +43,25 @@ __kernel void slice_boxes(const WorldInfo world,
   box_x0[s] = x0, box_y0[s] = y0, box_x1[s] = x1, box_y1[s] = y1;
 }
 
-/** The overlap test of boundary vertex v (reference overlap_test): returns AP_CONTACT_OVERLAP, plus
- * AP_CONTACT_INSIDE with the closest outline point (*qx, *qy) when v lies inside another element. */
-uchar overlap_test(int v, int elements, __global const int* element, __global const int* slice,
-                   __global const int* element_slice_begin, __global const int* slice_begin,
-                   __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
-                   __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                   __global const float* y, __global const float* t, float* qx, float* qy) {
-  const int own = element[v], own_slice = slice[v];
-  const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
-  const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
-  const float px = x[v], py = y[v], pt = t[v];
-  const float nx = x[next], ny = y[next];
+/** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
+ * `own`, each one's slice pair around pt searched from slice index `start` (reference point_overlap).
+ * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy). */
+uchar overlap_point(int own, int start, float px, float py, float pt, float nx, float ny, int elements,
+                    __global const int* element_slice_begin, __global const int* slice_begin,
+                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
+                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
+                    __global const float* y, __global const float* t, float* near2_out, float* qx_out,
+                    float* qy_out) {
   const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
-  const int own_index = own_slice - element_slice_begin[own];
   bool overlap = false, found_inside = false;
-  float best2 = 0.0f;
-  *qx = 0.0f;
-  *qy = 0.0f;
+  *near2_out = 0.0f;
+  *qx_out = 0.0f;
+  *qy_out = 0.0f;
   for (int e = 0; e < elements; ++e) {
     if (e == own) continue;
     const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
     if (count < 2) continue;
-    int k = own_index < count - 2 ? own_index : count - 2;
+    int k = start < count - 2 ? start : count - 2;
     while (k > 0 && pt < t[slice_begin[first + k]]) --k;
     while (k < count - 2 && pt > t[slice_begin[first + k + 1]]) ++k;
     const int s = first + k;
@@ -101,12 +98,12 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
     if (crosses) overlap = true;
-    if (inside && (!found_inside || near2 < best2)) {
+    if (inside && (!found_inside || near2 < *near2_out)) {
       overlap = true;
       found_inside = true;
-      best2 = near2;
-      *qx = cqx;
-      *qy = cqy;
+      *near2_out = near2;
+      *qx_out = cqx;
+      *qy_out = cqy;
     }
   }
   uchar bits = overlap ? AP_CONTACT_OVERLAP : 0;
@@ -114,9 +111,56 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
   return bits;
 }
 
+/** Folds one query point's bits into v's (reference fold): the deepest point inside gives the way out. */
+void overlap_fold(uchar found, float near2, float qx, float qy, float px, float py, uchar* bits, float* depth2,
+                  float* out_x, float* out_y) {
+  if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;
+  if ((found & AP_CONTACT_INSIDE) == 0 || ((*bits & AP_CONTACT_INSIDE) != 0 && !(near2 > *depth2))) return;
+  *bits |= AP_CONTACT_INSIDE;
+  *depth2 = near2;
+  *out_x = qx - px;
+  *out_y = qy - py;
+}
+
+/** The overlap test of boundary vertex v (reference overlap_test): v, then the middles of the slice
+ * intervals after and before it. Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with the way out
+ * (*out_x, *out_y) of the deepest point inside another element. */
+uchar overlap_test(int v, int elements, __global const int* element, __global const int* slice,
+                   __global const int* element_slice_begin, __global const int* slice_begin,
+                   __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
+                   __global const float* box_x1, __global const float* box_y1, __global const float* x,
+                   __global const float* y, __global const float* t, float* out_x, float* out_y) {
+  const int own = element[v], own_slice = slice[v];
+  const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
+  const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
+  const int own_index = own_slice - element_slice_begin[own];
+  const int own_slices = element_slice_begin[own + 1] - element_slice_begin[own];
+  const int per_slice = slice_begin[own_slice + 1] - own_lo;
+  uchar bits = 0;
+  float depth2 = 0.0f, near2, qx, qy;
+  *out_x = 0.0f;
+  *out_y = 0.0f;
+  uchar found = overlap_point(own, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
+                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, &near2, &qx, &qy);
+  overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
+  for (int side = 0; side < 2; ++side) {
+    const int step = side == 0 ? 1 : -1;
+    if (own_index + step < 0 || own_index + step >= own_slices) continue;
+    const int w = v + step * per_slice, wn = next + step * per_slice;
+    const float mx = (x[v] + x[w]) * 0.5f, my = (y[v] + y[w]) * 0.5f;
+    const float mt = (t[v] + t[w]) * 0.5f;
+    const float nx = (x[next] + x[wn]) * 0.5f, ny = (y[next] + y[wn]) * 0.5f;
+    found = overlap_point(own, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
+                          element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
+                          &near2, &qx, &qy);
+    overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
+  }
+  return bits;
+}
+
 /** Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, in list order, plus
- * k_ovr_depth (q − x) for a vertex inside another element (reference overlap_force). */
-void overlap_force(const ForceParams p, int v, bool inside, float qx, float qy, __global const int* tri_begin,
+ * k_ovr_depth times the way out (out_x, out_y) when inside another element (reference overlap_force). */
+void overlap_force(const ForceParams p, int v, bool inside, float out_x, float out_y, __global const int* tri_begin,
                    __global const int* tri_list, __global const int* tri_a, __global const int* tri_b,
                    __global const int* tri_c, __global const float* x, __global const float* y,
                    __global const float* t, float* fx, float* fy, float* ft) {
@@ -135,8 +179,8 @@ void overlap_force(const ForceParams p, int v, bool inside, float qx, float qy, 
   const float k_ovr = p.k_overlap;
   float ox = k_ovr * sx, oy = k_ovr * sy;
   if (inside) {
-    ox = ox + p.k_overlap_depth * (qx - px);
-    oy = oy + p.k_overlap_depth * (qy - py);
+    ox = ox + p.k_overlap_depth * out_x;
+    oy = oy + p.k_overlap_depth * out_y;
   }
   *fx = ox;
   *fy = oy;

@@ -63,7 +63,7 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
                         __global float* closest,                 /* output: per vertex */
                         __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE bits */
-                        __global float* depth_x, __global float* depth_y) { /* output: closest outline point when inside */
+                        __global float* depth_x, __global float* depth_y) { /* output: the way out when inside */
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];

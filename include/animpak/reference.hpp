@@ -88,20 +88,22 @@ void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out);
 
 /// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
 struct OverlapResult {
-  bool overlap = false;  ///< v lies inside another element, or v's boundary edge crosses one's outline
-  bool inside = false;   ///< v itself lies inside another element
-  float qx = 0.0f, qy = 0.0f;  ///< when inside: the closest point on that element's outline (at v's t)
+  bool overlap = false;  ///< v or a middle next to it lies inside another element, or its edge crosses one
+  bool inside = false;   ///< v or a middle next to it lies inside another element
+  float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
 };
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
 /// vertex of its slice) against every other element's boundary polygon interpolated linearly at v's t,
-/// skipping elements whose slice boxes miss the edge. Interior vertices and elements with fewer than two
+/// skipping elements whose slice boxes miss the edge; then the same for the middle of each slice interval
+/// next to v (v and its edge interpolated halfway to the neighbouring slice, at the middle time), where
+/// the paper's discrete test cannot see (§6, §8). Interior vertices and elements with fewer than two
 /// slices never overlap. overlap.cpp.
 OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v);
 
-/// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, for a vertex inside
-/// another element, k_ovr_depth (q − x) towards the closest point q of that element's outline, so the
-/// push grows with depth (docs/parameters.md). overlap.cpp.
+/// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a middle
+/// next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so the push grows
+/// with depth (docs/parameters.md). overlap.cpp.
 Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
                     const OverlapResult& overlap);
 

@@ -257,7 +257,7 @@ TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triang
   CHECK(f0.y == Approx(5.0).epsilon(1e-6));
   const Vec3f none = overlap_force(w.topo, w.state, p, 0, OverlapResult{});  // no overlap, no force
   CHECK((none.x == 0.0f && none.y == 0.0f && none.t == 0.0f));
-  // Inside another element: plus k_ovr_depth (q − x) towards the way out q.
+  // Inside another element: plus k_ovr_depth times the way out.
   const Vec3f d = overlap_force(w.topo, w.state, p, 0, OverlapResult{true, true, 0.25f, -0.5f});
   CHECK(d.x == Approx(5.0 + p.k_overlap_depth * 0.25).epsilon(1e-6));
   CHECK(d.y == Approx(5.0 + p.k_overlap_depth * -0.5).epsilon(1e-6));

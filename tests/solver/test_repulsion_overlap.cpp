@@ -133,8 +133,8 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
   CHECK(r.overlap);
   CHECK(r.inside);
   // The way out is B's nearest edge, y = 0.47, straight up from the vertex.
-  CHECK(r.qx == 0.5f);
-  CHECK(r.qy == 0.47f);
+  CHECK(r.out_x == 0.0f);
+  CHECK(r.out_y == 0.47f - 0.49f);
 
   WorldBuilder without_b;
   without_b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));
@@ -196,6 +196,33 @@ TEST_CASE("overlap: two elements whose edges cross with no vertex inside are bot
       CHECK(overlap_at(w, base + (e == 0 ? 2 : 3)).overlap);
     }
   CHECK(flagged == 2 * 2 * 26);
+}
+
+TEST_CASE("overlap: elements that cross only between two slices are found at the middle of the interval") {
+  // A (half-size 0.04) moves right and B (0.05) left through the same place: at the slice times 0 and 1
+  // they are 0.11 apart, at t = 0.5 A lies inside B. Only the middle of the slice interval sees it.
+  const auto moving = [](float x0, float x1, float h) {
+    return std::vector<test::TinySlice>{{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
+  };
+  WorldBuilder b;
+  b.add_element(moving(0.4f, 0.6f, 0.04f));
+  b.add_element(moving(0.6f, 0.4f, 0.05f));
+  const test::World w = b.build();
+  for (std::int32_t v = 0; v < 8; ++v) {
+    INFO("vertex " << v);
+    const OverlapResult r = overlap_at(w, v);
+    CHECK(r.inside);
+    // The middle of A's corner lies 0.01 inside B's outline.
+    CHECK(std::hypot(r.out_x, r.out_y) == Approx(0.01).epsilon(1e-3));
+  }
+  for (std::int32_t v = 8; v < 16; ++v) CHECK_FALSE(overlap_at(w, v).inside);
+
+  // The same two squares without the motion never meet.
+  WorldBuilder still;
+  still.add_element(moving(0.4f, 0.4f, 0.04f));
+  still.add_element(moving(0.6f, 0.6f, 0.05f));
+  const test::World s = still.build();
+  for (std::int32_t v = 0; v < s.topo.vertex_count(); ++v) CHECK_FALSE(overlap_at(s, v).overlap);
 }
 
 TEST_CASE("overlap: the other element's boundary is interpolated linearly between its slices") {

@@ -3,7 +3,8 @@
 // near block; that misses a vertex more than one cell deep and an edge that crosses another element's
 // outline with neither end inside (thin parts: tails, legs). Here every boundary vertex is tested against
 // every other element whose boundary polygon, interpolated linearly at the vertex's t, can reach it (a
-// box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk.
+// box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk;
+// so are the middles of the slice intervals on either side of it.
 // The force adds to Eq. 3 a pull towards the other element's outline that grows with depth
 // (docs/parameters.md, "Overlaps").
 #include <algorithm>
@@ -46,25 +47,28 @@ void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
   }
 }
 
-OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v) {
-  OverlapResult r;
-  if ((topo.flags[v] & vertex_boundary) == 0) return r;
-  const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
-  const std::int32_t own_lo = topo.slice_begin[own_slice], own_count = topo.slice_boundary[own_slice];
-  const std::int32_t next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
-  const float px = state.x[v], py = state.y[v], pt = state.t[v];
-  const float nx = state.x[next], ny = state.y[next];
-  const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
-  const std::int32_t own_index = own_slice - topo.element_slice_begin[own];
-  float best2 = 0.0f;
+namespace {
 
+// What one query point found: a point p at time pt, with its boundary edge p → n.
+struct PointOverlap {
+  bool overlap = false, inside = false;
+  float near2 = 0.0f;          // when inside: squared distance to the nearest way out
+  float qx = 0.0f, qy = 0.0f;  // that way out, a point of the other element's outline
+};
+
+// The query point against every element but `own`, each one's slice pair around pt searched from slice
+// index `start` of that element.
+PointOverlap point_overlap(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t own,
+                           std::int32_t start, float px, float py, float pt, float nx, float ny) {
+  PointOverlap r;
+  const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
   for (std::int32_t e = 0; e < topo.element_count(); ++e) {
     if (e == own) continue;
     const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
     if (count < 2) continue;
-    // The pair of e's slices around v's t: start at v's own slice index (slices stay near their rest
-    // times), then walk down or up.
-    std::int32_t k = std::min(own_index, count - 2);
+    // The pair of e's slices around pt: start at the query's own slice index (slices stay near their
+    // rest times), then walk down or up.
+    std::int32_t k = std::min(start, count - 2);
     while (k > 0 && pt < slice_t(topo, state, first + k)) --k;
     while (k < count - 2 && pt > slice_t(topo, state, first + k + 1)) ++k;
     const std::int32_t s = first + k;
@@ -88,7 +92,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
       const float bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
       const float by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      // A proper crossing of v's boundary edge with this edge (touching does not count).
+      // A proper crossing of the query's boundary edge with this edge (touching does not count).
       if (opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
           opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by)))
         crosses = true;
@@ -106,12 +110,53 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
     }
     if (crosses) r.overlap = true;
     // Inside several elements: the nearest way out, the first element reaching it wins.
-    if (inside && (!r.inside || near2 < best2)) {
+    if (inside && (!r.inside || near2 < r.near2)) {
       r.overlap = r.inside = true;
-      best2 = near2;
+      r.near2 = near2;
       r.qx = qx;
       r.qy = qy;
     }
+  }
+  return r;
+}
+
+// Folds one query point's finding into v's result: any overlap counts; of the points inside another
+// element the deepest gives the way out, the first reaching it winning.
+void fold(const PointOverlap& found, float px, float py, OverlapResult& r, float& depth2) {
+  r.overlap = r.overlap || found.overlap;
+  if (!found.inside || (r.inside && !(found.near2 > depth2))) return;
+  r.inside = true;
+  depth2 = found.near2;
+  r.out_x = found.qx - px;
+  r.out_y = found.qy - py;
+}
+
+}  // namespace
+
+OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v) {
+  OverlapResult r;
+  if ((topo.flags[v] & vertex_boundary) == 0) return r;
+  const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
+  const std::int32_t own_lo = topo.slice_begin[own_slice], own_count = topo.slice_boundary[own_slice];
+  const std::int32_t next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
+  const std::int32_t own_index = own_slice - topo.element_slice_begin[own];
+  const std::int32_t own_slices = topo.element_slice_begin[own + 1] - topo.element_slice_begin[own];
+  const std::int32_t per_slice = topo.slice_begin[own_slice + 1] - own_lo;
+  float depth2 = 0.0f;
+  fold(point_overlap(topo, state, boxes, own, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
+                     state.y[next]),
+       state.x[v], state.y[v], r, depth2);
+  // Between slices (the paper's §6 and §8: overlaps can hide there): the middles of the two slice
+  // intervals next to v, the point and its edge interpolated halfway to the same vertices of the
+  // neighbouring slice, are tested like v.
+  for (const std::int32_t step : {1, -1}) {
+    if (own_index + step < 0 || own_index + step >= own_slices) continue;
+    const std::int32_t w = v + step * per_slice, wn = next + step * per_slice;
+    const float mx = (state.x[v] + state.x[w]) * 0.5f, my = (state.y[v] + state.y[w]) * 0.5f;
+    const float mt = (state.t[v] + state.t[w]) * 0.5f;
+    const float nx = (state.x[next] + state.x[wn]) * 0.5f, ny = (state.y[next] + state.y[wn]) * 0.5f;
+    fold(point_overlap(topo, state, boxes, own, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
+         depth2);
   }
   return r;
 }
@@ -135,8 +180,8 @@ Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& p
   Vec3f f{k_ovr * sum.x, k_ovr * sum.y, k_ovr * sum.t};
   if (overlap.inside) {
     const float k_depth = static_cast<float>(params.k_overlap_depth);
-    f.x = f.x + k_depth * (overlap.qx - x);
-    f.y = f.y + k_depth * (overlap.qy - y);
+    f.x = f.x + k_depth * overlap.out_x;
+    f.y = f.y + k_depth * overlap.out_y;
   }
   return f;
 }
