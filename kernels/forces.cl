@@ -73,7 +73,7 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   float gap = dist;
   if (boundary) {
     const float wall_gap = in_container ? sqrt(wall2) : 0.0f;
-    gap = wall_gap < dist ? wall_gap : dist;
+    gap = overlapping ? 0.0f : (wall_gap < dist ? wall_gap : dist);
     if (wall_gap < p.stop_gap) bits |= AP_CONTACT_WALL;
   }
   closest[v] = gap;

@@ -166,7 +166,7 @@ struct ForceBreakdown {
 struct StepForces {
   ForceField total;                  ///< Eq. 7 per vertex
   /// Per boundary vertex, the distance to the nearest other element or container wall (the slice gap of
-  /// §5.3 counts the wall as a neighbour); +inf for interior vertices.
+  /// §5.3 counts the wall as a neighbour), 0 when it overlaps; +inf for interior vertices.
   std::vector<float> closest;
   std::vector<std::uint8_t> contact; ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
 };

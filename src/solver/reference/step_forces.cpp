@@ -63,11 +63,13 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     r.total.x[v] = rpl.force.x + edg.x + tgt.x + bdr.x + ovr.x + tor.x + tmp.x;
     r.total.y[v] = rpl.force.y + edg.y + tgt.y + bdr.y + ovr.y + tor.y + tmp.y;
     r.total.t[v] = rpl.force.t + edg.t + tgt.t + bdr.t + ovr.t + tor.t + tmp.t;
-    // The wall is a neighbour too (§5.3's slice gap): a lone element stops at the container.
+    // The wall is a neighbour too (§5.3's slice gap): a lone element stops at the container. A vertex
+    // that overlaps touches, whatever the nearest triangle's distance (a middle of a slice interval
+    // may overlap where v itself is clear).
     std::uint8_t contact = wall.inside ? 0 : contact_outside;
     if (boundary) {
       const float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
-      r.closest[v] = wall_gap < rpl.closest ? wall_gap : rpl.closest;
+      r.closest[v] = overlap.overlap ? 0.0f : (wall_gap < rpl.closest ? wall_gap : rpl.closest);
       if (wall_gap < stop_gap) contact |= contact_wall;
     }
     if (overlap.overlap) contact |= contact_overlap;
