@@ -33,7 +33,7 @@ __kernel void grow_slices(const WorldInfo world, const ForceParams p,
                           __global const int* element_slice_begin, /* input: elements + 1 */
                           __global const float* proposed,          /* input: from propose_growth */
                           __global float* growth,                  /* input/output: g per slice */
-                          __global uchar* changed) {               /* output: 0, AP_GROWTH_GREW or AP_GROWTH_SHRANK */
+                          __global uchar* changed) {               /* output: AP_GROWTH_* bits */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int e = slice_element[s];
@@ -43,7 +43,10 @@ __kernel void grow_slices(const WorldInfo world, const ForceParams p,
   const float limit = p.growth_ratio * smallest;
   const float g = proposed[s] < limit ? proposed[s] : limit;
   const float old = growth[s];
-  changed[s] = g > old ? AP_GROWTH_GREW : (g < old ? AP_GROWTH_SHRANK : 0);
+  uchar bits = proposed[s] < limit ? 0 : AP_GROWTH_HELD;
+  if (g > old) bits |= AP_GROWTH_GREW;
+  if (g < old) bits |= AP_GROWTH_SHRANK;
+  changed[s] = bits;
   growth[s] = g;
 }
 
@@ -66,7 +69,7 @@ __kernel void update_rest_lengths(const WorldInfo world,
   for (int k = spring_begin[v]; k < spring_begin[v + 1]; ++k) {
     const int w = spring_other[k];
     const int sw = slice[w];
-    if (!(changed[sv] || changed[sw])) continue;
+    if (((changed[sv] | changed[sw]) & (AP_GROWTH_GREW | AP_GROWTH_SHRANK)) == 0) continue;
     const float xv = slice_ref_cx[sv] + growth[sv] * (ref_x[v] - slice_ref_cx[sv]);
     const float yv = slice_ref_cy[sv] + growth[sv] * (ref_y[v] - slice_ref_cy[sv]);
     const float xw = slice_ref_cx[sw] + growth[sw] * (ref_x[w] - slice_ref_cx[sw]);

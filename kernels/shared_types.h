@@ -28,6 +28,7 @@ typedef float ap_float;
 /* GrowthChange values (reference.hpp): what grow_slices did to a slice's g. */
 #define AP_GROWTH_GREW 1
 #define AP_GROWTH_SHRANK 2
+#define AP_GROWTH_HELD 4
 
 /* How far inside the container the containment projection puts a vertex (reference.hpp). */
 #define AP_CONTAINMENT_MARGIN 1e-5f

@@ -7,6 +7,7 @@ __kernel void slice_statistics(const WorldInfo world,
                                __global const int* slice_begin, /* input: slices + 1 */
                                __global const float* closest,   /* input: per vertex, from step_forces */
                                __global const uchar* contact,   /* input: AP_CONTACT_* per vertex */
+                               __global const uchar* changed,   /* input: AP_GROWTH_* per slice */
                                __global const float* x, __global const float* y, __global const float* t, /* input */
                                __global const float* vx, __global const float* vy, __global const float* vt, /* input */
                                __global float* slice_gap,       /* output: per slice */
@@ -25,7 +26,7 @@ __kernel void slice_statistics(const WorldInfo world,
                     isfinite(vt[v]);
     if (!ok && bad < 0) bad = v;
   }
-  slice_gap[s] = gap;
+  slice_gap[s] = (changed[s] & AP_GROWTH_HELD) != 0 ? 0.0f : gap;  /* held back by growth_ratio: touching */
   slice_overlap[s] = overlapping;
   slice_outside[s] = outside;
   slice_bad[s] = bad;

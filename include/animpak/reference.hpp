@@ -197,8 +197,10 @@ void apply_containment(const Topology& topo, SimState& state);
 
 // ---- growth (§5.3), growth.cpp -------------------------------------------------------------------------
 
-/// Values of the per-slice `changed` flags grow_slices writes.
-enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2 };
+/// Bits of the per-slice `changed` flags grow_slices writes: whether g grew or shrank, and whether the
+/// element's growth_ratio limit held it below its own proposal (such a slice cannot grow, so the stop
+/// test counts it as touching).
+enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
 /// One growth step (docs/parameters.md, "Growth"): a slice with a vertex that overlaps another element or
 /// lies outside the container shrinks by shrink_rate · Δt_sim (not below 1); one with a boundary vertex

@@ -98,6 +98,8 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   }
   CHECK(state.growth[2] == 1.0f);
   CHECK(state.growth[0] == 1.3f);
+  CHECK((changed[0] & reference::growth_held) != 0);  // it would grow: the limit holds it
+  CHECK(changed[2] == reference::growth_kept);         // the wall holds this one, not the limit
   // Element 1 is free and grows evenly: 40 steps of 0.05.
   for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
     CHECK(state.growth[s] == Approx(3.0).epsilon(1e-5));

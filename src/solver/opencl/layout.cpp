@@ -18,7 +18,8 @@ static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == verte
 static_assert(AP_SPRING_CLASSES == spring_class_count);
 static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
               AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside);
-static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank);
+static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank &&
+              AP_GROWTH_HELD == reference::growth_held);
 static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);
 static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
 

@@ -188,7 +188,7 @@ class DeviceBackend final : public OpenclBackend {
     rest_lengths_.bind(world_, slice, spring_begin, spring_other, changed_, growth_, ref_x, ref_y, ref_t, ref_cx,
                        ref_cy, rest_);
     statistics_ = Kernel(program, "slice_statistics");
-    statistics_.bind(world_, slice_begin, closest_, contact_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_overlap_,
+    statistics_.bind(world_, slice_begin, closest_, contact_, changed_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_overlap_,
                      slice_outside_, slice_bad_);
     spring_count_ = initial.spring_rest.size();
     check(queue_.finish(), "clFinish(upload)");
@@ -240,7 +240,7 @@ class DeviceBackend final : public OpenclBackend {
     st.iteration = iteration_;
     std::int32_t grown = 0;
     for (std::int32_t s = 0; s < slices; ++s) {
-      grown += changed[s] == AP_GROWTH_GREW;
+      grown += (changed[s] & AP_GROWTH_GREW) != 0;
       st.overlapping_vertices += overlapping[s];
       st.outside_vertices += outside[s];
       if (st.finite && bad[s] >= 0) st.finite = false, st.first_bad_vertex = bad[s];

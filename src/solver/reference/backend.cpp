@@ -60,7 +60,8 @@ class ReferenceBackend final : public Backend {
         float gap = std::numeric_limits<float>::infinity();
         for (std::int32_t v = topo_.slice_begin[s]; v < topo_.slice_begin[s + 1]; ++v)
           gap = forces.closest[v] < gap ? forces.closest[v] : gap;
-        slice_gap_[s] = gap;
+        // A slice its element's growth_ratio holds back cannot grow: it counts as touching.
+        slice_gap_[s] = (changed_[s] & reference::growth_held) != 0 ? 0.0f : gap;
       }
       contact_ = std::move(forces.contact);
     }

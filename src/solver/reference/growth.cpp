@@ -42,8 +42,10 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     const float limit = ratio * smallest;
     for (std::int32_t s = first; s < end; ++s) {
       const float g = proposed[s] < limit ? proposed[s] : limit;
-      if (g > state.growth[s]) changed[s] = growth_grew, ++grown;
-      if (g < state.growth[s]) changed[s] = growth_shrank;
+      std::uint8_t bits = proposed[s] < limit ? growth_kept : growth_held;
+      if (g > state.growth[s]) bits |= growth_grew, ++grown;
+      if (g < state.growth[s]) bits |= growth_shrank;
+      changed[s] = bits;
       state.growth[s] = g;
     }
   }
@@ -54,7 +56,7 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
 void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state) {
   for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
-      if (changed[topo.slice[v]] || changed[topo.slice[topo.spring_other[k]]])
+      if (((changed[topo.slice[v]] | changed[topo.slice[topo.spring_other[k]]]) & (growth_grew | growth_shrank)) != 0)
         state.spring_rest[k] = reference_rest_length(topo, state.growth, v, k);
 }
 
