@@ -14,7 +14,7 @@
 
 namespace animpak {
 
-enum class StopReason { running, gap, unsettled, growth, max_iterations, interrupted, non_finite };
+enum class StopReason { running, gap, stalled, unsettled, growth, max_iterations, interrupted, non_finite };
 const char* stop_reason_name(StopReason r);
 
 /// Reduced statistics of the latest step (no full read-back needed).
@@ -26,6 +26,7 @@ struct StepStatistics {
   std::int64_t overlapping_vertices = 0;  ///< boundary vertices inside another element or crossing one
   std::int64_t outside_vertices = 0;      ///< vertices outside the container (before containment moved them)
   float min_growth = 1.0f, max_growth = 1.0f;
+  double mean_growth = 1.0;     ///< mean g over all slices, summed in slice order
   bool finite = true;           ///< every position and velocity is finite
   std::int32_t first_bad_vertex = -1;  ///< when not finite
 };
@@ -76,6 +77,9 @@ class Backend {
   /// Stops growth for good (slices may still shrink): the settling phase of the stop test. Recorded in
   /// the state's settling_since.
   virtual void stop_growth() = 0;
+  /// Records the stall test's progress mark in the state (mark_iteration, mark_growth), so a resumed
+  /// run tests at the same iterations.
+  virtual void set_progress_mark(std::uint64_t iteration, double mean_growth) = 0;
   /// Phase times so far. A device backend adds a launch's time once it has completed: call finish()
   /// before reading them (statistics() and state() finish too).
   virtual const PhaseTimes& times() const = 0;

@@ -100,6 +100,10 @@ struct SimState {
   /// The iteration at which growth stopped for the settling phase (docs/parameters.md, "Stop test"),
   /// or 0 while slices still grow.
   std::uint64_t settling_since = 0;
+  /// The run's last progress mark (docs/parameters.md, "Stop test"): the iteration (0: none yet) and the
+  /// mean g of all slices then. The stall test compares the mean g a window later with it.
+  std::uint64_t mark_iteration = 0;
+  double mark_growth = 0.0;
 };
 
 /// §5.3: the rest length of CSR slot `slot` of vertex `v`: the distance between the spring's two ends

@@ -97,6 +97,8 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put_string(c.stop_reason);
   w.put<std::uint64_t>(c.state.iteration);
   w.put<std::uint64_t>(c.state.settling_since);
+  w.put<std::uint64_t>(c.state.mark_iteration);
+  w.put<double>(c.state.mark_growth);
   for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
                         &c.state.spring_rest, &c.state.growth})
     w.put_array(*a);
@@ -142,6 +144,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   c.stop_reason = r.get_string();
   c.state.iteration = r.get<std::uint64_t>();
   c.state.settling_since = r.get<std::uint64_t>();
+  c.state.mark_iteration = r.get<std::uint64_t>();
+  c.state.mark_growth = r.get<double>();
   for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
                   &c.state.growth})
     *a = r.get_array<float>();

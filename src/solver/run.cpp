@@ -37,16 +37,31 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     // spills (docs/parameters.md, "Stop test"), so a packing that stops is one the solver sees as correct.
     const bool clean = result.last.overlapping_vertices == 0 && result.last.outside_vertices == 0;
     std::uint64_t settling_since = result.last_good.settling_since;
-    if (settling_since == 0 && result.last.max_slice_gap < static_cast<float>(params.stop_gap)) {
+    // Growth can also stall short of the gap test, in a steady exchange of slices that grow into a
+    // neighbour and shrink back: the mean g then no longer rises over a window of stall_window steps.
+    bool stalled = false;
+    const auto window = static_cast<std::uint64_t>(params.stall_window);
+    if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + window) {
+      const SimState& mark = result.last_good;
+      stalled = mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stall_growth));
+      if (!stalled) {
+        backend.set_progress_mark(iteration, result.last.mean_growth);
+        result.last_good.mark_iteration = iteration;
+        result.last_good.mark_growth = result.last.mean_growth;
+      }
+    }
+    // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
+    const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop_gap);
+    if (settling_since == 0 && (stalled || touching)) {
       if (clean) {
-        result.reason = StopReason::gap;
+        result.reason = touching ? StopReason::gap : StopReason::stalled;
         break;
       }
       backend.stop_growth();
       settling_since = iteration;
       result.last_good.settling_since = settling_since;
     } else if (settling_since != 0 && clean) {
-      result.reason = StopReason::gap;
+      result.reason = touching ? StopReason::gap : StopReason::stalled;
       break;
     }
     if (settling_since != 0 && iteration - settling_since >= static_cast<std::uint64_t>(params.settle_iterations)) {

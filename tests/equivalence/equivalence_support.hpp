@@ -96,6 +96,7 @@ inline std::string state_difference(const SimState& ref, const SimState& dev) {
   }
   if (ref.iteration != dev.iteration) out += "iteration differs\n";
   if (ref.settling_since != dev.settling_since) out += "settling_since differs\n";
+  if (ref.mark_iteration != dev.mark_iteration || ref.mark_growth != dev.mark_growth) out += "progress mark differs\n";
   return out;
 }
 

@@ -30,6 +30,8 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
 void require_identical(const SimState& a, const SimState& b) {
   CHECK(a.iteration == b.iteration);
   CHECK(a.settling_since == b.settling_since);
+  CHECK(a.mark_iteration == b.mark_iteration);
+  CHECK(a.mark_growth == b.mark_growth);
   CHECK(same_bytes(a.x, b.x));
   CHECK(same_bytes(a.y, b.y));
   CHECK(same_bytes(a.t, b.t));

@@ -52,6 +52,7 @@ class DeviceBackend final : public OpenclBackend {
   DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
                 GridSort sort)
       : topo_(topology), info_(info), iteration_(initial.iteration), settling_since_(initial.settling_since),
+        mark_iteration_(initial.mark_iteration), mark_growth_(initial.mark_growth),
         rebuild_(params.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
     validate(topo_);
@@ -198,6 +199,10 @@ class DeviceBackend final : public OpenclBackend {
   const DeviceInfo& device() const override { return info_; }
   GridSort grid_sort() const override { return sort_; }
   void finish() override { settle_times(); }
+  void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
+    mark_iteration_ = iteration;
+    mark_growth_ = mean_growth;
+  }
   void stop_growth() override {
     if (settling_since_ != 0) return;
     settling_since_ = iteration_;
@@ -262,6 +267,8 @@ class DeviceBackend final : public OpenclBackend {
     settle_times();
     s.iteration = iteration_;
     s.settling_since = settling_since_;
+    s.mark_iteration = mark_iteration_;
+    s.mark_growth = mark_growth_;
     return s;
   }
 
@@ -436,6 +443,8 @@ class DeviceBackend final : public OpenclBackend {
   DeviceInfo info_;
   std::uint64_t iteration_;
   std::uint64_t settling_since_;
+  std::uint64_t mark_iteration_;
+  double mark_growth_;
   int rebuild_;
   GridSort sort_;
   bool grid_built_ = false;

@@ -89,6 +89,10 @@ class ReferenceBackend final : public Backend {
   void stop_growth() override {
     if (state_.settling_since == 0) state_.settling_since = state_.iteration;
   }
+  void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
+    state_.mark_iteration = iteration;
+    state_.mark_growth = mean_growth;
+  }
   const PhaseTimes& times() const override { return times_; }
 
  private:
@@ -114,16 +118,20 @@ void reduce_slice_statistics(const std::vector<float>& slice_gap, const std::vec
   }
   st.growing_share = slice_gap.empty() ? 0.0 : double(grown) / double(slice_gap.size());
   st.min_growth = st.max_growth = growth.empty() ? 1.0f : growth[0];
+  double sum = 0.0;
   for (const float g : growth) {
     st.min_growth = g < st.min_growth ? g : st.min_growth;
     st.max_growth = g > st.max_growth ? g : st.max_growth;
+    sum += g;
   }
+  st.mean_growth = growth.empty() ? 1.0 : sum / double(growth.size());
 }
 
 const char* stop_reason_name(StopReason r) {
   switch (r) {
     case StopReason::running: return "running";
     case StopReason::gap: return "gap";
+    case StopReason::stalled: return "stalled";
     case StopReason::unsettled: return "unsettled";
     case StopReason::growth: return "growth";
     case StopReason::max_iterations: return "max_iterations";
