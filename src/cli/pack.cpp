@@ -161,6 +161,10 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
+  if (result.reason == StopReason::unsettled)
+    std::cerr << "animpak: warning: " << result.last.overlapping_vertices << " vertices still overlap another element and "
+              << result.last.outside_vertices << " lie outside the container after " << world.params.settle_iterations
+              << " settling steps; more slices (top-level \"slices\") or a larger params.settle_iterations may help\n";
   if (render_frames && result.reason != StopReason::interrupted) report.quality = render_frames(world, out);
   write_stats(out / "stats.json", report);
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);
