@@ -27,7 +27,8 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
 }
 
 /** Slice s's new g: its proposal, limited to growth_ratio × the smallest proposal of its element (a min
- * over the element's slices in order); `changed` says whether it grew or shrank. */
+ * over the element's slices in order) and to neighbour_growth_ratio × each time neighbour's proposal;
+ * `changed` says whether it grew or shrank and whether a limit held it. */
 __kernel void grow_slices(const WorldInfo world, const ForceParams p,
                           __global const int* slice_element,       /* input: per slice */
                           __global const int* element_slice_begin, /* input: elements + 1 */
@@ -40,10 +41,14 @@ __kernel void grow_slices(const WorldInfo world, const ForceParams p,
   const int first = element_slice_begin[e], end = element_slice_begin[e + 1];
   float smallest = proposed[first];
   for (int k = first + 1; k < end; ++k) smallest = proposed[k] < smallest ? proposed[k] : smallest;
-  const float limit = p.growth_ratio * smallest;
-  const float g = proposed[s] < limit ? proposed[s] : limit;
+  float bound = p.growth_ratio * smallest;
+  const float before = p.neighbour_growth_ratio * (s > first ? proposed[s - 1] : 0.0f);
+  const float after = p.neighbour_growth_ratio * (s + 1 < end ? proposed[s + 1] : 0.0f);
+  if (s > first && before < bound) bound = before;
+  if (s + 1 < end && after < bound) bound = after;
+  const float g = proposed[s] < bound ? proposed[s] : bound;
   const float old = growth[s];
-  uchar bits = proposed[s] < limit ? 0 : AP_GROWTH_HELD;
+  uchar bits = proposed[s] < bound ? 0 : AP_GROWTH_HELD;
   if (g > old) bits |= AP_GROWTH_GREW;
   if (g < old) bits |= AP_GROWTH_SHRANK;
   changed[s] = bits;

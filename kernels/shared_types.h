@@ -62,6 +62,7 @@ typedef struct {
   ap_float growth_step;                 /* growth_rate * dt */
   ap_float shrink_step;                 /* shrink_rate * dt */
   ap_float growth_ratio;
+  ap_float neighbour_growth_ratio;
   ap_float max_growth;
   ap_float stop_gap;
   ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */

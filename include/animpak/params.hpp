@@ -48,6 +48,7 @@ struct Params {
   double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
   double shrink_rate = 0.01;        ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
   double growth_ratio = 1.3;        ///< an element's largest g is at most growth_ratio × its smallest
+  double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
   double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
   double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
   int max_iterations = 100000;      ///< hard cap on steps

@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 37> table{{
+const std::array<ParamInfo, 38> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
     {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
@@ -41,6 +41,7 @@ const std::array<ParamInfo, 37> table{{
     {"growth_rate", &Params::growth_rate, 0.0, inf, "g += growth_rate · Δt_sim per free step (§5.3)"},
     {"shrink_rate", &Params::shrink_rate, 0.0, inf, "g -= shrink_rate · Δt_sim per step while overlapping"},
     {"growth_ratio", &Params::growth_ratio, 1.0, inf, "largest g of an element ≤ growth_ratio × its smallest"},
+    {"neighbour_growth_ratio", &Params::neighbour_growth_ratio, 1.0, inf, "g ≤ this × either time neighbour's g"},
     {"stop_gap", &Params::stop_gap, 0.0, 1.0, "stop when the largest per-slice gap is below this (§5.3)"},
     {"stop_growth", &Params::stop_growth, 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
     {"max_iterations", &Params::max_iterations, 1, 100000000, "hard cap on simulation steps"},

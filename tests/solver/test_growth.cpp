@@ -31,7 +31,8 @@ TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wal
   params.growth_rate = 3.0;  // step 0.15: visible in float at every g used below
   params.shrink_rate = 2.0;  // 0.1
   params.max_growth = 2.0;
-  params.growth_ratio = 100.0;  // no ratio limit in this case
+  params.growth_ratio = 100.0;  // no ratio limits in this case
+  params.neighbour_growth_ratio = 100.0;
   const float step = static_cast<float>(params.growth_rate * params.dt);
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
 
@@ -86,6 +87,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   Params params = w.params;
   params.growth_rate = 1.0;  // 0.05 per step
   params.growth_ratio = 1.3;
+  params.neighbour_growth_ratio = 100.0;  // the element-wide limit alone; the next case has this one
   SimState state = w.state;
   // Element 0's slice 2 sits at the wall for good; its other slices may grow up to 1.3 × its g.
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
@@ -145,4 +147,32 @@ TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice chang
   CHECK(wrong == 0);
   CHECK(unchanged_touching == 0);  // g 1 → 1.5 changes every such length well beyond float rounding
   CHECK(changed_elsewhere == 0);
+}
+
+TEST_CASE("grow_slices: no slice outgrows either time neighbour by more than neighbour_growth_ratio") {
+  const World w = tiny_world();
+  const Topology& topo = w.topology;
+  Params params = w.params;
+  params.neighbour_growth_ratio = 1.03;
+  params.growth_ratio = 100.0;
+  const float step = static_cast<float>(params.growth_rate * params.dt);
+  SimState state = w.state;
+  // Element 0's slice 2 (of 0..4) sits at the wall for good: its neighbours stop at 1.03, theirs at
+  // about 1.03², so the size falls off smoothly towards the slice that is held.
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  contact[topo.slice_begin[2]] = contact_wall;
+  std::vector<std::uint8_t> changed;
+  for (int k = 0; k < 2000; ++k) reference::grow_slices(topo, contact, params, true, state, changed);
+  CHECK(state.growth[2] == 1.0f);
+  CHECK(state.growth[1] == Approx(1.03f).epsilon(1e-6));
+  CHECK(state.growth[3] == Approx(1.03f).epsilon(1e-6));
+  // The limit is taken against the neighbour's proposal, so it holds to within one growth step.
+  for (std::int32_t s = 0; s + 1 < 5; ++s) {
+    INFO("slices " << s << ", " << s + 1);
+    CHECK(state.growth[s] <= 1.03f * (state.growth[s + 1] + step));
+    CHECK(state.growth[s + 1] <= 1.03f * (state.growth[s] + step));
+  }
+  CHECK(state.growth[0] > 1.05f);
+  // Element 1 is free: its slices grew alike, 2000 steps of growth_rate · dt.
+  CHECK(state.growth[5] == Approx(1.0 + 2000 * step).epsilon(1e-3));
 }

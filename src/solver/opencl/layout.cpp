@@ -10,9 +10,9 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
-static_assert(sizeof(ForceParams) == 22 * 4 && offsetof(ForceParams, k_spring) == 12 &&
-              offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 76 &&
-              offsetof(ForceParams, k_target_angle) == 84);
+static_assert(sizeof(ForceParams) == 23 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+              offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
+              offsetof(ForceParams, k_target_angle) == 88);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
@@ -41,6 +41,7 @@ ForceParams force_params(const Params& params) {
   p.growth_step = static_cast<float>(params.growth_rate * params.dt);
   p.shrink_step = static_cast<float>(params.shrink_rate * params.dt);
   p.growth_ratio = static_cast<float>(params.growth_ratio);
+  p.neighbour_growth_ratio = static_cast<float>(params.neighbour_growth_ratio);
   p.max_growth = static_cast<float>(params.max_growth);
   p.stop_gap = static_cast<float>(params.stop_gap);
   p.k_target_angle = static_cast<float>(params.k_target_angle);

@@ -12,6 +12,7 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
   const float cap = static_cast<float>(params.max_growth);
   const float ratio = static_cast<float>(params.growth_ratio);
+  const float neighbour_ratio = static_cast<float>(params.neighbour_growth_ratio);
   const std::int32_t slices = topo.slice_count();
 
   // Each slice's own proposal from its contacts.
@@ -31,7 +32,7 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     proposed[s] = next;
   }
 
-  // The element's smallest proposal bounds every slice of it.
+  // The element's smallest proposal bounds every slice of it, and each slice's time neighbours bound it.
   changed.assign(slices, growth_kept);
   std::int32_t grown = 0;
   for (std::int32_t e = 0; e < topo.element_count(); ++e) {
@@ -41,8 +42,11 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     for (std::int32_t s = first + 1; s < end; ++s) smallest = proposed[s] < smallest ? proposed[s] : smallest;
     const float limit = ratio * smallest;
     for (std::int32_t s = first; s < end; ++s) {
-      const float g = proposed[s] < limit ? proposed[s] : limit;
-      std::uint8_t bits = proposed[s] < limit ? growth_kept : growth_held;
+      float bound = limit;
+      if (s > first && neighbour_ratio * proposed[s - 1] < bound) bound = neighbour_ratio * proposed[s - 1];
+      if (s + 1 < end && neighbour_ratio * proposed[s + 1] < bound) bound = neighbour_ratio * proposed[s + 1];
+      const float g = proposed[s] < bound ? proposed[s] : bound;
+      std::uint8_t bits = proposed[s] < bound ? growth_kept : growth_held;
       if (g > state.growth[s]) bits |= growth_grew, ++grown;
       if (g < state.growth[s]) bits |= growth_shrank;
       changed[s] = bits;
