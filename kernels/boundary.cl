@@ -20,15 +20,8 @@ bool container_query(int segments, float px, float py, bool nearest, __global co
   if (inside && !nearest) return true;
 
   for (int i = 0; i < segments; ++i) {
-    const float dx = bx[i] - ax[i], dy = by[i] - ay[i];
-    const float len2 = dx * dx + dy * dy;
-    float s = 0.0f;
-    if (len2 > 0.0f) s = ((px - ax[i]) * dx + (py - ay[i]) * dy) / len2;
-    if (s < 0.0f) s = 0.0f;
-    if (s > 1.0f) s = 1.0f;
-    const float cx = ax[i] + dx * s, cy = ay[i] + dy * s;
-    const float ex = px - cx, ey = py - cy;
-    const float d2 = ex * ex + ey * ey;
+    float cx, cy;
+    const float d2 = closest_point_on_segment(px, py, ax[i], ay[i], bx[i], by[i], &cx, &cy);
     if (d2 < *distance2) {
       *distance2 = d2;
       *qx = cx;

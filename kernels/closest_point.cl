@@ -5,6 +5,21 @@
 
 float ap_dot3(float ax, float ay, float at, float bx, float by, float bt) { return ax * bx + ay * by + at * bt; }
 
+/** Closest point (*qx, *qy) to (px, py) on segment ab in x, y, clamped to the segment; returns the squared
+ * distance (reference closest_point_on_segment). */
+float closest_point_on_segment(float px, float py, float ax, float ay, float bx, float by, float* qx, float* qy) {
+  const float dx = bx - ax, dy = by - ay;
+  const float len2 = dx * dx + dy * dy;
+  float s = 0.0f;
+  if (len2 > 0.0f) s = ((px - ax) * dx + (py - ay) * dy) / len2;
+  if (s < 0.0f) s = 0.0f;
+  if (s > 1.0f) s = 1.0f;
+  *qx = ax + dx * s;
+  *qy = ay + dy * s;
+  const float ex = px - *qx, ey = py - *qy;
+  return ex * ex + ey * ey;
+}
+
 /** Writes the closest point to p on triangle abc into (*qx, *qy, *qt). */
 void closest_point_on_triangle(float px, float py, float pt, float ax, float ay, float at, float bx, float by,
                                float bt, float cx, float cy, float ct, float* qx, float* qy, float* qt) {

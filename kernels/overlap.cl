@@ -86,15 +86,8 @@ uchar overlap_point(int own, int start, float px, float py, float pt, float nx, 
       if (overlap_opposite(overlap_orient(ax, ay, bx, by, px, py), overlap_orient(ax, ay, bx, by, nx, ny)) &&
           overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by)))
         crosses = true;
-      const float dx = bx - ax, dy = by - ay;
-      const float len2 = dx * dx + dy * dy;
-      float f = 0.0f;
-      if (len2 > 0.0f) f = ((px - ax) * dx + (py - ay) * dy) / len2;
-      if (f < 0.0f) f = 0.0f;
-      if (f > 1.0f) f = 1.0f;
-      const float cx = ax + dx * f, cy = ay + dy * f;
-      const float ux = px - cx, uy = py - cy;
-      const float d2 = ux * ux + uy * uy;
+      float cx, cy;
+      const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
     if (crosses) overlap = true;

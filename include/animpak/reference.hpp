@@ -59,6 +59,11 @@ void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std
 /// closest_point.cpp.
 Vec3f closest_point_on_triangle(Vec3f p, Vec3f a, Vec3f b, Vec3f c);
 
+/// Closest point (*qx, *qy) to (px, py) on segment ab in x, y: the projection onto the line, clamped to
+/// the segment (a for a zero-length one); returns the squared distance. The container's wall and the
+/// overlap test's way out both use it. closest_point.cpp.
+float closest_point_on_segment(float px, float py, float ax, float ay, float bx, float by, float& qx, float& qy);
+
 /// One step of the even–odd (ray crossing) point-in-polygon test: whether the ray from (px, py)
 /// towards +x crosses segment (ax, ay)–(bx, by). Toggle "inside" on every true. boundary.cpp.
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by);

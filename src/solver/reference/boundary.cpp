@@ -32,15 +32,8 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
 
   // Closest point over all segments; the first segment reaching the minimum wins.
   for (std::size_t i = 0; i < segments; ++i) {
-    const float dx = box.bx[i] - box.ax[i], dy = box.by[i] - box.ay[i];
-    const float len2 = dx * dx + dy * dy;
-    float s = 0.0f;
-    if (len2 > 0.0f) s = ((px - box.ax[i]) * dx + (py - box.ay[i]) * dy) / len2;
-    if (s < 0.0f) s = 0.0f;
-    if (s > 1.0f) s = 1.0f;
-    const float cx = box.ax[i] + dx * s, cy = box.ay[i] + dy * s;
-    const float ex = px - cx, ey = py - cy;
-    const float d2 = ex * ex + ey * ey;
+    float cx, cy;
+    const float d2 = closest_point_on_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i], cx, cy);
     if (d2 < q.distance2) {
       q.distance2 = d2;
       q.qx = cx;

@@ -96,16 +96,8 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
       if (opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
           opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by)))
         crosses = true;
-      // The closest point of this edge, as for the container (boundary.cpp).
-      const float dx = bx - ax, dy = by - ay;
-      const float len2 = dx * dx + dy * dy;
-      float f = 0.0f;
-      if (len2 > 0.0f) f = ((px - ax) * dx + (py - ay) * dy) / len2;
-      if (f < 0.0f) f = 0.0f;
-      if (f > 1.0f) f = 1.0f;
-      const float cx = ax + dx * f, cy = ay + dy * f;
-      const float ux = px - cx, uy = py - cy;
-      const float d2 = ux * ux + uy * uy;
+      float cx, cy;
+      const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
       if (d2 < near2) near2 = d2, qx = cx, qy = cy;
     }
     if (crosses) r.overlap = true;
