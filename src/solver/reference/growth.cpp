@@ -1,7 +1,7 @@
 // Growth of §5.3 with the containment and steadiness rules of docs/parameters.md ("Growth"): the paper
 // pauses a slice that overlaps; here an overlapping or spilling slice shrinks back, a slice touching the
-// wall pauses, and no slice outgrows growth_ratio × the smallest slice of its element, so an element's
-// size changes smoothly over the loop.
+// wall pauses, and no slice outgrows growth_ratio × the smallest slice of its element nor
+// neighbour_growth_ratio × either time neighbour, so an element's size changes smoothly over the loop.
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
