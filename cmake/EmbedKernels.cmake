@@ -1,8 +1,8 @@
 # Embeds kernels/*.cl and kernels/shared_types.h into a generated C++ source, so `animpak` finds its
-# kernels from any folder (design.md "Kernels written once"). Two roles in one file:
+# kernels from any folder (docs/architecture.md, "The twin rule"). Two roles in one file:
 #   include(cmake/EmbedKernels.cmake) defines animpak_embed_kernels(OUTPUT KERNEL_DIR);
 #   cmake -DKERNEL_DIR=... -DOUTPUT=... -P cmake/EmbedKernels.cmake writes OUTPUT (run at build time).
-# The generated file defines animpak::opencl::embedded_kernel_source(name) and embedded_kernel_names().
+# The generated file defines animpak::opencl::embedded_kernel_source(name).
 
 if(CMAKE_SCRIPT_MODE_FILE)
   file(GLOB kernel_files RELATIVE "${KERNEL_DIR}" "${KERNEL_DIR}/*.cl" "${KERNEL_DIR}/*.h")

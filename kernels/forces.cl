@@ -1,4 +1,4 @@
-/* Total force, paper Eq. 7, gathered per vertex (src/solver/reference/step_forces.cpp): the overlap
+/* Total force, paper Eq. 7, gathered per vertex (src/solver/reference/forces.cpp): the overlap
  * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), the container
  * query, then every other force, summed left to right in this order:
  *   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)

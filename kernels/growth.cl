@@ -1,7 +1,7 @@
 /* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
  * (shrink while overlapping or outside, pause at the wall, grow otherwise), then every slice is limited
  * to growth_ratio × the smallest proposal of its element, and the springs touching a changed slice
- * take their rest length from the scaled reference copy. */
+ * take their rest length from the scaled rest copy. */
 
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world, const ForceParams p,
@@ -56,17 +56,17 @@ __kernel void grow_slices(const WorldInfo world, const ForceParams p,
 }
 
 /** Rest length of every CSR slot of vertex v whose spring has an end on a changed slice
- * (solver.hpp: reference_rest_length, each end's slice scaled by its g about its reference centroid). */
+ * (state.hpp: rest_copy_length, each end's slice scaled by its g about its rest copy centroid). */
 __kernel void update_rest_lengths(const WorldInfo world,
                                   __global const int* slice,          /* input: per vertex */
                                   __global const int* spring_begin,   /* input: vertices + 1 */
                                   __global const int* spring_other,   /* input: per slot */
                                   __global const uchar* changed,      /* input: per slice */
                                   __global const float* growth,       /* input: g per slice */
-                                  __global const float* ref_x, __global const float* ref_y,
-                                  __global const float* ref_t,        /* input: reference copy per vertex */
-                                  __global const float* slice_ref_cx,
-                                  __global const float* slice_ref_cy, /* input: per slice */
+                                  __global const float* rest_copy_x, __global const float* rest_copy_y,
+                                  __global const float* rest_copy_t,        /* input: rest copy per vertex */
+                                  __global const float* slice_rest_copy_cx,
+                                  __global const float* slice_rest_copy_cy, /* input: per slice */
                                   __global float* spring_rest) {      /* output: per slot */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
@@ -75,11 +75,11 @@ __kernel void update_rest_lengths(const WorldInfo world,
     const int w = spring_other[k];
     const int sw = slice[w];
     if (((changed[sv] | changed[sw]) & (AP_GROWTH_GREW | AP_GROWTH_SHRANK)) == 0) continue;
-    const float xv = slice_ref_cx[sv] + growth[sv] * (ref_x[v] - slice_ref_cx[sv]);
-    const float yv = slice_ref_cy[sv] + growth[sv] * (ref_y[v] - slice_ref_cy[sv]);
-    const float xw = slice_ref_cx[sw] + growth[sw] * (ref_x[w] - slice_ref_cx[sw]);
-    const float yw = slice_ref_cy[sw] + growth[sw] * (ref_y[w] - slice_ref_cy[sw]);
-    const float dx = xw - xv, dy = yw - yv, dt = ref_t[w] - ref_t[v];
+    const float xv = slice_rest_copy_cx[sv] + growth[sv] * (rest_copy_x[v] - slice_rest_copy_cx[sv]);
+    const float yv = slice_rest_copy_cy[sv] + growth[sv] * (rest_copy_y[v] - slice_rest_copy_cy[sv]);
+    const float xw = slice_rest_copy_cx[sw] + growth[sw] * (rest_copy_x[w] - slice_rest_copy_cx[sw]);
+    const float yw = slice_rest_copy_cy[sw] + growth[sw] * (rest_copy_y[w] - slice_rest_copy_cy[sw]);
+    const float dx = xw - xv, dy = yw - yv, dt = rest_copy_t[w] - rest_copy_t[v];
     spring_rest[k] = sqrt(dx * dx + dy * dy + dt * dt);
   }
 }

@@ -1,4 +1,4 @@
-/* Structs and constants shared by the OpenCL kernels and the C++ host (design.md "Layout"). The
+/* Structs and constants shared by the OpenCL kernels and the C++ host (docs/architecture.md, "Layout shared by host and kernels"). The
  * kernels see this file first in every program; the host includes it from src/solver/opencl. Only
  * 4-byte scalars, so both compilers lay the structs out alike; the host static_asserts the sizes and
  * offsets (src/solver/opencl/layout.cpp) and that the constants match VertexFlag and SpringClass. */
@@ -14,12 +14,12 @@ typedef std::int32_t ap_int;
 typedef float ap_float;
 #endif
 
-/* VertexFlag bits (solver.hpp). */
+/* VertexFlag bits (state.hpp). */
 #define AP_VERTEX_BOUNDARY 1
 #define AP_VERTEX_ANCHOR 2
 #define AP_VERTEX_HOLD_ANGLE 16
 
-/* ContactBit values (solver.hpp): what the overlap and container tests found at a vertex. */
+/* ContactBit values (state.hpp): what the overlap and container tests found at a vertex. */
 #define AP_CONTACT_OVERLAP 1
 #define AP_CONTACT_OUTSIDE 2
 #define AP_CONTACT_WALL 4

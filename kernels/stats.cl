@@ -1,4 +1,4 @@
-/* Per-slice statistics for the stop test (src/solver/reference/backend.cpp), so the host reads a few
+/* Per-slice statistics for the stop test (src/solver/reference/stats.cpp), so the host reads a few
  * numbers per slice instead of the whole state. */
 
 /** Slice s's closest gap (min in vertex order), its overlapping and outside vertices and its first

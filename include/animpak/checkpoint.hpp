@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-#include "animpak/solver.hpp"
+#include "animpak/state.hpp"
 
 namespace animpak {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "animpak/reference.hpp"
-#include "animpak/solver.hpp"
+#include "animpak/state.hpp"
 
 namespace animpak {
 

@@ -66,7 +66,7 @@ ArtShape load_svg(const std::filesystem::path& file, const SvgOptions& options =
 /// Parses SVG text already in memory; `name` is used in messages.
 ArtShape parse_svg(const std::string& text, const std::string& name, const SvgOptions& options = {});
 
-/// Reads the authors' `.path` format (../shared/data/README.md). Paths come out in drawing order
+/// Reads the authors' `.path` format (docs/scene-format.md, "The `.path` art format"). Paths come out in drawing order
 /// (the file's last path first), each with its source_index and path_type.
 ArtShape load_path_file(const std::filesystem::path& file);
 

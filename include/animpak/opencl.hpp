@@ -1,4 +1,4 @@
-// The OpenCL backend (design.md "OpenCL host conventions"): devices found and chosen by name, the
+// The OpenCL backend (docs/architecture.md, "OpenCL host conventions"): devices found and chosen by name, the
 // kernels of kernels/*.cl built for them, and a Backend that runs the same step as the reference with
 // the state kept on the device. Every failed OpenCL call throws OpenclError.
 #pragma once
@@ -81,14 +81,16 @@ enum class GridSort { automatic, host, device };
 GridSort parse_grid_sort(std::string_view text, std::string_view option);
 const char* grid_sort_name(GridSort sort);
 
-/// The OpenCL backend, with entry points the equivalence tests use to compare single phases.
+/// The OpenCL backend, with two entry points that compare single phases with the reference: `animpak
+/// validate` and the equivalence tests use them.
 class OpenclBackend : public Backend {
  public:
   /// Builds the grid from the current state and computes Eq. 7 with every force apart, without
-  /// advancing the state (as reference::build_collision_grid then reference::step_forces).
-  virtual reference::StepForces debug_forces(reference::ForceBreakdown* out) = 0;
+  /// advancing the state (as reference::build_collision_grid then reference::step_forces); the grid is
+  /// left rebuilt.
+  virtual reference::StepForces evaluate_forces(reference::ForceBreakdown* out) = 0;
   /// The collision grid built on the device from the current state.
-  virtual reference::CollisionGrid debug_grid() = 0;
+  virtual reference::CollisionGrid build_and_read_grid() = 0;
   virtual const DeviceInfo& device() const = 0;
   /// Where this backend sorts the grid: host or device, never automatic.
   virtual GridSort grid_sort() const = 0;

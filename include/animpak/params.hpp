@@ -39,7 +39,7 @@ struct Params {
   double k_torsion = 2e-4;          ///< Eq. 5
   double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
   double k_temporal = 1.0;          ///< Eq. 6
-  double dt = 0.05;                 ///< Δt_sim, explicit Euler step
+  double dt = 0.05;                 ///< Δt_sim, symplectic Euler step
   double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
   double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
   int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps

@@ -15,7 +15,8 @@
 
 #include "animpak/element.hpp"
 #include "animpak/params.hpp"
-#include "animpak/solver.hpp"
+#include "animpak/simulation.hpp"
+#include "animpak/state.hpp"
 
 namespace animpak::reference {
 
@@ -176,7 +177,7 @@ struct StepForces {
   std::vector<std::uint8_t> contact; ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
 };
 
-/// Eq. 7 for every vertex from one snapshot of positions. step_forces.cpp.
+/// Eq. 7 for every vertex from one snapshot of positions. forces.cpp.
 StepForces step_forces(const Topology& topo, const SimState& state, const Params& params,
                        const CollisionGrid& grid, ForceBreakdown* out);
 
@@ -196,7 +197,8 @@ void apply_loop(const Topology& topo, SimState& state);
 
 /// Containment: every vertex outside the container moves to the nearest point of the container's boundary,
 /// a hair (containment_margin) inside, and stops in x, y. A hard constraint like those of §5.2, because
-/// the linear Eq. 4 loses against the stiff springs of a grown element (docs/parameters.md).
+/// the linear Eq. 4 loses against the stiff springs of a grown element (docs/parameters.md). boundary.cpp,
+/// beside the container query it uses (kernels/boundary.cl holds the kernel).
 inline constexpr float containment_margin = 1e-5f;
 void apply_containment(const Topology& topo, SimState& state);
 
@@ -218,5 +220,14 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
 
 /// Recomputes the rest length of every spring with an end on a slice marked in `changed`.
 void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state);
+
+// ---- statistics for the stop test, stats.cpp -------------------------------------------------------------
+
+/// Per slice, from the latest step's `closest` and `contact` (StepForces) and growth's `changed`: the
+/// least gap (0 for a slice growth_held marks), the overlapping and outside vertices, and the first
+/// vertex whose position or velocity is not finite.
+void slice_statistics(const Topology& topo, const SimState& state, const std::vector<float>& closest,
+                      const std::vector<std::uint8_t>& contact, const std::vector<std::uint8_t>& changed,
+                      SliceStatistics& out);
 
 }  // namespace animpak::reference

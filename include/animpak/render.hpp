@@ -1,5 +1,5 @@
 // Drawing: anti-aliased vector pictures with Cairo, written as image files with OpenImageIO.
-// This library sits beside the solver core, never under it (design.md): nothing in src/solver
+// This library sits beside the solver core, never under it (docs/architecture.md, "Data flow"): nothing in src/solver
 // includes this header.
 #pragma once
 

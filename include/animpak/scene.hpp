@@ -8,7 +8,7 @@
 #include "animpak/io.hpp"
 #include "animpak/random.hpp"
 #include "animpak/scene_spec.hpp"
-#include "animpak/solver.hpp"
+#include "animpak/state.hpp"
 
 namespace animpak {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "animpak/params.hpp"
-#include "animpak/solver.hpp"
+#include "animpak/state.hpp"
 
 namespace animpak {
 
@@ -31,11 +31,23 @@ struct StepStatistics {
   std::int32_t first_bad_vertex = -1;  ///< when not finite
 };
 
-/// The per-slice part of StepStatistics, reduced in slice order the same way by every backend: the
-/// range of the per-slice gaps (max from 0, min from +inf), the share of the slices that grew (`grown`
-/// of them), and the range of g (1 when there are no slices).
-void reduce_slice_statistics(const std::vector<float>& slice_gap, const std::vector<float>& growth,
-                             std::int32_t grown, StepStatistics& st);
+/// The per-slice statistics of the latest step, one entry per global slice, in slice order: computed by
+/// each backend in the same way (reference::slice_statistics, kernels/stats.cl) so the host reads a few
+/// numbers per slice instead of the whole state.
+struct SliceStatistics {
+  std::vector<float> gap;                 ///< least closest distance of the slice's vertices; 0 when held back
+  std::vector<std::int32_t> overlapping;  ///< vertices with contact_overlap
+  std::vector<std::int32_t> outside;      ///< vertices with contact_outside
+  std::vector<std::int32_t> first_bad;    ///< first vertex with a non-finite position or velocity, or -1
+  void resize(std::size_t slices) { gap.resize(slices), overlapping.resize(slices), outside.resize(slices), first_bad.resize(slices); }
+};
+
+/// StepStatistics from the per-slice statistics, reduced in slice order the same way for every backend:
+/// the range of the gaps (max from 0, min from +inf), the share of the slices that grew (`grown` of
+/// them), the vertex counts, the first non-finite vertex, and the range and mean of g (1 when there are
+/// no slices).
+void reduce_slice_statistics(const SliceStatistics& slices, const std::vector<float>& growth, std::int32_t grown,
+                             StepStatistics& st);
 
 /// Seconds spent per phase, summed over steps.
 struct PhaseTimes {

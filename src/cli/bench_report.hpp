@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "animpak/bench.hpp"
+#include "animpak/synthetic.hpp"
+#include "animpak/timing.hpp"
 
 namespace animpak::cli {
 

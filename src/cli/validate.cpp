@@ -1,6 +1,6 @@
 // `animpak validate`: the reference and an OpenCL device stepped side by side on one scene, every force
 // and every state array compared bit for bit, so that a user can check a device and driver before
-// trusting its packings (the kernels promise the reference's exact numbers, design.md).
+// trusting its packings (the kernels promise the reference's exact numbers: docs/architecture.md, "The twin rule").
 #include <algorithm>
 #include <cctype>
 #include <iostream>
@@ -34,12 +34,12 @@ void compare_field(ForceComparison& c, const reference::ForceField& ref, const r
 }
 
 // Eq. 7 force by force on each side's own current state: the reference from scratch, the device
-// through debug_forces (its grid rebuilt from its state, nothing advanced).
+// through evaluate_forces (its grid rebuilt from its state, nothing advanced).
 void compare_forces(DeviceValidation& v, const World& world, const SimState& ref_state, OpenclBackend& device) {
   const reference::CollisionGrid grid = reference::build_collision_grid(world.topology, ref_state, world.params);
   reference::ForceBreakdown ref_parts, dev_parts;
   const reference::StepForces ref = reference::step_forces(world.topology, ref_state, world.params, grid, &ref_parts);
-  const reference::StepForces dev = device.debug_forces(&dev_parts);
+  const reference::StepForces dev = device.evaluate_forces(&dev_parts);
   const auto state = static_cast<std::int64_t>(ref_state.iteration);
   for (std::size_t i = 0; i < breakdown_forces.size(); ++i)
     compare_field(v.forces[i], ref_parts.*breakdown_forces[i].field, dev_parts.*breakdown_forces[i].field, state);
@@ -73,7 +73,7 @@ DeviceValidation validate_device(const World& world, const DeviceInfo& info, int
   const std::unique_ptr<OpenclBackend> device =
       make_opencl_backend(world.topology, world.state, world.params, choice, sort);
   const std::unique_ptr<Backend> ref = make_reference_backend(world.topology, world.state, world.params);
-  // debug_forces rebuilds the device's grid; between two scheduled rebuilds that would hand the device's
+  // evaluate_forces rebuilds the device's grid; between two scheduled rebuilds that would hand the device's
   // next step a fresher grid than the reference's. So forces are compared where both sides rebuild
   // anyway, and at the last state, after which nothing steps.
   const auto rebuild = static_cast<std::uint64_t>(world.params.grid_rebuild_interval);

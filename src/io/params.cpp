@@ -34,7 +34,7 @@ const std::array<ParamInfo, 38> table{{
     {"k_target_angle", &Params::k_target_angle, 0.0, inf,
      "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)"},
     {"k_temporal", &Params::k_temporal, 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
-    {"dt", &Params::dt, 1e-6, 1.0, "Δt_sim, explicit Euler step (§5)"},
+    {"dt", &Params::dt, 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)"},
     {"velocity_cap", &Params::velocity_cap, 0.0, inf, "speeds are capped at velocity_cap · Δt_sim (§5)"},
     {"cell_size", &Params::cell_size, 0.005, 1.0, "collision grid cell edge (§5.1)"},
     {"grid_rebuild_interval", &Params::grid_rebuild_interval, 1, 1000, "rebuild the grid every k steps"},

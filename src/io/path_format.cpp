@@ -1,4 +1,4 @@
-// The authors' line-based `.path` format (RepulsionPak data; shared/data/README.md):
+// The authors' line-based `.path` format (RepulsionPak data; docs/scene-format.md):
 //   1  <numRegions>
 //   2  foreground_color_rgb <region> r,g,b ...   stroke per path, -1,-1,-1 = none
 //   3  background_color_rgb <region> r,g,b ...   fill per path

@@ -2,7 +2,7 @@
 // the libxml2 tree, parses attributes, CSS `style`, paths, shapes, transforms and viewports; the
 // contexts below keep the inherited style, compose transforms and emit flattened ArtPaths.
 #include <libxml/tree.h>
-// libxml2's headers must precede svgpp's libxml2 policy (design.md, dependency notes).
+// libxml2's headers must precede svgpp's libxml2 policy (docs/architecture.md, "Dependencies").
 #include <svgpp/policy/xml/libxml2.hpp>
 #include <svgpp/svgpp.hpp>
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "animpak/animation.hpp"
-#include "animpak/bench.hpp"
+#include "animpak/synthetic.hpp"
 #include "animpak/error.hpp"
 #include "placement.hpp"
 

@@ -24,8 +24,6 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
     for (int v = 0; v < P; ++v) {
       const Vec2 q = scene_detail::apply(p, s, e.position(s, v));
       std::uint8_t flags = v < B ? vertex_boundary : 0;
-      if (s == 0) flags |= vertex_first_slice;
-      if (s == n - 1) flags |= vertex_last_slice;
       std::int32_t target = -1;
       if (keyed && key->hold_angle) flags |= vertex_hold_angle;
       if (keyed && v == p.anchor) {
@@ -40,9 +38,9 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
       topo.flags.push_back(flags);
       topo.target.push_back(target);
       topo.rest_t.push_back(t);
-      topo.ref_x.push_back(static_cast<float>(q.x));
-      topo.ref_y.push_back(static_cast<float>(q.y));
-      topo.ref_t.push_back(t);
+      topo.rest_copy_x.push_back(static_cast<float>(q.x));
+      topo.rest_copy_y.push_back(static_cast<float>(q.y));
+      topo.rest_copy_t.push_back(t);
       state.x.push_back(static_cast<float>(q.x));
       state.y.push_back(static_cast<float>(q.y));
       state.t.push_back(t);
@@ -70,7 +68,7 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
   topo.element_slice_begin.push_back(S + n);
 }
 
-// Reference centroids and torsion rest directions: the slice's mean vertex, summed in index order
+// Rest copy centroids and torsion rest directions: the slice's mean vertex, summed in index order
 // exactly as the solver sums the current centroid.
 void finish_slices(Topology& topo) {
   const std::int32_t slices = topo.slice_count();
@@ -80,12 +78,12 @@ void finish_slices(Topology& topo) {
   for (std::int32_t s = 0; s < slices; ++s) {
     float sx = 0.0f, sy = 0.0f;
     const std::int32_t begin = topo.slice_begin[s], end = topo.slice_begin[s + 1];
-    for (std::int32_t v = begin; v < end; ++v) sx += topo.ref_x[v], sy += topo.ref_y[v];
+    for (std::int32_t v = begin; v < end; ++v) sx += topo.rest_copy_x[v], sy += topo.rest_copy_y[v];
     const float count = static_cast<float>(end - begin);
-    topo.slice_ref_cx.push_back(sx / count);
-    topo.slice_ref_cy.push_back(sy / count);
+    topo.slice_rest_copy_cx.push_back(sx / count);
+    topo.slice_rest_copy_cy.push_back(sy / count);
     for (std::int32_t v = begin; v < end; ++v) {
-      const float dx = topo.ref_x[v] - sx / count, dy = topo.ref_y[v] - sy / count;
+      const float dx = topo.rest_copy_x[v] - sx / count, dy = topo.rest_copy_y[v] - sy / count;
       const float length = std::sqrt(dx * dx + dy * dy);
       topo.rest_dir_x[v] = length > 0.0f ? dx / length : 1.0f;
       topo.rest_dir_y[v] = length > 0.0f ? dy / length : 0.0f;
@@ -198,7 +196,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   state.spring_rest.resize(topo.spring_other.size());
   for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
-      state.spring_rest[k] = reference_rest_length(topo, state.growth, v, k);
+      state.spring_rest[k] = rest_copy_length(topo, state.growth, v, k);
 
   world.container = std::move(container);
   world.library = std::move(library);

@@ -4,6 +4,20 @@
 
 namespace animpak {
 
+const char* stop_reason_name(StopReason r) {
+  switch (r) {
+    case StopReason::running: return "running";
+    case StopReason::gap: return "gap";
+    case StopReason::stalled: return "stalled";
+    case StopReason::unsettled: return "unsettled";
+    case StopReason::growth: return "growth";
+    case StopReason::max_iterations: return "max_iterations";
+    case StopReason::interrupted: return "interrupted";
+    case StopReason::non_finite: return "non_finite";
+  }
+  return "unknown";
+}
+
 RunResult run_simulation(Backend& backend, const Params& params, const RunControl& control) {
   const auto start = std::chrono::steady_clock::now();
   RunResult result;

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <chrono>
 
-#include "animpak/bench.hpp"
 #include "animpak/reference.hpp"
+#include "animpak/timing.hpp"
 
 namespace animpak {
 namespace {

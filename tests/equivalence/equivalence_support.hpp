@@ -1,4 +1,4 @@
-// Shared pieces of the equivalence suite (design.md "Equivalence by construction"): the devices under
+// Shared pieces of the equivalence suite (docs/architecture.md, "The twin rule"): the devices under
 // test, bit-for-bit comparison of arrays with the worst mismatch in ULPs, and seeded random worlds
 // built with the solver tests' WorldBuilder.
 #pragma once
@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -37,6 +38,18 @@ inline std::vector<DeviceChoice> devices_under_test() {
     out.push_back(c);
   }
   return out;
+}
+
+/// The line ctest's SKIP_REGULAR_EXPRESSION looks for (tests/CMakeLists.txt), so that a run with no
+/// device to compare shows its tests as skipped, not as passed.
+inline constexpr const char* no_device_skip = "skipped: no OpenCL device";
+
+/// True, after printing the skip line, when there is no device to test (none installed, or none that
+/// ANIMPAK_TEST_DEVICE names); the caller returns at once.
+inline bool skip_without_devices(const std::vector<DeviceChoice>& devices) {
+  if (!devices.empty()) return false;
+  std::cout << no_device_skip << " (or none matching ANIMPAK_TEST_DEVICE): nothing was compared\n";
+  return true;
 }
 
 /// Empty when `actual` matches `expected` bit for bit; otherwise names the array, the number of
@@ -100,12 +113,12 @@ inline std::string state_difference(const SimState& ref, const SimState& dev) {
   return out;
 }
 
-/// The reference copy growth scales (ref_x, slice_ref_cx, ...), taken from the state as built.
+/// The rest copy growth scales (rest_copy_x, slice_rest_copy_cx, ...), taken from the state as built.
 inline void fill_reference_copy(World& w) {
-  w.topo.ref_x = w.state.x;
-  w.topo.ref_y = w.state.y;
-  w.topo.ref_t = w.state.t;
-  reference::slice_centroids(w.topo, w.state, w.topo.slice_ref_cx, w.topo.slice_ref_cy);
+  w.topo.rest_copy_x = w.state.x;
+  w.topo.rest_copy_y = w.state.y;
+  w.topo.rest_copy_t = w.state.t;
+  reference::slice_centroids(w.topo, w.state, w.topo.slice_rest_copy_cx, w.topo.slice_rest_copy_cy);
 }
 
 struct RandomWorldShape {

@@ -37,10 +37,7 @@ TEST_CASE("opencl_error_name: codes become their names", "[opencl]") {
 
 TEST_CASE("try_build_kernels: every device builds; a broken kernel reports its log", "[opencl]") {
   const std::vector<DeviceChoice> devices = devices_under_test();
-  if (devices.empty()) {
-    WARN("no OpenCL device: kernel builds not tested");
-    return;
-  }
+  if (skip_without_devices(devices)) return;
   for (const DeviceChoice& d : devices) {
     const KernelBuild ok = try_build_kernels(d.device);
     INFO(d.device.name << "\n" << ok.log);

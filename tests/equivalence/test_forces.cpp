@@ -27,7 +27,7 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
   for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
     auto backend = make_opencl_backend(w.topo, w.state, params, d, sort);
     reference::ForceBreakdown dev_parts;
-    const reference::StepForces dev = backend->debug_forces(&dev_parts);
+    const reference::StepForces dev = backend->evaluate_forces(&dev_parts);
     const std::string diff = breakdown_difference(ref_parts, dev_parts) +
                              bit_difference("total.x", ref.total.x, dev.total.x) +
                              bit_difference("total.y", ref.total.y, dev.total.y) +
@@ -40,11 +40,7 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
   return c;
 }
 
-bool have_devices() {
-  if (!devices_under_test().empty()) return true;
-  WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
-  return false;
-}
+bool have_devices() { return !skip_without_devices(devices_under_test()); }
 
 // A ring of `count` vertices at the given points, repeated on every slice time.
 std::vector<TinySlice> tube(const Ring& ring, const std::vector<float>& times) {

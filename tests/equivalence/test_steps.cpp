@@ -29,10 +29,7 @@ std::string statistics_difference(const StepStatistics& a, const StepStatistics&
 void check_steps(const Topology& topo, const SimState& initial, const Params& params, int steps, int compare_every,
                  const std::string& label, int settle_at = 0) {
   const std::vector<DeviceChoice> devices = devices_under_test();
-  if (devices.empty()) {
-    WARN("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE): equivalence not tested");
-    return;
-  }
+  if (skip_without_devices(devices)) return;
   for (const DeviceChoice& d : devices) for (const GridSort sort : grid_sorts) {
     auto ref = make_reference_backend(topo, initial, params);
     auto dev = make_opencl_backend(topo, initial, params, d, sort);

@@ -1,5 +1,5 @@
 // World set-up (paper §4): guided anchors on their targets, loop pairs, the assembled CSR springs,
-// reference centroids and rest lengths, containment, the set-up errors, determinism and orientation.
+// rest copy centroids and rest lengths, containment, the set-up errors, determinism and orientation.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -146,8 +146,9 @@ TEST_CASE("build_world: loop pairs join an unguided element to itself and loop_t
   join(w.elements[2], w.elements[2]);
   CHECK(pairs == expected);
   for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
-    CHECK((topo.flags[topo.loop_end[i]] & vertex_last_slice));
-    CHECK((topo.flags[topo.loop_start[i]] & vertex_first_slice));
+    const std::int32_t end = topo.loop_end[i], start = topo.loop_start[i];
+    CHECK(topo.slice[end] == topo.element_slice_begin[topo.element[end] + 1] - 1);  // a last slice
+    CHECK(topo.slice[start] == topo.element_slice_begin[topo.element[start]]);     // a first slice
   }
 
   const World open = world_of(star_scene(2, kSlices, 3, {R"(, "loop": false)", ""}));
@@ -176,15 +177,15 @@ TEST_CASE("build_world: each element's CSR springs are its library element's, of
   CHECK(next_vertex == topo.vertex_count());
 }
 
-TEST_CASE("build_world: reference centroids are slice means and initial rest lengths are g = 1 references") {
+TEST_CASE("build_world: rest copy centroids are slice means and initial rest lengths are g = 1 references") {
   const World w = world_of(star_scene(3, kSlices, 5));
   const Topology& topo = w.topology;
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     double sx = 0, sy = 0;
-    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) sx += topo.ref_x[v], sy += topo.ref_y[v];
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) sx += topo.rest_copy_x[v], sy += topo.rest_copy_y[v];
     const double n = topo.slice_begin[s + 1] - topo.slice_begin[s];
-    CHECK(topo.slice_ref_cx[s] == Approx(sx / n).margin(1e-6));
-    CHECK(topo.slice_ref_cy[s] == Approx(sy / n).margin(1e-6));
+    CHECK(topo.slice_rest_copy_cx[s] == Approx(sx / n).margin(1e-6));
+    CHECK(topo.slice_rest_copy_cy[s] == Approx(sy / n).margin(1e-6));
   }
   const std::vector<float> ones(topo.slice_count(), 1.0f);
   CHECK(w.state.growth == ones);
@@ -192,7 +193,7 @@ TEST_CASE("build_world: reference centroids are slice means and initial rest len
   int mismatches = 0;
   for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
-      mismatches += w.state.spring_rest[k] != reference_rest_length(topo, ones, v, k);
+      mismatches += w.state.spring_rest[k] != rest_copy_length(topo, ones, v, k);
   CHECK(mismatches == 0);
 }
 
@@ -236,9 +237,9 @@ TEST_CASE("build_world: the same scene and seed give identical bytes; another se
   CHECK(same_bytes(p.tri_list, q.tri_list));
   CHECK(same_bytes(p.env_a, q.env_a));
   CHECK(same_bytes(p.loop_end, q.loop_end));
-  CHECK(same_bytes(p.ref_x, q.ref_x));
-  CHECK(same_bytes(p.ref_y, q.ref_y));
-  CHECK(same_bytes(p.slice_ref_cx, q.slice_ref_cx));
+  CHECK(same_bytes(p.rest_copy_x, q.rest_copy_x));
+  CHECK(same_bytes(p.rest_copy_y, q.rest_copy_y));
+  CHECK(same_bytes(p.slice_rest_copy_cx, q.slice_rest_copy_cx));
   CHECK(same_bytes(p.container.ax, q.container.ax));
   const SimState &s = a.state, &r = b.state;
   for (auto m : {&SimState::x, &SimState::y, &SimState::t, &SimState::vx, &SimState::spring_rest, &SimState::growth})

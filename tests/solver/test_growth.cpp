@@ -137,7 +137,7 @@ TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice chang
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k) {
       if (grew[topo.slice[v]] || grew[topo.slice[topo.spring_other[k]]]) {
         ++touching;
-        wrong += !same_float(state.spring_rest[k], reference_rest_length(topo, state.growth, v, k));
+        wrong += !same_float(state.spring_rest[k], rest_copy_length(topo, state.growth, v, k));
         unchanged_touching += same_float(state.spring_rest[k], before[k]);
       } else {
         changed_elsewhere += !same_float(state.spring_rest[k], before[k]);

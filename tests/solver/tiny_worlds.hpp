@@ -71,9 +71,7 @@ class WorldBuilder {
       mx /= static_cast<float>(per_slice);
       my /= static_cast<float>(per_slice);
       for (const auto& p : slices[s].ring) {
-        std::uint8_t flags = vertex_boundary;
-        if (s == 0) flags |= vertex_first_slice;
-        if (s + 1 == slices.size()) flags |= vertex_last_slice;
+        const std::uint8_t flags = vertex_boundary;
         const float dx = p[0] - mx, dy = p[1] - my, len = std::sqrt(dx * dx + dy * dy);
         add_vertex(e, slice_id, flags, p[0], p[1], slices[s].t, len > 0.0f ? dx / len : 0.0f,
                    len > 0.0f ? dy / len : 0.0f);

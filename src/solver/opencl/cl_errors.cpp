@@ -1,5 +1,5 @@
-// OpenCL error codes as names, with the call that failed (style-anchors §5: poclu's check_cl_error,
-// but in release builds too and as an exception, never an exit).
+// OpenCL error codes as names, with the call that failed in release builds too, as an
+// exception rather than an exit (docs/architecture.md, "OpenCL host conventions").
 #include "cl_host.hpp"
 
 namespace animpak {

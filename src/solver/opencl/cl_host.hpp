@@ -1,4 +1,4 @@
-// The thin layer over CL/opencl.hpp (design.md "OpenCL host conventions"): the bindings are used
+// The thin layer over CL/opencl.hpp (docs/architecture.md, "OpenCL host conventions"): the bindings are used
 // without their exceptions, every returned cl_int goes through check(), which throws OpenclError with
 // the call's text and the error's name.
 #pragma once

@@ -23,7 +23,7 @@ std::string program_location(const std::string& source, int line);
 /// names the kernel file and the line in it.
 std::string annotate_build_log(const std::string& log, const std::string& source);
 
-/// Options every build uses (design.md "Equivalence by construction").
+/// Options every build uses (docs/architecture.md, "The twin rule").
 inline constexpr const char* build_options = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
 
 }  // namespace animpak::opencl

@@ -5,10 +5,10 @@
 // state().
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <limits>
 #include <stdexcept>
 
+#include "../counting_sort.hpp"
 #include "animpak/error.hpp"
 #include "kernel.hpp"
 
@@ -47,6 +47,28 @@ void validate(const Topology& topo) {
     }
 }
 
+// The topology's arrays on the device, read-only, one buffer per Topology field the kernels read.
+struct TopologyBuffers {
+  cl::Buffer element, slice, flags, rest_t, rest_dir_x, rest_dir_y, target;
+  cl::Buffer spring_begin, spring_other, spring_class;
+  cl::Buffer tri_a, tri_b, tri_c, tri_begin, tri_list;
+  cl::Buffer slice_begin, slice_boundary, slice_element, element_slice_begin;
+  cl::Buffer env_a, env_b, env_c, env_element;
+  cl::Buffer target_x, target_y, target_t;
+  cl::Buffer seg_ax, seg_ay, seg_bx, seg_by;
+  cl::Buffer loop_end, loop_start;
+  cl::Buffer rest_copy_x, rest_copy_y, rest_copy_t, rest_copy_cx, rest_copy_cy;
+};
+
+// Scratch one phase of a step hands to the next; nothing here outlives a step.
+struct ScratchBuffers {
+  cl::Buffer cell_count, cursor, block_sum;                                            // grid sort
+  cl::Buffer slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct;          // triangles in cell order
+  cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;          // repulsion, overlap test
+  cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1;                       // per-slice geometry
+  cl::Buffer proposed;                                                                 // growth proposals
+};
+
 class DeviceBackend final : public OpenclBackend {
  public:
   DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
@@ -56,142 +78,15 @@ class DeviceBackend final : public OpenclBackend {
         rebuild_(params.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
     validate(topo_);
-    const cl::Device device = opencl::device_for(info);
-    cl_int err = CL_SUCCESS;
-    context_ = cl::Context(device, nullptr, nullptr, nullptr, &err);
-    check(err, "clCreateContext(" + info.name + ")");
-    queue_ = cl::CommandQueue(context_, device, CL_QUEUE_PROFILING_ENABLE, &err);
-    check(err, "clCreateCommandQueue(" + info.name + ")");
-    const cl::Program program = opencl::build_program(context_, device);
-
-    const std::int32_t n = topo_.vertex_count(), slices = topo_.slice_count();
-    world_ = {n, slices, topo_.element_count(), static_cast<std::int32_t>(topo_.loop_end.size()),
-              static_cast<std::int32_t>(topo_.container.ax.size()), 0};
+    const cl::Program program = create_queue();
+    world_ = {topo_.vertex_count(), topo_.slice_count(), topo_.element_count(),
+              static_cast<std::int32_t>(topo_.loop_end.size()), static_cast<std::int32_t>(topo_.container.ax.size()), 0};
     grid_ = opencl::grid_info(params, topo_.envelope_count());
-    const ForceParams p = opencl::force_params(params);
-    cells_.resize(grid_.triangles);
-    cell_start_.resize(static_cast<std::size_t>(grid_.cells) + 1);
-    sorted_.resize(grid_.triangles);
-
-    // clSetKernelArg does not retain a buffer, so every buffer a kernel reads lives in a member.
-    auto in = [&](const auto& v, const char* name) { return held_.emplace_back(upload(v, name, CL_MEM_READ_ONLY)); };
-    auto rw = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_WRITE); };
-    auto work = [&](std::size_t bytes, const char* name) {
-      return held_.emplace_back(opencl::make_buffer(context_, CL_MEM_READ_WRITE, bytes, name));
-    };
-    x_ = rw(initial.x, "x"), y_ = rw(initial.y, "y"), t_ = rw(initial.t, "t");
-    vx_ = rw(initial.vx, "vx"), vy_ = rw(initial.vy, "vy"), vt_ = rw(initial.vt, "vt");
-    rest_ = rw(initial.spring_rest, "spring_rest");
-    growth_ = rw(initial.growth, "growth");
-    const cl::Buffer element = in(topo_.element, "element"), slice = in(topo_.slice, "slice"),
-                     flags = in(topo_.flags, "flags"), rest_t = in(topo_.rest_t, "rest_t"),
-                     rest_dx = in(topo_.rest_dir_x, "rest_dir_x"), rest_dy = in(topo_.rest_dir_y, "rest_dir_y"),
-                     target = in(topo_.target, "target"), spring_begin = in(topo_.spring_begin, "spring_begin"),
-                     spring_other = in(topo_.spring_other, "spring_other"),
-                     spring_class = in(topo_.spring_class, "spring_class"), tri_a = in(topo_.tri_a, "tri_a"),
-                     tri_b = in(topo_.tri_b, "tri_b"), tri_c = in(topo_.tri_c, "tri_c"),
-                     tri_begin = in(topo_.tri_begin, "tri_begin"), tri_list = in(topo_.tri_list, "tri_list"),
-                     slice_begin = in(topo_.slice_begin, "slice_begin"),
-                     slice_boundary = in(topo_.slice_boundary, "slice_boundary"),
-                     slice_element = in(topo_.slice_element, "slice_element"),
-                     element_slices = in(topo_.element_slice_begin, "element_slice_begin"),
-                     env_a = in(topo_.env_a, "env_a"), env_b = in(topo_.env_b, "env_b"),
-                     env_c = in(topo_.env_c, "env_c"), env_element = in(topo_.env_element, "env_element"),
-                     target_x = in(topo_.target_x, "target_x"), target_y = in(topo_.target_y, "target_y"),
-                     target_t = in(topo_.target_t, "target_t"), seg_ax = in(topo_.container.ax, "container.ax"),
-                     seg_ay = in(topo_.container.ay, "container.ay"), seg_bx = in(topo_.container.bx, "container.bx"),
-                     seg_by = in(topo_.container.by, "container.by"), loop_end = in(topo_.loop_end, "loop_end"),
-                     loop_start = in(topo_.loop_start, "loop_start"), ref_x = in(topo_.ref_x, "ref_x"),
-                     ref_y = in(topo_.ref_y, "ref_y"), ref_t = in(topo_.ref_t, "ref_t"),
-                     ref_cx = in(topo_.slice_ref_cx, "slice_ref_cx"), ref_cy = in(topo_.slice_ref_cy, "slice_ref_cy");
-    for (std::int32_t v = 0; v < n; ++v)
-      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_order_.push_back(v);
-    boundary_count_ = static_cast<std::int32_t>(boundary_order_.size());
-    boundary_key_.resize(boundary_order_.size());
-    boundary_buf_ = rw(boundary_order_, "boundary_vertices");
-    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles,
-                      it = sizeof(std::int32_t) * grid_.triangles, ic = sizeof(std::int32_t) * grid_.cells;
-    const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-    env_cx_ = work(ft, "env_cx"), env_cy_ = work(ft, "env_cy"), env_ct_ = work(ft, "env_ct");
-    triangle_cell_ = work(it, "triangle_cell");
-    cell_start_buf_ = work(sizeof(std::int32_t) * cell_start_.size(), "cell_start");
-    sorted_buf_ = work(it, "sorted_triangles");
-    const cl::Buffer cell_count = work(ic, "cell_count"), cursor = work(ic, "cell_cursor"),
-                     block_sum = work(sizeof(std::int32_t) * blocks, "scan_blocks");
-    const cl::Buffer slot_element = work(it, "slot_element"), slot_a = work(it, "slot_a"), slot_b = work(it, "slot_b"),
-                     slot_c = work(it, "slot_c"), slot_cx = work(ft, "slot_cx"), slot_cy = work(ft, "slot_cy"),
-                     slot_ct = work(ft, "slot_ct");
-    const cl::Buffer rpl_x = work(fn, "repulsion_x"), rpl_y = work(fn, "repulsion_y"), rpl_t = work(fn, "repulsion_t"),
-                     rpl_closest = work(fn, "repulsion_closest"), rpl_contact = work(n, "repulsion_contact"),
-                     depth_x = work(fn, "overlap_depth_x"), depth_y = work(fn, "overlap_depth_y");
-    const cl::Buffer slice_cx = work(fs, "slice_cx"), slice_cy = work(fs, "slice_cy");
-    const cl::Buffer box_x0 = work(fs, "slice_box_x0"), box_y0 = work(fs, "slice_box_y0"),
-                     box_x1 = work(fs, "slice_box_x1"), box_y1 = work(fs, "slice_box_y1");
-    const cl::Buffer proposed = work(fs, "proposed_growth");
-    fx_ = work(fn, "fx"), fy_ = work(fn, "fy"), ft_ = work(fn, "ft");
-    // Before the first step the statistics see what the reference starts from: no gap, no overlap.
-    closest_ = rw(std::vector<float>(n, std::numeric_limits<float>::infinity()), "closest");
-    contact_ = rw(std::vector<std::uint8_t>(n, 0), "contact");
-    changed_ = rw(std::vector<std::uint8_t>(slices, 0), "growth_changed");
-    breakdown_ = work(1, "breakdown (unused)");
-    slice_gap_ = work(fs, "slice_gap");
-    slice_overlap_ = work(sizeof(std::int32_t) * slices, "slice_overlap");
-    slice_outside_ = work(sizeof(std::int32_t) * slices, "slice_outside");
-    slice_bad_ = work(sizeof(std::int32_t) * slices, "slice_bad");
-
-    envelope_cells_ = Kernel(program, "envelope_cells");
-    envelope_cells_.bind(grid_, env_a, env_b, env_c, x_, y_, t_, env_cx_, env_cy_, env_ct_, triangle_cell_);
-    grid_clear_ = Kernel(program, "grid_clear");
-    grid_clear_.bind(grid_, cell_count);
-    grid_count_ = Kernel(program, "grid_count");
-    grid_count_.bind(grid_, triangle_cell_, cell_count);
-    grid_block_sums_ = Kernel(program, "grid_block_sums");
-    grid_block_sums_.bind(grid_, cell_count, block_sum);
-    grid_scan_blocks_ = Kernel(program, "grid_scan_blocks");
-    grid_scan_blocks_.bind(grid_, block_sum);
-    grid_scan_cells_ = Kernel(program, "grid_scan_cells");
-    grid_scan_cells_.bind(grid_, cell_count, block_sum, cell_start_buf_, cursor);
-    grid_scatter_ = Kernel(program, "grid_scatter");
-    grid_scatter_.bind(grid_, triangle_cell_, cursor, sorted_buf_);
-    grid_order_ = Kernel(program, "grid_order_cells");
-    grid_order_.bind(grid_, cell_start_buf_, sorted_buf_);
-    grid_gather_ = Kernel(program, "grid_gather");
-    grid_gather_.bind(grid_, sorted_buf_, env_element, env_a, env_b, env_c, env_cx_, env_cy_, env_ct_, slot_element,
-                      slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct);
-    slice_boxes_ = Kernel(program, "slice_boxes");
-    slice_boxes_.bind(world_, slice_begin, slice_boundary, x_, y_, box_x0, box_y0, box_x1, box_y1);
-    repulsion_ = Kernel(program, "repulsion");
-    repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, element, slice,
-                    cell_start_buf_, slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct, element_slices,
-                    slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, rpl_x, rpl_y, rpl_t, rpl_closest,
-                    rpl_contact, depth_x, depth_y);
-    slice_centroids_ = Kernel(program, "slice_centroids");
-    slice_centroids_.bind(world_, slice_begin, x_, y_, slice_cx, slice_cy);
-    forces_ = Kernel(program, "step_forces");
-    breakdown_arg_ =
-        forces_.bind(world_, p, x_, y_, t_, slice, flags, rest_t, rest_dx, rest_dy, target, spring_begin, spring_other,
-                     spring_class, rest_, tri_a, tri_b, tri_c, tri_begin, tri_list, rpl_x, rpl_y, rpl_t, rpl_closest,
-                     rpl_contact, depth_x, depth_y, target_x, target_y, target_t, seg_ax, seg_ay, seg_bx, seg_by,
-                     slice_cx, slice_cy, fx_, fy_, ft_, closest_, contact_, breakdown_) - 1;
-    integrate_ = Kernel(program, "integrate");
-    integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
-    constraints_ = Kernel(program, "slice_constraints");
-    constraints_.bind(world_, slice_begin, slice_element, element_slices, t_);
-    loop_ = Kernel(program, "loop_constraint");
-    loop_.bind(world_, loop_end, loop_start, x_, y_);
-    containment_ = Kernel(program, "containment");
-    containment_.bind(world_, seg_ax, seg_ay, seg_bx, seg_by, x_, y_, vx_, vy_);
-    propose_growth_ = Kernel(program, "propose_growth");
-    propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, slice_begin, contact_, growth_, proposed);
-    grow_ = Kernel(program, "grow_slices");
-    grow_.bind(world_, p, slice_element, element_slices, proposed, growth_, changed_);
-    rest_lengths_ = Kernel(program, "update_rest_lengths");
-    rest_lengths_.bind(world_, slice, spring_begin, spring_other, changed_, growth_, ref_x, ref_y, ref_t, ref_cx,
-                       ref_cy, rest_);
-    statistics_ = Kernel(program, "slice_statistics");
-    statistics_.bind(world_, slice_begin, closest_, contact_, changed_, x_, y_, t_, vx_, vy_, vt_, slice_gap_, slice_overlap_,
-                     slice_outside_, slice_bad_);
-    spring_count_ = initial.spring_rest.size();
+    upload_state(initial);
+    upload_topology();
+    allocate_scratch();
+    bind_grid_kernels(program);
+    bind_step_kernels(program, opencl::force_params(params));
     check(queue_.finish(), "clFinish(upload)");
   }
 
@@ -230,13 +125,14 @@ class DeviceBackend final : public OpenclBackend {
   StepStatistics statistics() override {
     const std::int32_t slices = world_.slices;
     timed(times_.statistics, statistics_.run(queue_, slices));
-    std::vector<float> gap(slices), growth(slices);
-    std::vector<std::int32_t> overlapping(slices), outside(slices), bad(slices);
+    SliceStatistics per_slice;
+    per_slice.resize(static_cast<std::size_t>(slices));
+    std::vector<float> growth(slices);
     std::vector<std::uint8_t> changed(slices);
-    read(slice_gap_, gap, "slice_gap");
-    read(slice_overlap_, overlapping, "slice_overlap");
-    read(slice_outside_, outside, "slice_outside");
-    read(slice_bad_, bad, "slice_bad");
+    read(slice_gap_, per_slice.gap, "slice_gap");
+    read(slice_overlap_, per_slice.overlapping, "slice_overlap");
+    read(slice_outside_, per_slice.outside, "slice_outside");
+    read(slice_bad_, per_slice.first_bad, "slice_bad");
     read(growth_, growth, "growth");
     read(changed_, changed, "growth_changed", true);
     settle_times();
@@ -244,13 +140,8 @@ class DeviceBackend final : public OpenclBackend {
     StepStatistics st;
     st.iteration = iteration_;
     std::int32_t grown = 0;
-    for (std::int32_t s = 0; s < slices; ++s) {
-      grown += (changed[s] & AP_GROWTH_GREW) != 0;
-      st.overlapping_vertices += overlapping[s];
-      st.outside_vertices += outside[s];
-      if (st.finite && bad[s] >= 0) st.finite = false, st.first_bad_vertex = bad[s];
-    }
-    reduce_slice_statistics(gap, growth, grown, st);
+    for (const std::uint8_t c : changed) grown += (c & AP_GROWTH_GREW) != 0;
+    reduce_slice_statistics(per_slice, growth, grown, st);
     return st;
   }
 
@@ -272,7 +163,7 @@ class DeviceBackend final : public OpenclBackend {
     return s;
   }
 
-  reference::StepForces debug_forces(reference::ForceBreakdown* out) override {
+  reference::StepForces evaluate_forces(reference::ForceBreakdown* out) override {
     build_grid();
     order_boundary_by_cell();
     const std::int32_t n = world_.vertices;
@@ -315,7 +206,7 @@ class DeviceBackend final : public OpenclBackend {
     return r;
   }
 
-  reference::CollisionGrid debug_grid() override {
+  reference::CollisionGrid build_and_read_grid() override {
     build_grid();
     reference::CollisionGrid g;
     g.n = grid_.n;
@@ -338,13 +229,177 @@ class DeviceBackend final : public OpenclBackend {
   }
 
  private:
+  // The context and an in-order, profiling queue on the chosen device; returns the built program.
+  cl::Program create_queue() {
+    const cl::Device device = opencl::device_for(info_);
+    cl_int err = CL_SUCCESS;
+    context_ = cl::Context(device, nullptr, nullptr, nullptr, &err);
+    check(err, "clCreateContext(" + info_.name + ")");
+    queue_ = cl::CommandQueue(context_, device, CL_QUEUE_PROFILING_ENABLE, &err);
+    check(err, "clCreateCommandQueue(" + info_.name + ")");
+    return opencl::build_program(context_, device);
+  }
+
+  // Everything that moves (SimState), the per-vertex and per-slice results the host reads, and the
+  // boundary vertices the repulsion kernel runs over.
+  void upload_state(const SimState& initial) {
+    x_ = upload(initial.x, "x"), y_ = upload(initial.y, "y"), t_ = upload(initial.t, "t");
+    vx_ = upload(initial.vx, "vx"), vy_ = upload(initial.vy, "vy"), vt_ = upload(initial.vt, "vt");
+    rest_ = upload(initial.spring_rest, "spring_rest");
+    growth_ = upload(initial.growth, "growth");
+    spring_count_ = initial.spring_rest.size();
+    const std::int32_t n = world_.vertices, slices = world_.slices;
+    // Before the first step the statistics see what the reference starts from: no gap, no overlap.
+    closest_ = upload(std::vector<float>(n, std::numeric_limits<float>::infinity()), "closest");
+    contact_ = upload(std::vector<std::uint8_t>(n, 0), "contact");
+    changed_ = upload(std::vector<std::uint8_t>(slices, 0), "growth_changed");
+    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, is = sizeof(std::int32_t) * slices;
+    fx_ = scratch(fn, "fx"), fy_ = scratch(fn, "fy"), ft_ = scratch(fn, "ft");
+    breakdown_ = scratch(1, "breakdown (unused)");
+    slice_gap_ = scratch(fs, "slice_gap");
+    slice_overlap_ = scratch(is, "slice_overlap");
+    slice_outside_ = scratch(is, "slice_outside");
+    slice_bad_ = scratch(is, "slice_bad");
+    for (std::int32_t v = 0; v < n; ++v)
+      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_order_.push_back(v);
+    boundary_count_ = static_cast<std::int32_t>(boundary_order_.size());
+    boundary_key_.resize(boundary_order_.size());
+    boundary_buf_ = upload(boundary_order_, "boundary_vertices");
+  }
+
+  void upload_topology() {
+    auto in = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_ONLY); };
+    TopologyBuffers& b = topo_buf_;
+    b.element = in(topo_.element, "element"), b.slice = in(topo_.slice, "slice"), b.flags = in(topo_.flags, "flags");
+    b.rest_t = in(topo_.rest_t, "rest_t");
+    b.rest_dir_x = in(topo_.rest_dir_x, "rest_dir_x"), b.rest_dir_y = in(topo_.rest_dir_y, "rest_dir_y");
+    b.target = in(topo_.target, "target");
+    b.spring_begin = in(topo_.spring_begin, "spring_begin"), b.spring_other = in(topo_.spring_other, "spring_other");
+    b.spring_class = in(topo_.spring_class, "spring_class");
+    b.tri_a = in(topo_.tri_a, "tri_a"), b.tri_b = in(topo_.tri_b, "tri_b"), b.tri_c = in(topo_.tri_c, "tri_c");
+    b.tri_begin = in(topo_.tri_begin, "tri_begin"), b.tri_list = in(topo_.tri_list, "tri_list");
+    b.slice_begin = in(topo_.slice_begin, "slice_begin"), b.slice_boundary = in(topo_.slice_boundary, "slice_boundary");
+    b.slice_element = in(topo_.slice_element, "slice_element");
+    b.element_slice_begin = in(topo_.element_slice_begin, "element_slice_begin");
+    b.env_a = in(topo_.env_a, "env_a"), b.env_b = in(topo_.env_b, "env_b"), b.env_c = in(topo_.env_c, "env_c");
+    b.env_element = in(topo_.env_element, "env_element");
+    b.target_x = in(topo_.target_x, "target_x"), b.target_y = in(topo_.target_y, "target_y");
+    b.target_t = in(topo_.target_t, "target_t");
+    b.seg_ax = in(topo_.container.ax, "container.ax"), b.seg_ay = in(topo_.container.ay, "container.ay");
+    b.seg_bx = in(topo_.container.bx, "container.bx"), b.seg_by = in(topo_.container.by, "container.by");
+    b.loop_end = in(topo_.loop_end, "loop_end"), b.loop_start = in(topo_.loop_start, "loop_start");
+    b.rest_copy_x = in(topo_.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo_.rest_copy_y, "rest_copy_y");
+    b.rest_copy_t = in(topo_.rest_copy_t, "rest_copy_t");
+    b.rest_copy_cx = in(topo_.slice_rest_copy_cx, "slice_rest_copy_cx");
+    b.rest_copy_cy = in(topo_.slice_rest_copy_cy, "slice_rest_copy_cy");
+  }
+
+  void allocate_scratch() {
+    const std::int32_t n = world_.vertices, slices = world_.slices;
+    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles,
+                      it = sizeof(std::int32_t) * grid_.triangles, ic = sizeof(std::int32_t) * grid_.cells;
+    const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+    cells_.resize(grid_.triangles);
+    cell_start_.resize(static_cast<std::size_t>(grid_.cells) + 1);
+    sorted_.resize(grid_.triangles);
+    env_cx_ = scratch(ft, "env_cx"), env_cy_ = scratch(ft, "env_cy"), env_ct_ = scratch(ft, "env_ct");
+    triangle_cell_ = scratch(it, "triangle_cell");
+    cell_start_buf_ = scratch(sizeof(std::int32_t) * cell_start_.size(), "cell_start");
+    sorted_buf_ = scratch(it, "sorted_triangles");
+    ScratchBuffers& w = scratch_;
+    w.cell_count = scratch(ic, "cell_count"), w.cursor = scratch(ic, "cell_cursor");
+    w.block_sum = scratch(sizeof(std::int32_t) * blocks, "scan_blocks");
+    w.slot_element = scratch(it, "slot_element");
+    w.slot_a = scratch(it, "slot_a"), w.slot_b = scratch(it, "slot_b"), w.slot_c = scratch(it, "slot_c");
+    w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
+    w.rpl_x = scratch(fn, "repulsion_x"), w.rpl_y = scratch(fn, "repulsion_y"), w.rpl_t = scratch(fn, "repulsion_t");
+    w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(n, "repulsion_contact");
+    w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");
+    w.slice_cx = scratch(fs, "slice_cx"), w.slice_cy = scratch(fs, "slice_cy");
+    w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
+    w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
+    w.proposed = scratch(fs, "proposed_growth");
+  }
+
+  // The collision grid's kernels (§5.1): centroids and cells, the device sort, the per-slot copies.
+  void bind_grid_kernels(const cl::Program& program) {
+    const TopologyBuffers& b = topo_buf_;
+    const ScratchBuffers& w = scratch_;
+    envelope_cells_ = Kernel(program, "envelope_cells");
+    envelope_cells_.bind(grid_, b.env_a, b.env_b, b.env_c, x_, y_, t_, env_cx_, env_cy_, env_ct_, triangle_cell_);
+    grid_clear_ = Kernel(program, "grid_clear");
+    grid_clear_.bind(grid_, w.cell_count);
+    grid_count_ = Kernel(program, "grid_count");
+    grid_count_.bind(grid_, triangle_cell_, w.cell_count);
+    grid_block_sums_ = Kernel(program, "grid_block_sums");
+    grid_block_sums_.bind(grid_, w.cell_count, w.block_sum);
+    grid_scan_blocks_ = Kernel(program, "grid_scan_blocks");
+    grid_scan_blocks_.bind(grid_, w.block_sum);
+    grid_scan_cells_ = Kernel(program, "grid_scan_cells");
+    grid_scan_cells_.bind(grid_, w.cell_count, w.block_sum, cell_start_buf_, w.cursor);
+    grid_scatter_ = Kernel(program, "grid_scatter");
+    grid_scatter_.bind(grid_, triangle_cell_, w.cursor, sorted_buf_);
+    grid_order_ = Kernel(program, "grid_order_cells");
+    grid_order_.bind(grid_, cell_start_buf_, sorted_buf_);
+    grid_gather_ = Kernel(program, "grid_gather");
+    grid_gather_.bind(grid_, sorted_buf_, b.env_element, b.env_a, b.env_b, b.env_c, env_cx_, env_cy_, env_ct_,
+                      w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct);
+  }
+
+  // Every other phase of a step, in step order: forces (§5), integration, constraints (§5.2),
+  // containment, growth (§5.3), then the statistics read on demand.
+  void bind_step_kernels(const cl::Program& program, const ForceParams& p) {
+    const TopologyBuffers& b = topo_buf_;
+    const ScratchBuffers& w = scratch_;
+    slice_boxes_ = Kernel(program, "slice_boxes");
+    slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, x_, y_, w.box_x0, w.box_y0, w.box_x1, w.box_y1);
+    repulsion_ = Kernel(program, "repulsion");
+    repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
+                    cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
+                    b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
+                    w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
+    slice_centroids_ = Kernel(program, "slice_centroids");
+    slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
+    forces_ = Kernel(program, "step_forces");
+    breakdown_arg_ =
+        forces_.bind(world_, p, x_, y_, t_, b.slice, b.flags, b.rest_t, b.rest_dir_x, b.rest_dir_y, b.target,
+                     b.spring_begin, b.spring_other, b.spring_class, rest_, b.tri_a, b.tri_b, b.tri_c, b.tri_begin,
+                     b.tri_list, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y,
+                     b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, w.slice_cx,
+                     w.slice_cy, fx_, fy_, ft_, closest_, contact_, breakdown_) -
+        1;
+    integrate_ = Kernel(program, "integrate");
+    integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
+    constraints_ = Kernel(program, "slice_constraints");
+    constraints_.bind(world_, b.slice_begin, b.slice_element, b.element_slice_begin, t_);
+    loop_ = Kernel(program, "loop_constraint");
+    loop_.bind(world_, b.loop_end, b.loop_start, x_, y_);
+    containment_ = Kernel(program, "containment");
+    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, x_, y_, vx_, vy_);
+    propose_growth_ = Kernel(program, "propose_growth");
+    propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, b.slice_begin, contact_, growth_, w.proposed);
+    grow_ = Kernel(program, "grow_slices");
+    grow_.bind(world_, p, b.slice_element, b.element_slice_begin, w.proposed, growth_, changed_);
+    rest_lengths_ = Kernel(program, "update_rest_lengths");
+    rest_lengths_.bind(world_, b.slice, b.spring_begin, b.spring_other, changed_, growth_, b.rest_copy_x,
+                       b.rest_copy_y, b.rest_copy_t, b.rest_copy_cx, b.rest_copy_cy, rest_);
+    statistics_ = Kernel(program, "slice_statistics");
+    statistics_.bind(world_, b.slice_begin, closest_, contact_, changed_, x_, y_, t_, vx_, vy_, vt_, slice_gap_,
+                     slice_overlap_, slice_outside_, slice_bad_);
+  }
+
+  // A device buffer holding `data` (read-write unless `flags` says otherwise).
   template <typename T>
-  cl::Buffer upload(const std::vector<T>& data, const char* name, cl_mem_flags flags) {
+  cl::Buffer upload(const std::vector<T>& data, const char* name, cl_mem_flags flags = CL_MEM_READ_WRITE) {
     cl::Buffer b = opencl::make_buffer(context_, flags, sizeof(T) * data.size(), name);
     if (!data.empty())
       check(queue_.enqueueWriteBuffer(b, CL_TRUE, 0, sizeof(T) * data.size(), data.data()),
             std::string("clEnqueueWriteBuffer(") + name + ")");
     return b;
+  }
+
+  cl::Buffer scratch(std::size_t bytes, const char* name) {
+    return opencl::make_buffer(context_, CL_MEM_READ_WRITE, bytes, name);
   }
 
   // Reads are non-blocking except the last of a batch: the queue is in order, so one wait covers all.
@@ -425,11 +480,7 @@ class DeviceBackend final : public OpenclBackend {
     read(triangle_cell_, cells_, "triangle_cell", true);
     settle_times();
     PhaseStopwatch w(times_.grid);
-    std::fill(cell_start_.begin(), cell_start_.end(), 0);
-    for (const std::int32_t c : cells_) ++cell_start_[c + 1];
-    for (std::size_t c = 0; c + 1 < cell_start_.size(); ++c) cell_start_[c + 1] += cell_start_[c];
-    std::vector<std::int32_t> cursor(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::int32_t i = 0; i < grid_.triangles; ++i) sorted_[cursor[cells_[i]]++] = i;
+    counting_sort(cells_, grid_.cells, cell_start_, sorted_);
     // The host vectors stay untouched until the next build, which first waits on this queue.
     check(queue_.enqueueWriteBuffer(cell_start_buf_, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
                                     cell_start_.data()),
@@ -459,7 +510,8 @@ class DeviceBackend final : public OpenclBackend {
   std::size_t spring_count_ = 0;
   cl::Context context_;
   cl::CommandQueue queue_;
-  std::deque<cl::Buffer> held_;       ///< read-only inputs and scratch, held for the kernels' arguments
+  TopologyBuffers topo_buf_;   ///< held here: clSetKernelArg does not retain a buffer
+  ScratchBuffers scratch_;
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer boundary_buf_;
   cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;

@@ -1,4 +1,5 @@
-// Assembling and building the kernels' program in one place (style-anchors §8.12).
+// Assembling and building the kernels' program in one place, so every caller gets the same
+// source, options and annotated build log (docs/architecture.md, "The twin rule").
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
-#include <chrono>
-#include <cmath>
+// The scalar reference backend: one step of the simulation (paper §5) as plain C++ calls, phase by
+// phase in the order the OpenCL backend enqueues its kernels (src/solver/opencl/opencl_backend.cpp).
 #include <limits>
 
 #include "animpak/reference.hpp"
@@ -12,8 +12,10 @@ class ReferenceBackend final : public Backend {
  public:
   ReferenceBackend(const Topology& topology, SimState initial, const Params& params)
       : topo_(topology), state_(std::move(initial)), params_(params) {
-    slice_gap_.assign(topo_.slice_count(), std::numeric_limits<float>::infinity());
+    // Before the first step: no gap, no contact, nothing grown.
+    closest_.assign(topo_.vertex_count(), std::numeric_limits<float>::infinity());
     contact_.assign(topo_.vertex_count(), 0);
+    changed_.assign(topo_.slice_count(), 0);
   }
 
   std::string name() const override { return "reference"; }
@@ -54,34 +56,17 @@ class ReferenceBackend final : public Backend {
       grown_ = reference::grow_slices(topo_, forces.contact, params_, state_.settling_since == 0, state_, changed_);
       reference::update_rest_lengths(topo_, changed_, state_);
     }
-    {
-      PhaseStopwatch w(times_.statistics);
-      for (std::int32_t s = 0; s < topo_.slice_count(); ++s) {
-        float gap = std::numeric_limits<float>::infinity();
-        for (std::int32_t v = topo_.slice_begin[s]; v < topo_.slice_begin[s + 1]; ++v)
-          gap = forces.closest[v] < gap ? forces.closest[v] : gap;
-        // A slice its element's growth_ratio holds back cannot grow: it counts as touching.
-        slice_gap_[s] = (changed_[s] & reference::growth_held) != 0 ? 0.0f : gap;
-      }
-      contact_ = std::move(forces.contact);
-    }
+    closest_ = std::move(forces.closest);
+    contact_ = std::move(forces.contact);
     ++state_.iteration;
   }
 
   StepStatistics statistics() override {
     PhaseStopwatch w(times_.statistics);
+    reference::slice_statistics(topo_, state_, closest_, contact_, changed_, slices_);
     StepStatistics st;
     st.iteration = state_.iteration;
-    reduce_slice_statistics(slice_gap_, state_.growth, grown_, st);
-    for (const std::uint8_t c : contact_) {
-      st.overlapping_vertices += (c & contact_overlap) != 0;
-      st.outside_vertices += (c & contact_outside) != 0;
-    }
-    for (std::int32_t v = 0; v < topo_.vertex_count() && st.finite; ++v) {
-      const bool ok = std::isfinite(state_.x[v]) && std::isfinite(state_.y[v]) && std::isfinite(state_.t[v]) &&
-                      std::isfinite(state_.vx[v]) && std::isfinite(state_.vy[v]) && std::isfinite(state_.vt[v]);
-      if (!ok) st.finite = false, st.first_bad_vertex = v;
-    }
+    reduce_slice_statistics(slices_, state_.growth, grown_, st);
     return st;
   }
 
@@ -100,46 +85,14 @@ class ReferenceBackend final : public Backend {
   SimState state_;
   Params params_;
   reference::CollisionGrid grid_;
-  std::vector<float> slice_gap_;
+  std::vector<float> closest_;
   std::vector<std::uint8_t> contact_, changed_;
+  SliceStatistics slices_;
   std::int32_t grown_ = 0;
   PhaseTimes times_;
 };
 
 }  // namespace
-
-void reduce_slice_statistics(const std::vector<float>& slice_gap, const std::vector<float>& growth,
-                             std::int32_t grown, StepStatistics& st) {
-  st.max_slice_gap = 0.0f;
-  st.min_slice_gap = std::numeric_limits<float>::infinity();
-  for (const float g : slice_gap) {
-    st.max_slice_gap = g > st.max_slice_gap ? g : st.max_slice_gap;
-    st.min_slice_gap = g < st.min_slice_gap ? g : st.min_slice_gap;
-  }
-  st.growing_share = slice_gap.empty() ? 0.0 : double(grown) / double(slice_gap.size());
-  st.min_growth = st.max_growth = growth.empty() ? 1.0f : growth[0];
-  double sum = 0.0;
-  for (const float g : growth) {
-    st.min_growth = g < st.min_growth ? g : st.min_growth;
-    st.max_growth = g > st.max_growth ? g : st.max_growth;
-    sum += g;
-  }
-  st.mean_growth = growth.empty() ? 1.0 : sum / double(growth.size());
-}
-
-const char* stop_reason_name(StopReason r) {
-  switch (r) {
-    case StopReason::running: return "running";
-    case StopReason::gap: return "gap";
-    case StopReason::stalled: return "stalled";
-    case StopReason::unsettled: return "unsettled";
-    case StopReason::growth: return "growth";
-    case StopReason::max_iterations: return "max_iterations";
-    case StopReason::interrupted: return "interrupted";
-    case StopReason::non_finite: return "non_finite";
-  }
-  return "unknown";
-}
 
 std::unique_ptr<Backend> make_reference_backend(const Topology& topology, SimState initial, const Params& params) {
   return std::make_unique<ReferenceBackend>(topology, std::move(initial), params);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "../counting_sort.hpp"
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
@@ -45,8 +46,7 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
   g.ct.resize(count);
   g.triangle_cell.resize(count);
 
-  // Insert: centroid and cell of every triangle, and the number of triangles per cell.
-  std::vector<std::int32_t> cell_count(cells, 0);
+  // Insert: centroid and cell of every triangle; then the shared stable counting sort.
   for (std::int32_t i = 0; i < count; ++i) {
     const Vec3f c = envelope_centroid(topo, state, i);
     g.cx[i] = c.x;
@@ -56,17 +56,8 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
     const std::int32_t iy = grid_axis_cell(c.y, g.cell, g.n);
     const std::int32_t it = grid_axis_cell(c.t, g.cell, g.n);
     g.triangle_cell[i] = (it * g.n + iy) * g.n + ix;
-    ++cell_count[g.triangle_cell[i]];
   }
-
-  // Exclusive scan: where each cell's range starts; the extra last entry is the total.
-  g.cell_start.assign(cells + 1, 0);
-  for (std::int32_t c = 0; c < cells; ++c) g.cell_start[c + 1] = g.cell_start[c] + cell_count[c];
-
-  // Scatter in increasing triangle order, so each cell lists its triangles in increasing id (stable).
-  std::vector<std::int32_t> cursor(g.cell_start.begin(), g.cell_start.end() - 1);
-  g.sorted_triangles.resize(count);
-  for (std::int32_t i = 0; i < count; ++i) g.sorted_triangles[cursor[g.triangle_cell[i]]++] = i;
+  counting_sort(g.triangle_cell, cells, g.cell_start, g.sorted_triangles);
   return g;
 }
 

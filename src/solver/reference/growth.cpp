@@ -56,12 +56,12 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
   return grown;
 }
 
-// Rest lengths of every spring with an end on a slice whose g changed, from the scaled reference copy.
+// Rest lengths of every spring with an end on a slice whose g changed, from the scaled rest copy.
 void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state) {
   for (std::int32_t v = 0; v < topo.vertex_count(); ++v)
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k)
       if (((changed[topo.slice[v]] | changed[topo.slice[topo.spring_other[k]]]) & (growth_grew | growth_shrank)) != 0)
-        state.spring_rest[k] = reference_rest_length(topo, state.growth, v, k);
+        state.spring_rest[k] = rest_copy_length(topo, state.growth, v, k);
 }
 
 }  // namespace animpak::reference

@@ -1,6 +1,7 @@
-// Numerical integration (paper §5, "Computing total force and numerical integration"): explicit
-// Euler with unit mass, in the symplectic order the authors' code uses (notes §3.3): velocity first,
-// v ← v + F Δt, then the cap, then position from the NEW velocity, x ← x + v Δt. Updating x with the
+// Numerical integration (paper §5, "Computing total force and numerical integration"): symplectic
+// (semi-implicit) Euler with unit mass. The paper calls it explicit Euler, but the order it describes
+// is the symplectic one ("we update velocities using forces, and update positions using velocities"):
+// velocity first, v ← v + F Δt, then the cap, then position from the NEW velocity, x ← x + v Δt. Updating x with the
 // old velocity (forward Euler) gains energy on every spring; the symplectic order does not, and the
 // cap then bounds every step's displacement by cap · Δt.
 //

@@ -1,7 +1,8 @@
 // Torsional force, paper Eq. 5: F_tor = ±k_tor u⊥ with u = x − c, c the slice's current centroid,
 // u⊥ the unit vector 90° counter-clockwise from u, and the sign from θ, the signed angle between the
 // rest direction u_r and u. The force has constant magnitude and always turns u back towards u_r
-// (as in the authors' code, notes §3.2): with θ measured from u_r to u, F = −sign(θ) k_tor u⊥.
+// (as in the authors' code; docs/architecture.md, "Where the code departs from the paper's text"):
+// with θ measured from u_r to u, F = −sign(θ) k_tor u⊥.
 //
 // "Counter-clockwise" is in the math sense of the stored coordinates: u⊥ = (−u_y, u_x), and θ > 0
 // when cross(u_r, u) = r_x u_y − r_y u_x > 0. Our y axis points down (as in the art files and

@@ -1,13 +1,12 @@
-// Benchmark support (issue 4): synthetic worlds of a chosen size and per-phase step timing of any
-// backend. `animpak bench` drives these; they live in the libraries so that tests and a later
-// OpenCL comparison use the same worlds and the same clock.
+// Synthetic benchmark worlds (scene stage): copies of one animated element in a square container,
+// sized to a chosen vertex count. `animpak bench` times them (animpak/timing.hpp); tests use the same
+// worlds, so a figure in a report and a test mean the same scene.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 
 #include "animpak/scene.hpp"
-#include "animpak/simulation.hpp"
 
 namespace animpak {
 
@@ -32,20 +31,5 @@ struct SyntheticWorld {
 
 /// Builds the library element once, picks the copy count from `target_vertices`, and places them with build_world (lowering the scale when set-up reports an overlap).
 SyntheticWorld make_synthetic_world(const SyntheticSpec& spec);
-
-/// Step timing of one backend, per iteration.
-struct StepTiming {
-  int steps = 0;
-  double ms_per_iter = 0.0;  ///< wall clock around the timed steps, statistics checks included
-  PhaseTimes phases_ms;      ///< Backend::times() difference over the timed steps, in ms per step
-};
-
-/// Runs `warmup` untimed steps, then `steps` timed ones, calling statistics() every
-/// params.check_interval steps as run_simulation does.
-StepTiming time_steps(Backend& backend, const Params& params, int warmup, int steps);
-
-/// Envelope triangles the repulsion queries of one step visit (near block and far shell, summed over
-/// boundary vertices): the work the force phase does, which grows with local density, not with size.
-std::int64_t neighbour_visits(const Topology& topology, const SimState& state, const Params& params);
 
 }  // namespace animpak

@@ -1,4 +1,4 @@
-// The simulation's data (design.md "The solver's data"): a flat structure-of-arrays state that moves,
+// The simulation's data (docs/architecture.md, "The solver's data"): a flat structure-of-arrays state that moves,
 // and a topology that does not. Both backends (the scalar reference, the OpenCL kernels) read and write
 // exactly these arrays. Units: the normalized container, x, y in [0, 1] (y down), t in [0, 1].
 // All simulation arithmetic is float, in an order both backends share (equivalence by construction).
@@ -19,8 +19,6 @@ struct Vec3f {
 enum VertexFlag : std::uint8_t {
   vertex_boundary = 1,   ///< on its slice's outer boundary (repulsion, overlap, envelope)
   vertex_anchor = 2,     ///< a guided element's anchor on a slice with a target (has a target-point spring)
-  vertex_first_slice = 4,
-  vertex_last_slice = 8,
   vertex_hold_angle = 16,  ///< on a guided element's slice whose target gives an angle: Eq. 5 with k_target_angle
 };
 
@@ -68,7 +66,7 @@ struct Topology {
   // elements: element e holds slices [element_slice_begin[e], element_slice_begin[e+1])
   std::vector<std::int32_t> element_slice_begin;
 
-  // envelope triangles, index triples (design.md), with their element
+  // envelope triangles, index triples, with their element
   std::vector<std::int32_t> env_a, env_b, env_c, env_element;
 
   // target points of guided elements
@@ -79,10 +77,11 @@ struct Topology {
 
   ContainerGeometry container;
 
-  // the shrunken reference copy (§5.3): rest lengths are measured on it, each slice scaled by its g
-  // about the slice's reference centroid
-  std::vector<float> ref_x, ref_y, ref_t;     ///< per vertex
-  std::vector<float> slice_ref_cx, slice_ref_cy;  ///< per global slice
+  // the rest copy: the paper's shrunken "reference" duplicate of each element (§5.3), named apart from
+  // the reference solver. Rest lengths are measured on it, each slice scaled by its g
+  // about the slice's rest copy centroid
+  std::vector<float> rest_copy_x, rest_copy_y, rest_copy_t;     ///< per vertex
+  std::vector<float> slice_rest_copy_cx, slice_rest_copy_cy;  ///< per global slice
 
   std::int32_t vertex_count() const { return static_cast<std::int32_t>(element.size()); }
   std::int32_t slice_count() const { return static_cast<std::int32_t>(slice_boundary.size()); }
@@ -107,17 +106,17 @@ struct SimState {
 };
 
 /// §5.3: the rest length of CSR slot `slot` of vertex `v`: the distance between the spring's two ends
-/// in the reference copy, each end's slice scaled by its g about that slice's reference centroid. Time
+/// in the rest copy, each end's slice scaled by its g about that slice's rest copy centroid. Time
 /// springs join two slices with different g; the t distance is not scaled.
-inline float reference_rest_length(const Topology& topo, const std::vector<float>& growth, std::int32_t v,
+inline float rest_copy_length(const Topology& topo, const std::vector<float>& growth, std::int32_t v,
                                    std::int32_t slot) {
   const std::int32_t w = topo.spring_other[slot];
   const std::int32_t sv = topo.slice[v], sw = topo.slice[w];
-  const float xv = topo.slice_ref_cx[sv] + growth[sv] * (topo.ref_x[v] - topo.slice_ref_cx[sv]);
-  const float yv = topo.slice_ref_cy[sv] + growth[sv] * (topo.ref_y[v] - topo.slice_ref_cy[sv]);
-  const float xw = topo.slice_ref_cx[sw] + growth[sw] * (topo.ref_x[w] - topo.slice_ref_cx[sw]);
-  const float yw = topo.slice_ref_cy[sw] + growth[sw] * (topo.ref_y[w] - topo.slice_ref_cy[sw]);
-  const float dx = xw - xv, dy = yw - yv, dt = topo.ref_t[w] - topo.ref_t[v];
+  const float xv = topo.slice_rest_copy_cx[sv] + growth[sv] * (topo.rest_copy_x[v] - topo.slice_rest_copy_cx[sv]);
+  const float yv = topo.slice_rest_copy_cy[sv] + growth[sv] * (topo.rest_copy_y[v] - topo.slice_rest_copy_cy[sv]);
+  const float xw = topo.slice_rest_copy_cx[sw] + growth[sw] * (topo.rest_copy_x[w] - topo.slice_rest_copy_cx[sw]);
+  const float yw = topo.slice_rest_copy_cy[sw] + growth[sw] * (topo.rest_copy_y[w] - topo.slice_rest_copy_cy[sw]);
+  const float dx = xw - xv, dy = yw - yv, dt = topo.rest_copy_t[w] - topo.rest_copy_t[v];
   return std::sqrt(dx * dx + dy * dy + dt * dt);
 }
 
