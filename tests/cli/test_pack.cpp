@@ -107,7 +107,7 @@ TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer 
   CHECK_THAT(version.err, Contains("state format version 3") && Contains("reads version 2"));
 }
 
-TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them; no SCENE nor --resume exits 1") {
+TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them, no SCENE nor --resume exits 1") {
   const Sandbox box("overlap", animpak::test::star_scene(0, 5, 1, {R"(, "guided": [
       {"name": "left-star", "element": "star", "targets": [{"x": 230, "y": 280, "t": 0}, {"x": 230, "y": 280, "t": 1}]},
       {"name": "right-star", "element": "star", "targets": [{"x": 270, "y": 280, "t": 0}, {"x": 270, "y": 280, "t": 1}]}])",

@@ -69,7 +69,7 @@ TEST_CASE("the container shape also triangulates and binds", "[element][shapes]"
   check_replay(b.art, b.mesh);
 }
 
-TEST_CASE("synthetic shapes: art replays; an outside point binds to the nearest triangle",
+TEST_CASE("synthetic shapes: art replays, an outside point binds to the nearest triangle",
           "[element][binding]") {
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art(), two_blobs_art()}) {
     INFO(art.source);

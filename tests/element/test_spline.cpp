@@ -38,7 +38,7 @@ TEST_CASE("Spline: a key at t = 1 must repeat the t = 0 key when looping, and ma
   CHECK_NOTHROW(Spline({0.0, 0.5, 1.0}, {2.0, 5.0, 3.0}, false));
 }
 
-TEST_CASE("Spline: one key is a constant; two keys do not overshoot") {
+TEST_CASE("Spline: one key is a constant, two keys do not overshoot") {
   for (bool loop : {false, true}) {
     const Spline one({0.3}, {4.0}, loop);
     for (double t : {0.0, 0.3, 0.77, 1.0}) CHECK(one(t) == 4.0);

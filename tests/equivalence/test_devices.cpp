@@ -35,7 +35,7 @@ TEST_CASE("opencl_error_name: codes become their names", "[opencl]") {
   CHECK(std::string(e.what()).find("clCreateBuffer failed: CL_MEM_OBJECT_ALLOCATION_FAILURE (buffer 'x'") == 0);
 }
 
-TEST_CASE("try_build_kernels: every device builds; a broken kernel reports its log", "[opencl]") {
+TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its log", "[opencl]") {
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (skip_without_devices(devices)) return;
   for (const DeviceChoice& d : devices) {

@@ -88,7 +88,7 @@ TEST_CASE("poisson_disk: samples are inside, apart, off the boundary, cover the 
   CHECK(poisson_disk(c, r, margin, other) != points);
 }
 
-TEST_CASE("Rng: same seed, same numbers; uniform stays in range; below has no bias at the edges") {
+TEST_CASE("Rng: same seed, same numbers, uniform stays in range, below has no bias at the edges") {
   Rng a(7), b(7);
   for (int i = 0; i < 100; ++i) CHECK(a.next() == b.next());
   Rng c(9);

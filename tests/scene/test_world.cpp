@@ -40,7 +40,7 @@ constexpr int kSlices = 5;
 
 }  // namespace
 
-TEST_CASE("build_world: a guided anchor starts on the interpolated path; only keyed slices get target points") {
+TEST_CASE("build_world: a guided anchor starts on the interpolated path, only keyed slices get target points") {
   const World w = world_of(star_scene(1, kSlices, 3, kSwap));
   const Topology& topo = w.topology;
   // Targets of "up" in art units at t = 0, 0.5, 1; slice s lies at t = s / (n − 1), halfway between
@@ -101,7 +101,7 @@ TEST_CASE("build_world: 3 targets on 9 slices give 3 target points, on the slice
   }
 }
 
-TEST_CASE("build_world: a target path through a hole warns; a target outside or in a hole is an error") {
+TEST_CASE("build_world: a target path through a hole warns, a target outside or in a hole is an error") {
   auto ring = [](const std::string& targets) {
     return R"({"container": {"art": ")" + animpak::test::example_file("annulus/ring.svg") +
            R"(", "outline": 0, "holes": [1]}, "elements": [{"name": "star", "art": ")" +
@@ -222,7 +222,7 @@ TEST_CASE("build_world: overlapping shrunken elements and guided paths leaving t
   CHECK_THAT(outside, Contains("runaway") && Contains("outside the container"));
 }
 
-TEST_CASE("build_world: the same scene and seed give identical bytes; another seed moves the seeds") {
+TEST_CASE("build_world: the same scene and seed give identical bytes, another seed moves the seeds") {
   const World a = world_of(star_scene(3, kSlices, 7)), b = world_of(star_scene(3, kSlices, 7));
   const Topology &p = a.topology, &q = b.topology;
   CHECK(same_bytes(p.element, q.element));
@@ -254,7 +254,7 @@ TEST_CASE("build_world: the same scene and seed give identical bytes; another se
   CHECK(moved);
 }
 
-TEST_CASE("build_world: fixed orientation turns every unguided element alike; tangential follows the field") {
+TEST_CASE("build_world: fixed orientation turns every unguided element alike, tangential follows the field") {
   const World fixed = world_of(star_scene(3, kSlices, 2, {R"(, "orientation": {"mode": "fixed", "angle": 30})", ""}));
   for (const ElementInstance& e : fixed.elements) CHECK(e.angle == Approx(30.0 * std::numbers::pi / 180.0));
 

@@ -58,7 +58,7 @@ void turn_slice(const Topology& topo, SimState& s, std::int32_t slice, double de
 
 }  // namespace
 
-TEST_CASE("guided: the slices between targets leave the hole; the targets' slices stay within 0.02 of them") {
+TEST_CASE("guided: the slices between targets leave the hole, the targets' slices stay within 0.02 of them") {
   const World w = ring_world("");
   const Topology& topo = w.topology;
   REQUIRE(topo.target_x.size() == 3);
