@@ -218,3 +218,11 @@ std::vector<Polyline> PathFlattener::take() {
 }
 
 }  // namespace animpak::svg
+
+namespace animpak {
+
+std::vector<Vec2> thin_polyline(const std::vector<Vec2>& points, double tolerance) {
+  return svg::thin_straight_runs(points, std::vector<bool>(points.size(), true), tolerance);
+}
+
+}  // namespace animpak
