@@ -53,7 +53,8 @@ struct ArtShape {
 
 struct SvgOptions {
   /// Largest distance between a curve and its flattened polyline, in the SVG's user units after
-  /// viewBox scaling (pixels at 96 dpi for unit-less documents).
+  /// viewBox scaling (pixels at 96 dpi for unit-less documents). Straight runs are thinned within it
+  /// (docs/scene-format.md "Large paths").
   double flatten_tolerance = 0.1;
   /// Files larger than this are refused before parsing (an attack or not clip art).
   std::uintmax_t max_file_bytes = 32u << 20;
@@ -72,6 +73,12 @@ ArtShape load_path_file(const std::filesystem::path& file);
 
 /// Parses `.path` text already in memory; `name` stands for the file in messages.
 ArtShape parse_path_text(const std::string& text, const std::string& name);
+
+/// `points` with vertices dropped wherever the polyline stays within `tolerance` of what is kept (every
+/// dropped point, and every dropped segment, lies within `tolerance` of the kept chord over it); the
+/// first and last points are kept. Linear time. The SVG importer thins straight runs with it, the
+/// element outline its art (docs/scene-format.md "Large paths").
+std::vector<Vec2> thin_polyline(const std::vector<Vec2>& points, double tolerance);
 
 /// Chooses the reader by extension (.svg, .path); anything else is an InputError.
 ArtShape load_art(const std::filesystem::path& file, const SvgOptions& options = {});

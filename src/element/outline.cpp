@@ -23,6 +23,13 @@ constexpr double clipper_scale = 1e9;
 // outline is simplified to boundary_tolerance (80× this at its default) afterwards, so finer arcs buy
 // nothing.
 constexpr double arc_tolerance = 1e-4;
+// Art with more points than this is a trace (docs/parameters.md "Thinning traced art"): its polylines are
+// thinned within art_thinning before the booleans, as Clipper's union and offset grow quadratically with
+// the pixel-sized steps of a trace, each a local extremum. A quarter of boundary_tolerance's default, so
+// the sampled outline hardly shows it; the thinned art is offset by Δs plus this, so the outline still
+// keeps Δs from every point of the art as drawn. Smaller art is offset exactly as drawn.
+constexpr std::size_t thin_above_points = 10000;
+constexpr double art_thinning = 2e-3;
 // Closing radii tried, in unit-square units, to bridge detached art into one outline
 // (docs/parameters.md "Bridging detached art").
 constexpr double bridge_step = 0.005;
@@ -87,11 +94,15 @@ std::vector<std::vector<Vec2>> own_points(const ArtPath& path) {
   return points;
 }
 
-// Everything the art paints, as one union under the nonzero rule.
-cl::Paths painted_union(const ArtShape& art) {
+// Everything the art paints, as one union under the nonzero rule; each polyline thinned by `thinning`
+// first when it is positive.
+cl::Paths painted_union(const ArtShape& art, double thinning = 0.0) {
   cl::Paths all;
   for (const ArtPath& path : art.paths) {
-    cl::Paths area = painted_area(path, own_points(path), path.stroke_width, arc_tolerance);
+    std::vector<std::vector<Vec2>> points = own_points(path);
+    if (thinning > 0.0)
+      for (auto& line : points) line = thin_polyline(line, thinning);
+    cl::Paths area = painted_area(path, points, path.stroke_width, arc_tolerance);
     all.insert(all.end(), area.begin(), area.end());
   }
   return union_of(all, cl::pftNonZero);
@@ -235,14 +246,20 @@ std::vector<std::vector<Vec2>> painted_region(const ArtShape& art) {
 
 Outline element_outline(const NormalizedArt& art, double offset) {
   const std::string name = source_name(art.art);
-  const cl::Paths shape = painted_union(art.art);
+  std::size_t points = 0;
+  for (const ArtPath& path : art.art.paths)
+    for (const Polyline& line : path.polylines) points += line.points.size();
+  const double thinning = points > thin_above_points ? art_thinning : 0.0;
+  const cl::Paths shape = painted_union(art.art, thinning);
   double shape_area = 0.0;
   for (const cl::Path& p : shape) shape_area += cl::Area(p);
   if (!(shape_area > 0.0))
     throw InputError(name + ": the art encloses no area (no filled region and no stroke with a width)");
 
   // §3.1, Fig. 2a: offset by Δs with round joins so the channel of negative space has constant width.
-  const cl::Paths grown = offset_by(shape, offset);
+  // A thinned shape is within `thinning` of the art, so growing it by that much more keeps Δs.
+  const double grow = offset + thinning;
+  const cl::Paths grown = offset_by(shape, grow);
   std::vector<Piece> pieces = outer_pieces(grown);
   if (pieces.empty() || !(pieces.front().area > 0.0)) throw InputError(name + ": the offset outline has no area");
   // Art apart from the main body (a whisker, a fin filament, a detached eye) must stay inside the
@@ -253,7 +270,7 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   double radius = 0.0;
   while (pieces.size() > 1 && radius < max_bridge_radius) {
     radius = std::min(radius + bridge_step, max_bridge_radius);
-    cl::Paths closed = offset_by(offset_by(shape, offset + radius), -radius);
+    cl::Paths closed = offset_by(offset_by(shape, grow + radius), -radius);
     closed.insert(closed.end(), grown.begin(), grown.end());
     pieces = outer_pieces(closed);
   }

@@ -102,18 +102,21 @@ struct LenientErrors {
   static bool required_attribute_not_found(const C&, T) { return true; }
   template <class C, class T>
   static bool negative_value(const C& c, T) {
+    c.state().faulted.insert(c.node());
     c.state().warn(c.what() + ": negative " + svgpp::attribute_name<char>::get<T>() + " ignored");
     return true;
   }
   template <class C, class T, class V>
   static bool parse_failed(const C& c, T, const V& value) {
     const std::string text(boost::begin(value), boost::end(value));
-    if constexpr (std::is_same_v<T, tag::attribute::d> || std::is_same_v<T, tag::attribute::points>) {
-      throw InputError(message(c.state().doc.name(), c.what(),
-                               std::string("malformed ") + svgpp::attribute_name<char>::get<T>() +
-                                   " data at character " + std::to_string(path_error_offset(text)) + " of \"" +
-                                   text.substr(0, 80) + "\"",
-                               "fix the path data in an editor"));
+    // SVG 2 ("Error handling in path data", the `points` attribute): draw what came before the error.
+    // svgpp has already delivered those segments to the context when it reports the failure.
+    if constexpr (std::is_same_v<T, tag::attribute::d>) {
+      c.state().faulted.insert(c.node());
+      c.state().warn(c.what() + ": " + path_data_error(text, path_error_offset(text)));
+    } else if constexpr (std::is_same_v<T, tag::attribute::points>) {
+      c.state().faulted.insert(c.node());
+      c.state().warn(c.what() + ": " + points_error(text));
     } else {
       c.state().warn(c.what() + ": invalid " + svgpp::attribute_name<char>::get<T>() + " \"" + text.substr(0, 40) +
                      "\" ignored");
@@ -232,13 +235,14 @@ Paint ShapeContext::resolve(const PaintSpec& spec, double opacity) {
 void ShapeContext::on_exit_element() {
   if (!rendered() || !style_.visible) return;
   PathFlattener flat(transform_, state_->options.flatten_tolerance);
-  for (const auto& [kind, v] : segments_) {
+  const double* v = values_.data();
+  for (const Seg kind : kinds_) {
     switch (kind) {
-      case Seg::move: flat.move_to({v[0], v[1]}); break;
-      case Seg::line: flat.line_to({v[0], v[1]}); break;
-      case Seg::quad: flat.quadratic_to({v[0], v[1]}, {v[2], v[3]}); break;
-      case Seg::cubic: flat.cubic_to({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}); break;
-      case Seg::arc: flat.arc_to(v[0], v[1], v[2], v[3] != 0.0, v[4] != 0.0, {v[5], v[6]}); break;
+      case Seg::move: flat.move_to({v[0], v[1]}), v += 2; break;
+      case Seg::line: flat.line_to({v[0], v[1]}), v += 2; break;
+      case Seg::quad: flat.quadratic_to({v[0], v[1]}, {v[2], v[3]}), v += 4; break;
+      case Seg::cubic: flat.cubic_to({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}), v += 6; break;
+      case Seg::arc: flat.arc_to(v[0], v[1], v[2], v[3] != 0.0, v[4] != 0.0, {v[5], v[6]}), v += 7; break;
       case Seg::close: flat.close(); break;
     }
   }
@@ -249,13 +253,50 @@ void ShapeContext::on_exit_element() {
   path.stroke = resolve(style_.stroke, style_.stroke_opacity);
   path.stroke_width = style_.stroke_width * std::sqrt(std::abs(transform_.det()));
   if (path.stroke_width <= 0.0) path.stroke.enabled = false;
-  // Unpainted or empty geometry draws nothing, so it is not part of the art.
-  if (path.polylines.empty() || (!path.fill.enabled && !path.stroke.enabled)) return;
+  // Unpainted geometry draws nothing, so it is not part of the art.
+  if (!path.fill.enabled && !path.stroke.enabled) return;
+  // A closed subpath without area paints no fill and, unstroked, nothing at all.
+  size_t zero_area = 0;
+  if (!path.stroke.enabled) {
+    std::erase_if(path.polylines, [&](const Polyline& line) {
+      Box box;
+      for (Vec2 p : line.points) box.add(p);
+      const double extent = std::max(box.width(), box.height());
+      const bool flat_ring = std::abs(signed_area(line.points)) <= 1e-9 * extent * extent;
+      zero_area += flat_ring;
+      return flat_ring;
+    });
+  }
+  if (!state_->faulted.contains(node_)) {
+    const std::string why = degenerate(path.polylines, flat.dropped(), zero_area);
+    if (!why.empty()) state_->warn(what() + ": " + why);
+  }
+  if (path.polylines.empty()) return;
   path.id = attribute(node_, "id");
   path.fill_rule = style_.fill_rule;
   path.paint_order = style_.paint_order;
   path.source_index = static_cast<int>(state_->out.paths.size());
   state_->out.paths.push_back(std::move(path));
+}
+
+std::string ShapeContext::degenerate(const std::vector<Polyline>& kept, size_t dropped, size_t zero_area) const {
+  const std::string tag = reinterpret_cast<const char*>(node_->name);
+  if (kinds_.empty()) {
+    // svgpp emits no geometry for the sizes SVG says disable rendering (and for absent data).
+    if (tag == "rect") return "width or height is 0; nothing drawn (dropped)";
+    if (tag == "circle") return "r is 0; nothing drawn (dropped)";
+    if (tag == "ellipse") return "rx or ry is 0; nothing drawn (dropped)";
+    if (tag == "path") return "no path data; nothing drawn (dropped)";
+    return "no points; nothing drawn (dropped)";
+  }
+  if (dropped + zero_area == 0) return {};
+  const size_t total = kept.size() + dropped + zero_area;
+  std::string kinds;
+  if (dropped > 0) kinds = "a single point or only zero-length segments";
+  if (zero_area > 0) kinds += std::string(kinds.empty() ? "" : ", or ") + "no area (collinear points) and no stroke";
+  if (kept.empty()) return (total == 1 ? "its geometry is " : "all its subpaths are ") + kinds + "; nothing drawn (dropped)";
+  return std::to_string(dropped + zero_area) + " of its " + std::to_string(total) + " subpaths " +
+         (dropped + zero_area == 1 ? "is " : "are ") + kinds + "; those dropped";
 }
 
 void UseContext::on_exit_element() {

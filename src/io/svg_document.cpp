@@ -64,7 +64,7 @@ std::string href(const xmlNode* node) {
 
 std::string describe(const xmlNode* node) {
   const std::string id = attribute(node, "id");
-  if (!id.empty()) return id;
+  if (!id.empty()) return reinterpret_cast<const char*>(node->name) + ("#" + id);
   std::string text = "<";
   text.append(reinterpret_cast<const char*>(node->name)).append("> at line ");
   return text.append(std::to_string(xmlGetLineNo(node)));
@@ -75,12 +75,18 @@ Document::Document(const std::string& text, const std::string& name) : name_(nam
     throw InputError(message(name, "file", "too large for the XML parser", "simplify the art"));
   xmlParserCtxtPtr ctxt = xmlNewParserCtxt();
   if (!ctxt) throw InputError(message(name, "document", "out of memory starting the XML parser", "retry"));
+  // libxml2 caps one attribute at 10,000,000 characters unless told HUGE, and a traced path of a million
+  // points is longer (docs/scene-format.md "Large paths"). HUGE also lifts the limits that stop entity
+  // bombs, so it is only given to documents that declare no entity: without a declaration nothing can
+  // expand, and the file size limit bounds everything else.
+  const bool declares_entities = text.find("<!ENTITY") != std::string::npos;
   {
     const LoaderGuard guard;
     // NOENT expands Illustrator's internal entities (xmlns="&ns_svg;"); external ones hit the loader
-    // above and NONET forbids the network. No HUGE: libxml2's limits stop entity bombs.
+    // above and NONET forbids the network.
     doc_ = xmlCtxtReadMemory(ctxt, text.data(), static_cast<int>(text.size()), name.c_str(), nullptr,
-                             XML_PARSE_NONET | XML_PARSE_NOENT | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+                             XML_PARSE_NONET | XML_PARSE_NOENT | XML_PARSE_NOERROR | XML_PARSE_NOWARNING |
+                                 (declares_entities ? 0 : XML_PARSE_HUGE));
   }
   const xmlError* err = xmlCtxtGetLastError(ctxt);
   std::string problem;
@@ -93,8 +99,12 @@ Document::Document(const std::string& text, const std::string& name) : name_(nam
   if (!doc_ || !problem.empty()) {
     if (doc_) xmlFreeDoc(doc_);
     doc_ = nullptr;
+    const bool maybe_long = declares_entities && text.size() > 10000000;
     throw InputError(message(name, "line " + std::to_string(line), "not well-formed XML (" + problem + ")",
-                             "check that the file is an SVG saved as plain XML"));
+                             maybe_long ? "in a file that declares entities (<!ENTITY>) one attribute may hold at "
+                                          "most 10000000 characters; expand the entities and remove the "
+                                          "declarations, or split the longest path"
+                                        : "check that the file is an SVG saved as plain XML"));
   }
   root_ = xmlDocGetRootElement(doc_);
   if (!root_ || !is_svg_element(root_, "svg")) {

@@ -30,9 +30,55 @@ Affine compose(const Affine& o, const Affine& i) {
           o.b * i.c + o.d * i.d, o.a * i.e + o.c * i.f + o.e, o.b * i.e + o.d * i.f + o.f};
 }
 
-void PathFlattener::emit(Vec2 q) {
+std::vector<Vec2> thin_straight_runs(const std::vector<Vec2>& points, const std::vector<bool>& straight,
+                                     double tolerance) {
+  // Sleeve fitting from an anchor: each skipped point p at distance d > h from the anchor allows the
+  // directions within asin(h / d) of its own, so a chord whose direction lies in every such wedge passes
+  // within h of each skipped point sideways; a chord is also never shorter than the farthest skipped
+  // point less h, so none lies more than h beyond its end. With h = tolerance / √2 every skipped point,
+  // and so (distance to a segment being convex) every skipped segment, is within `tolerance` of the chord.
+  // Each point is looked at once or twice, so a million-point trace thins in well under a second.
+  const size_t n = points.size();
+  if (n < 3) return points;
+  const double h = tolerance / std::numbers::sqrt2;
+  const auto thinnable = [&](size_t i) { return i + 1 < n && straight[i] && straight[i + 1]; };
+  std::vector<Vec2> out{points[0]};
+  size_t anchor = 0;
+  while (anchor + 1 < n) {
+    const Vec2 a = points[anchor];
+    Vec2 ref{};  // the direction angles are measured from, set by the first point farther than h
+    bool wedged = false;
+    double lo = 0.0, hi = 0.0, farthest = 0.0;
+    size_t end = anchor + 1;
+    for (size_t k = anchor + 1; k < n; ++k) {
+      const Vec2 v = points[k] - a;
+      const double d = norm(v);
+      const double angle = wedged ? std::atan2(cross(ref, v), dot(ref, v)) : 0.0;
+      if (k > anchor + 1 && (d < farthest - h || (wedged && (angle < lo || angle > hi)))) break;
+      end = k;
+      if (!thinnable(k)) break;
+      farthest = std::max(farthest, d);
+      if (d > h) {
+        const double half = std::asin(h / d);
+        if (!wedged) {
+          ref = (1.0 / d) * v;
+          wedged = true;
+          lo = -half, hi = half;
+        } else {
+          lo = std::max(lo, angle - half), hi = std::min(hi, angle + half);
+        }
+      }
+    }
+    out.push_back(points[end]);
+    anchor = end;
+  }
+  return out;
+}
+
+void PathFlattener::emit(Vec2 q, bool straight) {
   if (!has_open_) {
     open_ = Polyline{};
+    straight_.clear();
     has_open_ = true;
   }
   if (!open_.points.empty()) {
@@ -40,6 +86,7 @@ void PathFlattener::emit(Vec2 q) {
     if (std::abs(last.x - q.x) <= 1e-12 && std::abs(last.y - q.y) <= 1e-12) return;
   }
   open_.points.push_back(q);
+  straight_.push_back(straight);
   ++points_;
 }
 
@@ -48,9 +95,19 @@ void PathFlattener::end_subpath(bool closed) {
   has_open_ = false;
   auto& pts = open_.points;
   // A closed ring does not repeat its first point: the closing segment is implied.
-  if (closed && pts.size() > 1 && norm(pts.back() - pts.front()) <= 1e-9 * (1.0 + norm(pts.front())))
+  if (closed && pts.size() > 1 && norm(pts.back() - pts.front()) <= 1e-9 * (1.0 + norm(pts.front()))) {
     pts.pop_back();
-  if (pts.size() < 2) return;
+    straight_.pop_back();
+  }
+  if (pts.size() < 2) {
+    ++dropped_;
+    return;
+  }
+  // docs/scene-format.md "Large paths": a trace of a million points is mostly straight runs finer than
+  // the tolerance; thinning them here keeps the offset, sampling and binding of the element linear in
+  // what the art shows rather than in how densely it was written. Curves are already flattened no finer
+  // than the tolerance needs and are left as they are.
+  pts = thin_straight_runs(pts, straight_, tol_);
   open_.closed = closed;
   done_.push_back(std::move(open_));
 }
@@ -58,12 +115,12 @@ void PathFlattener::end_subpath(bool closed) {
 void PathFlattener::move_to(Vec2 p) {
   end_subpath(false);
   start_ = cur_ = p;
-  emit(m_.apply(p));
+  emit(m_.apply(p), true);
 }
 
 void PathFlattener::line_to(Vec2 p) {
-  if (!has_open_) emit(m_.apply(cur_));
-  emit(m_.apply(p));
+  if (!has_open_) emit(m_.apply(cur_), true);
+  emit(m_.apply(p), true);
   cur_ = p;
 }
 
@@ -73,7 +130,7 @@ void PathFlattener::quadratic_to(Vec2 c, Vec2 p) {
 }
 
 void PathFlattener::cubic_to(Vec2 c1, Vec2 c2, Vec2 p) {
-  if (!has_open_) emit(m_.apply(cur_));
+  if (!has_open_) emit(m_.apply(cur_), true);
   cubic_art(m_.apply(cur_), m_.apply(c1), m_.apply(c2), m_.apply(p), 0);
   cur_ = p;
 }
@@ -83,7 +140,7 @@ void PathFlattener::cubic_art(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, int depth) {
   // tolerance of the chord the whole curve is.
   const double flat = std::max(distance_to_segment(p1, p0, p3), distance_to_segment(p2, p0, p3));
   if (!(flat > tol_) || depth >= kMaxDepth) {
-    emit(p3);
+    emit(p3, false);
     return;
   }
   const Vec2 a = lerp(p0, p1, 0.5), b = lerp(p1, p2, 0.5), c = lerp(p2, p3, 0.5);
@@ -125,7 +182,7 @@ void PathFlattener::arc_to(double rx, double ry, double rotation_deg, bool large
     const Vec2 u{rx * std::cos(t), ry * std::sin(t)};
     return m_.apply({centre.x + cs * u.x - sn * u.y, centre.y + sn * u.x + cs * u.y});
   };
-  if (!has_open_) emit(m_.apply(cur_));
+  if (!has_open_) emit(m_.apply(cur_), true);
   // Quarter turns at most, then halve until the sagitta (checked at the quarter points too, as an
   // affine-mapped ellipse need not bulge most at the middle) is within the tolerance.
   const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(dtheta) / (std::numbers::pi / 2))));
@@ -143,7 +200,7 @@ void PathFlattener::arc_to(double rx, double ry, double rotation_deg, bool large
       stack.emplace_back(tm, t1);
       stack.emplace_back(t0, tm);
     } else {
-      emit(b);
+      emit(b, false);
     }
   }
   if (!open_.points.empty()) open_.points.back() = m_.apply(p);  // land exactly on the endpoint
@@ -161,3 +218,11 @@ std::vector<Polyline> PathFlattener::take() {
 }
 
 }  // namespace animpak::svg
+
+namespace animpak {
+
+std::vector<Vec2> thin_polyline(const std::vector<Vec2>& points, double tolerance) {
+  return svg::thin_straight_runs(points, std::vector<bool>(points.size(), true), tolerance);
+}
+
+}  // namespace animpak

@@ -35,22 +35,33 @@ class PathFlattener {
   void arc_to(double rx, double ry, double x_axis_rotation_deg, bool large_arc, bool sweep, Vec2 p);
   void close();
   Vec2 current() const { return cur_; }
-  /// Finished subpaths; subpaths with fewer than two distinct points are dropped (they draw nothing).
+  /// Finished subpaths, straight runs thinned (docs/scene-format.md "Large paths"); subpaths with fewer
+  /// than two distinct points are dropped (they draw nothing) and counted in dropped().
   std::vector<Polyline> take();
+  /// Points emitted before thinning: the measure of the work the input asked for.
   size_t point_count() const { return points_; }
+  size_t dropped() const { return dropped_; }
 
  private:
-  void emit(Vec2 art_point);
+  void emit(Vec2 art_point, bool straight);
   void end_subpath(bool closed);
   void cubic_art(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, int depth);
   Affine m_;
   double tol_;
   Vec2 start_{}, cur_{};  // user units, for the next relative command and for close()
   Polyline open_;
+  std::vector<bool> straight_;  // straight_[i]: open_.points[i] is reached from its predecessor by a line
   bool has_open_ = false;
   std::vector<Polyline> done_;
   size_t points_ = 0;
+  size_t dropped_ = 0;
 };
+
+/// The points of a subpath with every vertex between two straight segments dropped where the polyline
+/// stays within `tolerance` of what is kept; vertices next to a curve, the first and the last are kept.
+/// `straight[i]` says whether the segment that ends at points[i] is straight. Linear time.
+std::vector<Vec2> thin_straight_runs(const std::vector<Vec2>& points, const std::vector<bool>& straight,
+                                     double tolerance);
 
 /// A parsed document kept alive for the traversal, with every element by id.
 class Document {
@@ -75,10 +86,18 @@ class Document {
   std::map<std::string, xmlNode*> by_id_;
 };
 
+/// The warning for path data `d` that svgpp's grammar read up to offset `stop` only: the character to
+/// blame (counted from 1) and the text there, and that the path is drawn up to it (SVG 2, "Error handling
+/// in path data").
+std::string path_data_error(const std::string& d, size_t stop);
+/// The warning for a `points` list that svgpp read only in part: an odd coordinate dropped, or where the
+/// data stops being numbers.
+std::string points_error(const std::string& points);
+
 /// `<name>: <what>: <problem>; <fix>` as every importer message reads.
 std::string message(const std::string& file, const std::string& what, const std::string& problem,
                     const std::string& fix);
-/// "id" when the element has one, else "<tag> at line N".
+/// "tag#id" when the element has one, else "<tag> at line N".
 std::string describe(const xmlNode* node);
 /// An attribute's value, or empty (libxml2's strings freed here).
 std::string attribute(const xmlNode* node, const char* name, const char* ns_href = nullptr);

@@ -41,7 +41,8 @@ TEST_CASE("svg: absolute commands, shorthand curves and quadratic end where they
 }
 
 TEST_CASE("svg: several subpaths, open and closed, without a repeated closing point", "[svg]") {
-  const auto art = parse(R"~(<path d="M0 0 L10 0 L10 10 L0 0 Z M20 0 L30 0 M40 0 40 5 45 5"/>)~");
+  // Stroked, so the open subpath M20 0 L30 0 draws (filled only, it has no area and would be dropped).
+  const auto art = parse(R"~(<path d="M0 0 L10 0 L10 10 L0 0 Z M20 0 L30 0 M40 0 40 5 45 5" stroke="black"/>)~");
   const auto& lines = art.paths.at(0).polylines;
   REQUIRE(lines.size() == 3);
   CHECK(lines[0].closed);
