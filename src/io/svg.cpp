@@ -249,6 +249,7 @@ void ShapeContext::on_exit_element() {
   path.stroke = resolve(style_.stroke, style_.stroke_opacity);
   path.stroke_width = style_.stroke_width * std::sqrt(std::abs(transform_.det()));
   if (path.stroke_width <= 0.0) path.stroke.enabled = false;
+  if (path.stroke.enabled) warn_stretched_stroke(path.stroke_width);
   // Unpainted or empty geometry draws nothing, so it is not part of the art.
   if (path.polylines.empty() || (!path.fill.enabled && !path.stroke.enabled)) return;
   path.id = attribute(node_, "id");
@@ -256,6 +257,21 @@ void ShapeContext::on_exit_element() {
   path.paint_order = style_.paint_order;
   path.source_index = static_cast<int>(state_->out.paths.size());
   state_->out.paths.push_back(std::move(path));
+}
+
+void ShapeContext::warn_stretched_stroke(double width) {
+  // A browser strokes with the pen stretched by the transform: as wide as the stroke width times each
+  // singular value, depending on the direction. One width (their geometric mean) is what we keep.
+  const Affine& m = transform_;
+  const double sum = m.a * m.a + m.b * m.b + m.c * m.c + m.d * m.d, det = std::abs(m.det());
+  const double root = std::sqrt(std::max(0.0, sum * sum - 4.0 * det * det));
+  const double most = std::sqrt(0.5 * (sum + root)), least = std::sqrt(std::max(0.0, 0.5 * (sum - root)));
+  if (!(most > 1.01 * least)) return;
+  std::ostringstream text;
+  text.precision(3);
+  text << what() << ": stroke under a non-uniform scale is drawn " << width << " wide everywhere; a browser draws it "
+       << style_.stroke_width * least << " to " << style_.stroke_width * most << " wide by direction";
+  state_->warn(text.str());
 }
 
 void UseContext::on_exit_element() {

@@ -149,7 +149,19 @@ class BaseContext : public Reporter {
   void set_text(const Range&) {}  // character data is never drawn (text elements are skipped)
 
   void transform_matrix(const boost::array<double, 6>& m);
-  void set_viewport(double, double, double w, double h) { lengths_.set_viewport_size(w, h); }
+  void set_viewport(double x, double y, double w, double h) {
+    lengths_.set_viewport_size(w, h);
+    // The root's viewport is the picture a browser draws; without width, height or viewBox it is the
+    // browser window's, which only the user knows.
+    const bool sized = !attribute(node_, "width").empty() || !attribute(node_, "height").empty() ||
+                       !attribute(node_, "viewBox").empty();
+    if (node_ == state_->doc.root() && !state_->out.viewport && sized) {
+      Box box;
+      box.add(transform_.apply({x, y}));
+      box.add(transform_.apply({x + w, y + h}));
+      state_->out.viewport = box;
+    }
+  }
   void set_viewbox_size(double w, double h) { lengths_.set_viewport_size(w, h); }
   void get_reference_viewport_size(double& w, double& h) const {
     if (ref_width_) w = *ref_width_;
@@ -254,6 +266,7 @@ class ShapeContext : public BaseContext {
     segments_.emplace_back(kind, std::vector<double>(v));
   }
   Paint resolve(const PaintSpec& spec, double opacity);
+  void warn_stretched_stroke(double width);
   std::vector<std::pair<Seg, std::vector<double>>> segments_;
 };
 

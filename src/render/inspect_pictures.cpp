@@ -98,4 +98,30 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
   return written;
 }
 
+Picture draw_art_preview(const ArtShape& art, int size) {
+  Box box;
+  if (art.viewport) {
+    box = *art.viewport;
+  } else {
+    double half_stroke = 0.0;
+    for (const ArtPath& path : art.paths)
+      if (path.stroke.enabled) half_stroke = std::max(half_stroke, 0.5 * path.stroke_width);
+    box = art.bounds();
+    box.add(box.min - Vec2{half_stroke, half_stroke});
+    box.add(box.max + Vec2{half_stroke, half_stroke});
+  }
+  const double side = std::max(box.width(), box.height());
+  const auto pixels = [&](double length) {
+    return side > 0.0 ? std::max(1, static_cast<int>(std::lround(size * length / side))) : size;
+  };
+  Picture pic(pixels(box.width()), pixels(box.height()), box, {0, 0, 0, 0}, 0.0);
+  ArtPoints points;
+  for (const ArtPath& path : art.paths) {
+    auto& lines = points.emplace_back();
+    for (const Polyline& line : path.polylines) lines.push_back(line.points);
+  }
+  pic.draw_art(art, points, 1.0, 1.0, 0.0);
+  return pic;
+}
+
 }  // namespace animpak

@@ -6,14 +6,6 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace {
-
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgba;
-};
-
-// Reads a PNG as 8-bit RGBA; an empty image when the file is missing or unreadable.
 Image read_rgba(const std::filesystem::path& file) {
   Image img;
   auto in = OIIO::ImageInput::open(file.string());
@@ -27,6 +19,8 @@ Image read_rgba(const std::filesystem::path& file) {
   in->close();
   return img;
 }
+
+namespace {
 
 void write_rgba(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {
   auto out = OIIO::ImageOutput::create(file.string());
