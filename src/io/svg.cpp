@@ -249,7 +249,10 @@ void ShapeContext::on_exit_element() {
   path.stroke = resolve(style_.stroke, style_.stroke_opacity);
   path.stroke_width = style_.stroke_width * std::sqrt(std::abs(transform_.det()));
   if (path.stroke_width <= 0.0) path.stroke.enabled = false;
-  if (path.stroke.enabled) warn_stretched_stroke(path.stroke_width);
+  if (path.stroke.enabled) {
+    warn_stretched_stroke(path.stroke_width);
+    warn_square_stroke(path.polylines);
+  }
   // Unpainted or empty geometry draws nothing, so it is not part of the art.
   if (path.polylines.empty() || (!path.fill.enabled && !path.stroke.enabled)) return;
   path.id = attribute(node_, "id");
@@ -272,6 +275,22 @@ void ShapeContext::warn_stretched_stroke(double width) {
   text << what() << ": stroke under a non-uniform scale is drawn " << width << " wide everywhere; a browser draws it "
        << style_.stroke_width * least << " to " << style_.stroke_width * most << " wide by direction";
   state_->warn(text.str());
+}
+
+// The stroke is drawn, and taken into the outline, with round joins and caps (src/element/outline.cpp);
+// SVG's default miter joins and butt caps differ at corners and open ends, so say where they were asked for.
+void ShapeContext::warn_square_stroke(const std::vector<Polyline>& lines) {
+  const auto inherited = [&](const char* name, const char* initial) {
+    for (const xmlNode* n = node_; n && n->type == XML_ELEMENT_NODE; n = n->parent) {
+      const std::string value = css_property(n, name);
+      if (!value.empty() && value != "inherit") return value;
+    }
+    return std::string(initial);
+  };
+  const std::string join = inherited("stroke-linejoin", "miter"), cap = inherited("stroke-linecap", "butt");
+  const bool open = std::any_of(lines.begin(), lines.end(), [](const Polyline& l) { return !l.closed; });
+  if (join != "round") state_->warn(what() + ": stroke-linejoin " + join + " is drawn round");
+  if (open && cap != "round") state_->warn(what() + ": stroke-linecap " + cap + " is drawn round");
 }
 
 void UseContext::on_exit_element() {

@@ -110,11 +110,14 @@ Picture draw_art_preview(const ArtShape& art, int size) {
     box.add(box.min - Vec2{half_stroke, half_stroke});
     box.add(box.max + Vec2{half_stroke, half_stroke});
   }
+  // One scale for both axes, the shorter side rounded up and the viewport at the top-left corner, as
+  // rsvg-convert sizes a document given its longer side.
   const double side = std::max(box.width(), box.height());
-  const auto pixels = [&](double length) {
-    return side > 0.0 ? std::max(1, static_cast<int>(std::lround(size * length / side))) : size;
-  };
-  Picture pic(pixels(box.width()), pixels(box.height()), box, {0, 0, 0, 0}, 0.0);
+  const double scale = side > 0.0 ? size / side : 1.0;
+  const auto pixels = [&](double length) { return std::max(1, static_cast<int>(std::ceil(length * scale - 1e-6))); };
+  const int width = pixels(box.width()), height = pixels(box.height());
+  box.add(box.min + Vec2{width / scale, height / scale});
+  Picture pic(width, height, box, {0, 0, 0, 0}, 0.0);
   ArtPoints points;
   for (const ArtPath& path : art.paths) {
     auto& lines = points.emplace_back();

@@ -28,7 +28,7 @@ struct Image {
   std::vector<unsigned char> rgba;
 };
 
-/// Reads a PNG as 8-bit RGBA; an empty image when the file is missing or unreadable.
+/// Reads a PNG (RGBA or RGB) as 8-bit RGBA; an empty image when the file is missing or unreadable.
 Image read_rgba(const std::filesystem::path& file);
 
 /// ANIMPAK_UPDATE_GOLDEN=1 is set: references are written, not compared.
