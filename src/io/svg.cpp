@@ -10,6 +10,7 @@
 #include <boost/mpl/insert.hpp>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -251,7 +252,7 @@ void ShapeContext::on_exit_element() {
   if (path.stroke_width <= 0.0) path.stroke.enabled = false;
   if (path.stroke.enabled) {
     warn_stretched_stroke(path.stroke_width);
-    warn_square_stroke(path.polylines);
+    warn_reduced_stroke(path.polylines);
   }
   // Unpainted or empty geometry draws nothing, so it is not part of the art.
   if (path.polylines.empty() || (!path.fill.enabled && !path.stroke.enabled)) return;
@@ -277,9 +278,10 @@ void ShapeContext::warn_stretched_stroke(double width) {
   state_->warn(text.str());
 }
 
-// The stroke is drawn, and taken into the outline, with round joins and caps (src/element/outline.cpp);
-// SVG's default miter joins and butt caps differ at corners and open ends, so say where they were asked for.
-void ShapeContext::warn_square_stroke(const std::vector<Polyline>& lines) {
+// The stroke is drawn, and taken into the outline, solid with round joins and caps (src/element/outline.cpp);
+// SVG's default miter joins and butt caps differ at corners and open ends, and a dash pattern leaves gaps,
+// so say where they were asked for.
+void ShapeContext::warn_reduced_stroke(const std::vector<Polyline>& lines) {
   const auto inherited = [&](const char* name, const char* initial) {
     for (const xmlNode* n = node_; n && n->type == XML_ELEMENT_NODE; n = n->parent) {
       const std::string value = css_property(n, name);
@@ -291,6 +293,18 @@ void ShapeContext::warn_square_stroke(const std::vector<Polyline>& lines) {
   const bool open = std::any_of(lines.begin(), lines.end(), [](const Polyline& l) { return !l.closed; });
   if (join != "round") state_->warn(what() + ": stroke-linejoin " + join + " is drawn round");
   if (open && cap != "round") state_->warn(what() + ": stroke-linecap " + cap + " is drawn round");
+  // A list that sums to zero draws solid, as "none" does (SVG 1.1, 11.4); so does one with a negative
+  // length, an error that renderers draw as "none".
+  const std::string dashes = inherited("stroke-dasharray", "none");
+  std::string lengths = dashes;
+  std::replace(lengths.begin(), lengths.end(), ',', ' ');
+  std::istringstream in(lengths);
+  bool gaps = false, valid = true;
+  for (double length; in >> length; in.ignore(std::numeric_limits<std::streamsize>::max(), ' ')) {
+    gaps = gaps || length > 0.0;
+    valid = valid && length >= 0.0;
+  }
+  if (gaps && valid) state_->warn(what() + ": stroke-dasharray " + dashes + " is drawn solid");
 }
 
 void UseContext::on_exit_element() {

@@ -267,7 +267,7 @@ class ShapeContext : public BaseContext {
   }
   Paint resolve(const PaintSpec& spec, double opacity);
   void warn_stretched_stroke(double width);
-  void warn_square_stroke(const std::vector<Polyline>& lines);
+  void warn_reduced_stroke(const std::vector<Polyline>& lines);
   std::vector<std::pair<Seg, std::vector<double>>> segments_;
 };
 
