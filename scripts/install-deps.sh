@@ -14,8 +14,8 @@ packages=(
   libsvgpp-dev libxml2-dev nlohmann-json3-dev libcli11-dev
   # output: vector rasterisation, image files, video
   libcairo2-dev libopenimageio-dev ffmpeg
-  # tests: Catch2 v2, and the real-world SVG test bed
-  catch2 openclipart-svg
+  # tests: Catch2 v2, the real-world SVG test bed, and rsvg-convert, the renderer `animpak check --png` is held to
+  catch2 openclipart-svg librsvg2-bin
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct ArtShape {
   std::filesystem::path source;
   std::vector<ArtPath> paths;
   std::vector<std::string> warnings;  ///< one line each: skipped elements, reduced gradients, …
+  /// The root <svg>'s viewport in art coordinates, what a browser shows, when the file sets its width
+  /// and height or a viewBox; absent for .path files and for SVGs that set neither.
+  std::optional<Box> viewport;
   Box bounds() const;                 ///< box of every polyline point
 };
 

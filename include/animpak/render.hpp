@@ -32,8 +32,10 @@ class Picture {
 
   /// Paints the art's paths in drawing order, each fill and stroke in its paint order.
   /// `points` replaces the art's own coordinates (e.g. replayed on a deformed slice).
-  /// `stroke_scale` multiplies the art's stroke widths (an element drawn at a fraction of its size).
-  void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0, double stroke_scale = 1.0);
+  /// `stroke_scale` multiplies the art's stroke widths (an element drawn at a fraction of its size); strokes
+  /// thinner than `min_stroke_px` pixels are drawn that wide, so hairlines stay visible in the frames.
+  void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0, double stroke_scale = 1.0,
+                double min_stroke_px = 0.5);
   /// Line segments between positions[e[0]] and positions[e[1]]; width in pixels.
   void draw_edges(const std::vector<Vec2>& positions, const std::vector<Edge>& edges, Rgba color,
                   double width_px, bool dashed = false);
@@ -60,6 +62,11 @@ class Picture {
 /// over the slice), <name>-strip.png (slices across the animation). Returns the files written.
 std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement& element,
                                                           const std::filesystem::path& dir, int size);
+
+/// The art exactly as imported, at its document's viewport (ArtShape::viewport; the painted bounds when it
+/// has none) on a transparent background, the viewport's longer side `size` pixels, strokes at their own
+/// width however thin: what a browser draws at that size, for `animpak check --png`.
+Picture draw_art_preview(const ArtShape& art, int size);
 
 /// Slice vertex positions of element instance `element` at frame time tf (paper §6): linear
 /// interpolation between the two consecutive slices whose current t values bracket tf.

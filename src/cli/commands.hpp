@@ -14,7 +14,7 @@
 
 namespace animpak::cli {
 
-// inspect and render draw, so only `animpak` defines them (inspect.cpp, render_commands.cpp).
+// inspect, check and render draw, so only `animpak` defines them (inspect.cpp, check.cpp, render_commands.cpp).
 struct InspectOptions {
   std::filesystem::path file;           ///< a scene (.json) or one art file (.svg, .path)
   std::optional<std::filesystem::path> out;  ///< folder for the PNG pictures
@@ -24,6 +24,16 @@ struct InspectOptions {
 };
 
 int inspect(const InspectOptions& options);
+
+struct CheckOptions {
+  std::filesystem::path file;               ///< one art file (.svg, .path)
+  std::optional<std::filesystem::path> png;  ///< draw the art as imported into this PNG
+  int size = 512;                           ///< the PNG's longer side in pixels
+  bool json = false;                        ///< print the report as JSON on stdout
+};
+
+/// The preflight before packing one art file: what is imported, every warning; 0 when it can be packed.
+int check(const CheckOptions& options);
 
 struct FrameOptions {
   int frames = 100;

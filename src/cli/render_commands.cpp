@@ -1,4 +1,4 @@
-// The full `animpak`: the solver commands of run.cpp plus everything that draws (inspect, render, the
+// The full `animpak`: the solver commands of run.cpp plus everything that draws (inspect, check, render, the
 // frames after pack, bench --plot). Only this executable compiles this file and links animpak_render.
 #include <CLI/CLI.hpp>
 
@@ -59,6 +59,17 @@ class RenderingFrontend final : public Frontend {
         ->check(CLI::Range(2, 1000));
     inspect_cmd_->add_option("--size", inspect_.picture_size, "picture height in pixels")->check(CLI::Range(16, 8192));
 
+    check_cmd_ = app.add_subcommand(
+        "check", "Preflight one art file before packing: what is imported, every warning, and a preview as imported");
+    check_cmd_->add_option("FILE", check_.file, "art file (.svg, .path)")->required();
+    check_cmd_->add_option("--png", check_.png,
+                           "draw the art as imported at the document's viewport into this PNG (transparent "
+                           "background), to hold next to a browser's rendering");
+    check_cmd_->add_option("--size", check_.size, "the PNG's longer side in pixels")->check(CLI::Range(16, 8192));
+    check_cmd_->add_flag("--json", check_.json, "print the report as JSON (docs/check.md)");
+    check_cmd_->footer("Exit codes: 0 ready to pack (warnings may remain), 2 the file cannot be imported or built "
+                       "into an element.");
+
     render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
     render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();
     add_frame_options(*render_cmd_, render_.frames);
@@ -71,6 +82,7 @@ class RenderingFrontend final : public Frontend {
 
   std::optional<int> run_own_command() override {
     if (inspect_cmd_->parsed()) return inspect(inspect_);
+    if (check_cmd_->parsed()) return check(check_);
     if (render_cmd_->parsed()) return render(render_);
     return std::nullopt;
   }
@@ -89,8 +101,10 @@ class RenderingFrontend final : public Frontend {
 
  private:
   CLI::App* inspect_cmd_ = nullptr;
+  CLI::App* check_cmd_ = nullptr;
   CLI::App* render_cmd_ = nullptr;
   InspectOptions inspect_;
+  CheckOptions check_;
   RenderOptions render_;
   bool pack_render_ = true;
   FrameOptions pack_frames_;

@@ -10,6 +10,7 @@
 #include <boost/mpl/insert.hpp>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -272,6 +273,10 @@ void ShapeContext::on_exit_element() {
     if (!why.empty()) state_->warn(what() + ": " + why);
   }
   if (path.polylines.empty()) return;
+  if (path.stroke.enabled) {
+    warn_stretched_stroke(path.stroke_width);
+    warn_reduced_stroke(path.polylines);
+  }
   path.id = attribute(node_, "id");
   path.fill_rule = style_.fill_rule;
   path.paint_order = style_.paint_order;
@@ -297,6 +302,50 @@ std::string ShapeContext::degenerate(const std::vector<Polyline>& kept, size_t d
   if (kept.empty()) return (total == 1 ? "its geometry is " : "all its subpaths are ") + kinds + "; nothing drawn (dropped)";
   return std::to_string(dropped + zero_area) + " of its " + std::to_string(total) + " subpaths " +
          (dropped + zero_area == 1 ? "is " : "are ") + kinds + "; those dropped";
+}
+
+void ShapeContext::warn_stretched_stroke(double width) {
+  // A browser strokes with the pen stretched by the transform: as wide as the stroke width times each
+  // singular value, depending on the direction. One width (their geometric mean) is what we keep.
+  const Affine& m = transform_;
+  const double sum = m.a * m.a + m.b * m.b + m.c * m.c + m.d * m.d, det = std::abs(m.det());
+  const double root = std::sqrt(std::max(0.0, sum * sum - 4.0 * det * det));
+  const double most = std::sqrt(0.5 * (sum + root)), least = std::sqrt(std::max(0.0, 0.5 * (sum - root)));
+  if (!(most > 1.01 * least)) return;
+  std::ostringstream text;
+  text.precision(3);
+  text << what() << ": stroke under a non-uniform scale is drawn " << width << " wide everywhere; a browser draws it "
+       << style_.stroke_width * least << " to " << style_.stroke_width * most << " wide by direction";
+  state_->warn(text.str());
+}
+
+// The stroke is drawn, and taken into the outline, solid with round joins and caps (src/element/outline.cpp);
+// SVG's default miter joins and butt caps differ at corners and open ends, and a dash pattern leaves gaps,
+// so say where they were asked for.
+void ShapeContext::warn_reduced_stroke(const std::vector<Polyline>& lines) {
+  const auto inherited = [&](const char* name, const char* initial) {
+    for (const xmlNode* n = node_; n && n->type == XML_ELEMENT_NODE; n = n->parent) {
+      const std::string value = css_property(n, name);
+      if (!value.empty() && value != "inherit") return value;
+    }
+    return std::string(initial);
+  };
+  const std::string join = inherited("stroke-linejoin", "miter"), cap = inherited("stroke-linecap", "butt");
+  const bool open = std::any_of(lines.begin(), lines.end(), [](const Polyline& l) { return !l.closed; });
+  if (join != "round") state_->warn(what() + ": stroke-linejoin " + join + " is drawn round");
+  if (open && cap != "round") state_->warn(what() + ": stroke-linecap " + cap + " is drawn round");
+  // A list that sums to zero draws solid, as "none" does (SVG 1.1, 11.4); so does one with a negative
+  // length, an error that renderers draw as "none".
+  const std::string dashes = inherited("stroke-dasharray", "none");
+  std::string lengths = dashes;
+  std::replace(lengths.begin(), lengths.end(), ',', ' ');
+  std::istringstream in(lengths);
+  bool gaps = false, valid = true;
+  for (double length; in >> length; in.ignore(std::numeric_limits<std::streamsize>::max(), ' ')) {
+    gaps = gaps || length > 0.0;
+    valid = valid && length >= 0.0;
+  }
+  if (gaps && valid) state_->warn(what() + ": stroke-dasharray " + dashes + " is drawn solid");
 }
 
 void UseContext::on_exit_element() {

@@ -152,7 +152,19 @@ class BaseContext : public Reporter {
   void set_text(const Range&) {}  // character data is never drawn (text elements are skipped)
 
   void transform_matrix(const boost::array<double, 6>& m);
-  void set_viewport(double, double, double w, double h) { lengths_.set_viewport_size(w, h); }
+  void set_viewport(double x, double y, double w, double h) {
+    lengths_.set_viewport_size(w, h);
+    // The root's viewport is the picture a browser draws; without width, height or viewBox it is the
+    // browser window's, which only the user knows.
+    const bool sized = !attribute(node_, "width").empty() || !attribute(node_, "height").empty() ||
+                       !attribute(node_, "viewBox").empty();
+    if (node_ == state_->doc.root() && !state_->out.viewport && sized) {
+      Box box;
+      box.add(transform_.apply({x, y}));
+      box.add(transform_.apply({x + w, y + h}));
+      state_->out.viewport = box;
+    }
+  }
   void set_viewbox_size(double w, double h) { lengths_.set_viewport_size(w, h); }
   void get_reference_viewport_size(double& w, double& h) const {
     if (ref_width_) w = *ref_width_;
@@ -262,6 +274,8 @@ class ShapeContext : public BaseContext {
   Paint resolve(const PaintSpec& spec, double opacity);
   /// Why the element's geometry draws nothing or less than written, or empty when it draws all of it.
   std::string degenerate(const std::vector<Polyline>& kept, size_t dropped, size_t zero_area) const;
+  void warn_stretched_stroke(double width);
+  void warn_reduced_stroke(const std::vector<Polyline>& lines);
   std::vector<Seg> kinds_;
   std::vector<double> values_;
 };

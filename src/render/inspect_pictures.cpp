@@ -98,4 +98,33 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
   return written;
 }
 
+Picture draw_art_preview(const ArtShape& art, int size) {
+  Box box;
+  if (art.viewport) {
+    box = *art.viewport;
+  } else {
+    double half_stroke = 0.0;
+    for (const ArtPath& path : art.paths)
+      if (path.stroke.enabled) half_stroke = std::max(half_stroke, 0.5 * path.stroke_width);
+    box = art.bounds();
+    box.add(box.min - Vec2{half_stroke, half_stroke});
+    box.add(box.max + Vec2{half_stroke, half_stroke});
+  }
+  // One scale for both axes, the shorter side rounded up and the viewport at the top-left corner, as
+  // rsvg-convert sizes a document given its longer side.
+  const double side = std::max(box.width(), box.height());
+  const double scale = side > 0.0 ? size / side : 1.0;
+  const auto pixels = [&](double length) { return std::max(1, static_cast<int>(std::ceil(length * scale - 1e-6))); };
+  const int width = pixels(box.width()), height = pixels(box.height());
+  box.add(box.min + Vec2{width / scale, height / scale});
+  Picture pic(width, height, box, {0, 0, 0, 0}, 0.0);
+  ArtPoints points;
+  for (const ArtPath& path : art.paths) {
+    auto& lines = points.emplace_back();
+    for (const Polyline& line : path.polylines) lines.push_back(line.points);
+  }
+  pic.draw_art(art, points, 1.0, 1.0, 0.0);
+  return pic;
+}
+
 }  // namespace animpak

@@ -59,7 +59,8 @@ void set_colour(cairo_t* cr, Rgba c, double opacity) { cairo_set_source_rgba(cr,
 
 }  // namespace
 
-void Picture::draw_art(const ArtShape& art, const ArtPoints& points, double opacity, double stroke_scale) {
+void Picture::draw_art(const ArtShape& art, const ArtPoints& points, double opacity, double stroke_scale,
+                       double min_stroke_px) {
   cairo_t* cr = impl_->cr;
   for (std::size_t p = 0; p < art.paths.size() && p < points.size(); ++p) {
     const ArtPath& path = art.paths[p];
@@ -86,7 +87,7 @@ void Picture::draw_art(const ArtShape& art, const ArtPoints& points, double opac
     auto stroke = [&] {
       if (!path.stroke.enabled || path.stroke_width <= 0) return;
       set_colour(cr, path.stroke.color, opacity);
-      cairo_set_line_width(cr, std::max(0.5, path.stroke_width * stroke_scale * impl_->scale));
+      cairo_set_line_width(cr, std::max(min_stroke_px, path.stroke_width * stroke_scale * impl_->scale));
       cairo_stroke_preserve(cr);
     };
     if (path.paint_order == PaintOrder::fill_then_stroke) fill(), stroke();

@@ -260,6 +260,17 @@ TEST_CASE("svg: text, images and other unsupported elements are skipped with a w
   for (const auto& w : art.warnings) CHECK(w.find("Hello") == std::string::npos);
 }
 
+TEST_CASE("svg: a dashed stroke is drawn solid with a warning; none, zeros and negatives are solid anyway", "[svg]") {
+  const auto art = parse(R"~(<g stroke="black" stroke-linejoin="round" stroke-linecap="round">
+      <g style="stroke-dasharray:4px, 2"><path id="dashed" d="M0 0 L9 0"/></g>
+      <path id="solid" d="M0 1 L9 1" stroke-dasharray="none"/><path id="zeros" d="M0 2 L9 2" stroke-dasharray="0,0"/>
+      <path id="negative" d="M0 3 L9 3" stroke-dasharray="3 -1"/>
+      <path id="unstroked" d="M0 4 L9 4 L9 9 Z" stroke="none" stroke-dasharray="3"/></g>)~");
+  REQUIRE(art.paths.size() == 5);
+  CHECK(has_warning(art, "dashed: stroke-dasharray 4px, 2 is drawn solid"));
+  CHECK(art.warnings.size() == 1);
+}
+
 TEST_CASE("svg: Illustrator internal entities, switch and class styles", "[svg]") {
   const std::string ai = R"~(<?xml version="1.0"?>
 <!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" "http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd" [

@@ -6,27 +6,27 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace {
-
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> rgba;
-};
-
-// Reads a PNG as 8-bit RGBA; an empty image when the file is missing or unreadable.
 Image read_rgba(const std::filesystem::path& file) {
   Image img;
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) return img;
   const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels != 4) return img;
+  // Opaque pictures may come without alpha (rsvg-convert writes RGB then): alpha is 255.
+  if (spec.nchannels != 4 && spec.nchannels != 3) return img;
+  const int channels = spec.nchannels;
   img.width = spec.width;
   img.height = spec.height;
-  img.rgba.resize(static_cast<std::size_t>(img.width) * img.height * 4);
-  if (!in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, img.rgba.data())) img.rgba.clear();
+  const std::size_t pixels = static_cast<std::size_t>(img.width) * img.height;
+  std::vector<unsigned char> read(pixels * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, read.data())) return img;
   in->close();
+  img.rgba.assign(pixels * 4, 255);
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (int c = 0; c < channels; ++c) img.rgba[i * 4 + c] = read[i * channels + c];
   return img;
 }
+
+namespace {
 
 void write_rgba(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {
   auto out = OIIO::ImageOutput::create(file.string());

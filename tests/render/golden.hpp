@@ -23,6 +23,14 @@ struct GoldenResult {
   std::string report;     ///< one paragraph: counts, worst pixel, files written on failure
 };
 
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgba;
+};
+
+/// Reads a PNG (RGBA or RGB) as 8-bit RGBA; an empty image when the file is missing or unreadable.
+Image read_rgba(const std::filesystem::path& file);
+
 /// ANIMPAK_UPDATE_GOLDEN=1 is set: references are written, not compared.
 bool golden_update_requested();
 

@@ -1,0 +1,278 @@
+// `animpak check`: the preflight a designer runs on one art file before packing it. It reports what the
+// importer took from the file and what the element builder made of it (the same calls as inspect and pack),
+// every warning on the way, and can draw the art as imported at the document's own viewport so it can be
+// held next to a browser's rendering. docs/check.md describes the report and its JSON.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <unordered_set>
+
+#include "animpak/animation.hpp"
+#include "animpak/error.hpp"
+#include "animpak/render.hpp"
+#include "animpak/scene.hpp"
+#include "commands.hpp"
+
+namespace animpak::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The frames draw strokes thinner than this many pixels this wide (Picture::draw_art); the preview does not.
+constexpr double thinnest_stroke_px = 0.5;
+
+std::string hex_colour(const Rgba& c) {
+  char text[8];
+  const auto byte = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return text;
+}
+
+Json box_json(const Box& box) { return {box.min.x, box.min.y, box.width(), box.height()}; }
+
+// Whether two segments of the polyline that are not neighbours cross. A sweep over x tests only the
+// segments whose x-ranges overlap, which keeps traced art with thousands of points fast.
+bool crosses_itself(const Polyline& line) {
+  const std::vector<Vec2>& p = line.points;
+  const std::size_t n = p.size(), segments = line.closed ? n : n - 1;
+  if (n < 4) return false;
+  const auto end = [&](std::size_t i) { return p[(i + 1) % n]; };
+  std::vector<std::size_t> order(segments);
+  for (std::size_t i = 0; i < segments; ++i) order[i] = i;
+  const auto lo = [&](std::size_t i) { return std::min(p[i].x, end(i).x); };
+  const auto hi = [&](std::size_t i) { return std::max(p[i].x, end(i).x); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lo(a) < lo(b); });
+  for (std::size_t k = 0; k < segments; ++k) {
+    const std::size_t i = order[k];
+    for (std::size_t m = k + 1; m < segments && lo(order[m]) <= hi(i); ++m) {
+      const std::size_t j = order[m];
+      const bool neighbours = (i + 1) % n == j || (j + 1) % n == i;
+      if (!neighbours && segments_cross(p[i], end(i), p[j], end(j))) return true;
+    }
+  }
+  return false;
+}
+
+// Rings are compared on the 1e-9 grid painted_region rounds to, so a vertex of a path's own region that
+// survives into the union is found exactly.
+struct GridKey {
+  long long x, y;
+  bool operator==(const GridKey&) const = default;
+};
+struct GridHash {
+  std::size_t operator()(const GridKey& k) const { return std::hash<long long>()(k.x * 1000003LL ^ k.y); }
+};
+GridKey grid_key(Vec2 p) { return {std::llround(p.x * 1e9), std::llround(p.y * 1e9)}; }
+
+// Which paths reach the outer boundary of everything the art paints (the boundary the element's outline
+// is offset from, §3.1), and the holes inside it, which the solid element fills.
+struct ArtOutline {
+  std::vector<bool> on_outline;  // per path
+  std::vector<double> hole_areas;
+};
+
+ArtOutline outline_of(const ArtShape& unit_art) {
+  ArtOutline out;
+  std::unordered_set<GridKey, GridHash> outer;
+  for (const auto& ring : painted_region(unit_art)) {
+    if (signed_area(ring) < 0.0) {
+      out.hole_areas.push_back(-signed_area(ring));
+      continue;
+    }
+    for (Vec2 p : ring) outer.insert(grid_key(p));
+  }
+  // Arcs as fine as element_outline's, so the same stroke vertices come out.
+  constexpr double arc_tolerance = 1e-4;
+  for (const ArtPath& path : unit_art.paths) {
+    std::vector<std::vector<Vec2>> points;
+    for (const Polyline& line : path.polylines) points.push_back(line.points);
+    bool reaches = false;
+    for (const auto& ring : painted_region(path, points, path.stroke_width, arc_tolerance))
+      reaches = reaches || std::any_of(ring.begin(), ring.end(), [&](Vec2 p) { return outer.count(grid_key(p)) > 0; });
+    out.on_outline.push_back(reaches);
+  }
+  return out;
+}
+
+Json paint_json(const Paint& paint) {
+  if (!paint.enabled) return nullptr;
+  return {{"color", hex_colour(paint.color)}, {"opacity", paint.color.a}};
+}
+
+std::string describe_path(const ArtPath& path, std::size_t index) {
+  return path.id.empty() ? "path " + std::to_string(index) : path.id;
+}
+
+// The report's paths and the warnings only the check adds: what the import keeps silently but a browser
+// user should know (open subpaths that are filled as if closed, subpaths crossing themselves).
+Json paths_json(const ArtShape& art, const std::string& file, std::vector<std::string>& warnings) {
+  Json paths = Json::array();
+  for (std::size_t i = 0; i < art.paths.size(); ++i) {
+    const ArtPath& path = art.paths[i];
+    int open = 0, crossing = 0;
+    std::size_t points = 0;
+    for (const Polyline& line : path.polylines) {
+      open += line.closed ? 0 : 1;
+      crossing += crosses_itself(line) ? 1 : 0;
+      points += line.points.size();
+    }
+    if (open > 0 && path.fill.enabled)
+      warnings.push_back(file + ": " + describe_path(path, i) + ": " + std::to_string(open) +
+                         " open subpath(s) filled as if closed (as SVG fills them); the element's outline takes them "
+                         "in closed");
+    if (crossing > 0)
+      warnings.push_back(file + ": " + describe_path(path, i) + ": " + std::to_string(crossing) +
+                         " subpath(s) cross themselves; the " +
+                         (path.fill_rule == FillRule::evenodd ? "even-odd" : "non-zero") +
+                         " fill rule decides what is inside, as in a browser");
+    Json stroke = paint_json(path.stroke);
+    if (!stroke.is_null()) stroke["width"] = path.stroke_width;
+    paths.push_back({{"index", i},
+                     {"source_index", path.source_index},
+                     {"id", path.id},
+                     {"path_type", path.path_type},
+                     {"subpaths", path.polylines.size()},
+                     {"open_subpaths", open},
+                     {"self_intersecting_subpaths", crossing},
+                     {"points", points},
+                     {"fill", paint_json(path.fill)},
+                     {"fill_rule", path.fill_rule == FillRule::evenodd ? "evenodd" : "nonzero"},
+                     {"stroke", stroke},
+                     {"on_outline", false}});
+  }
+  return paths;
+}
+
+Json element_json(const SpacetimeElement& e, const ArtOutline& outline, const Params& params) {
+  Box art_box = e.art.art.bounds(), ring_box;
+  for (Vec2 p : e.slice.vertices) ring_box.add(p);
+  return {{"scale", e.art.frame.scale},
+          {"size", {art_box.width(), art_box.height()}},
+          {"offset", params.offset},
+          {"outline_size", {ring_box.width(), ring_box.height()}},
+          {"boundary_vertices", e.slice.boundary_count},
+          {"slice_vertices", e.vertices_per_slice()},
+          {"holes", outline.hole_areas}};
+}
+
+void print_text(const Json& report) {
+  const Json& doc = report["document"];
+  std::printf("file       %s\n", report["file"].get<std::string>().c_str());
+  if (doc["viewport"].is_null()) {
+    std::printf("viewport   none set (the preview frames the painted art)\n");
+  } else {
+    const Json& v = doc["viewport"];
+    std::printf("viewport   %g %g %g %g (art units: x y width height)\n", v[0].get<double>(), v[1].get<double>(),
+                v[2].get<double>(), v[3].get<double>());
+  }
+  const Json& paths = report["paths"];
+  int filled = 0, stroked = 0, open = 0, crossing = 0;
+  std::string outline;
+  for (const Json& p : paths) {
+    filled += p["fill"].is_null() ? 0 : 1;
+    stroked += p["stroke"].is_null() ? 0 : 1;
+    open += p["open_subpaths"].get<int>();
+    crossing += p["self_intersecting_subpaths"].get<int>();
+  }
+  std::printf("paths      %zu: %d filled, %d stroked; %d open subpaths, %d crossing themselves\n", paths.size(), filled,
+              stroked, open, crossing);
+  std::printf("  %4s %-20s %-8s %-16s %-8s %8s %8s %s\n", "#", "id", "fill", "stroke (width)", "rule", "subpaths",
+              "points", "outline");
+  for (const Json& p : paths) {
+    std::string stroke = "-";
+    if (!p["stroke"].is_null()) {
+      char width[32];
+      std::snprintf(width, sizeof width, " (%.3g)", p["stroke"]["width"].get<double>());
+      stroke = p["stroke"]["color"].get<std::string>() + width;
+    }
+    std::printf("  %4d %-20s %-8s %-16s %-8s %8d %8d %s\n", p["index"].get<int>(), p["id"].get<std::string>().c_str(),
+                p["fill"].is_null() ? "-" : p["fill"]["color"].get<std::string>().c_str(), stroke.c_str(),
+                p["fill_rule"].get<std::string>().c_str(), p["subpaths"].get<int>(), p["points"].get<int>(),
+                p["on_outline"].get<bool>() ? "yes" : "");
+  }
+  if (report.contains("element")) {
+    const Json& e = report["element"];
+    std::printf("element    %.3g x %.3g after normalizing (art units x %.3g); outline offset %g: %.3g x %.3g, %d "
+                "boundary and %d slice vertices\n",
+                e["size"][0].get<double>(), e["size"][1].get<double>(), e["scale"].get<double>(),
+                e["offset"].get<double>(), e["outline_size"][0].get<double>(), e["outline_size"][1].get<double>(),
+                e["boundary_vertices"].get<int>(), e["slice_vertices"].get<int>());
+    const std::size_t holes = e["holes"].size();
+    if (holes > 0)
+      std::printf("holes      %zu in the art, filled by the element (its outline is the outer boundary only)\n", holes);
+  }
+  std::printf("warnings   %zu%s\n", report["warnings"].size(), report["warnings"].empty() ? "" : " (on stderr)");
+  if (report.contains("png")) std::printf("preview    %s\n", report["png"].get<std::string>().c_str());
+  std::printf("%s\n", report["ready"].get<bool>() ? "ready to pack" : "cannot be packed");
+}
+
+}  // namespace
+
+int check(const CheckOptions& options) {
+  const std::string file = options.file.string();
+  Json report = {{"file", file}, {"ready", false}};
+  // What cannot be imported or built goes out as the error every command gives (exit 2); --json first
+  // says so on stdout, so scripts always get an object.
+  const auto refuse = [&](const InputError& e) {
+    if (options.json) {
+      report["error"] = e.what();
+      std::cout << report.dump(2) << "\n";
+    }
+  };
+  ArtShape art;
+  try {
+    art = load_art(options.file);
+  } catch (const InputError& e) {
+    refuse(e);
+    throw;
+  }
+  std::vector<std::string> warnings = art.warnings;
+  report["document"] = {{"viewport", art.viewport ? box_json(*art.viewport) : Json(nullptr)},
+                        {"bounds", box_json(art.bounds())}};
+  report["paths"] = paths_json(art, file, warnings);
+
+  if (options.png) {
+    // Drawn before the element is built: the picture of what was imported helps most when building fails.
+    const Picture preview = draw_art_preview(art, options.size);
+    const double px_per_unit = preview.to_pixel({1, 0}).x - preview.to_pixel({0, 0}).x;
+    int thin = 0;
+    for (const ArtPath& path : art.paths)
+      thin += path.stroke.enabled && path.stroke_width * px_per_unit < thinnest_stroke_px ? 1 : 0;
+    if (thin > 0) {
+      std::ostringstream text;
+      text << file << ": " << thin << " stroke(s) are thinner than " << thinnest_stroke_px << " px at "
+           << options.size << " px: the preview draws them at their width, as a browser does; frames of that "
+           << "size widen them to " << thinnest_stroke_px << " px";
+      warnings.push_back(text.str());
+    }
+    preview.write(*options.png);
+    report["png"] = options.png->string();
+  }
+
+  try {
+    const Params params;
+    const SpacetimeElement element =
+        build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0));
+    const ArtOutline outline = outline_of(element.art.art);
+    for (std::size_t i = 0; i < outline.on_outline.size(); ++i) report["paths"][i]["on_outline"] = outline.on_outline[i];
+    report["element"] = element_json(element, outline, params);
+    warnings.insert(warnings.end(), element.notes.begin(), element.notes.end());
+  } catch (const InputError& e) {
+    report["warnings"] = warnings;
+    for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
+    refuse(e);
+    throw;
+  }
+  report["warnings"] = warnings;
+  report["ready"] = true;
+  for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
+  if (options.json) std::cout << report.dump(2) << "\n";
+  else print_text(report);
+  return 0;
+}
+
+}  // namespace animpak::cli
