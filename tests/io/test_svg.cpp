@@ -260,7 +260,7 @@ TEST_CASE("svg: text, images and other unsupported elements are skipped with a w
   for (const auto& w : art.warnings) CHECK(w.find("Hello") == std::string::npos);
 }
 
-TEST_CASE("svg: a dashed stroke is drawn solid with a warning; none, zeros and negatives are solid anyway", "[svg]") {
+TEST_CASE("svg: a dashed stroke is drawn solid with a warning, none, zeros and negatives are solid anyway", "[svg]") {
   const auto art = parse(R"~(<g stroke="black" stroke-linejoin="round" stroke-linecap="round">
       <g style="stroke-dasharray:4px, 2"><path id="dashed" d="M0 0 L9 0"/></g>
       <path id="solid" d="M0 1 L9 1" stroke-dasharray="none"/><path id="zeros" d="M0 2 L9 2" stroke-dasharray="0,0"/>
