@@ -111,6 +111,9 @@ TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and
                           "<kernel>:" + std::to_string(directive_line + 1) + ":8: note: here\nno location\n";
   CHECK(opencl::annotate_build_log(log, source) ==
         "temporal.cl:3:1: error: unknown type name 'this'\ntemporal.cl:1:8: note: here\nno location\n");
+  // Oclgrind's compiler names the program "input.cl" and counts lines in all of it, as NVIDIA's does.
+  CHECK(opencl::annotate_build_log("input.cl:" + std::to_string(third) + ":1: error: x\n", source) ==
+        "temporal.cl:3:1: error: x\n");
   // Compilers that honour #line already name the file; their logs pass through unchanged.
   CHECK(opencl::annotate_build_log("temporal.cl:5:1: error: x\n", source) == "temporal.cl:5:1: error: x\n");
 }
