@@ -29,7 +29,7 @@ TEST_CASE("choose_device: reference by name, unknown names refused", "[opencl]")
 }
 
 TEST_CASE("default device: real GPUs, then PoCL, then the reference; never a simulator", "[opencl]") {
-  // The strings the three implementations report (Oclgrind 21.10, PoCL 3.1, an NVIDIA driver), and an emulator's.
+  // What the three implementations report (Oclgrind 21.10, PoCL 3.1, NVIDIA 580.159.04), and an emulator.
   auto device = [](const char* platform, const char* platform_version, const char* name, const char* vendor, bool gpu) {
     DeviceInfo d;
     d.platform = platform, d.platform_version = platform_version, d.name = name, d.vendor = vendor, d.gpu = gpu;
@@ -38,7 +38,7 @@ TEST_CASE("default device: real GPUs, then PoCL, then the reference; never a sim
   DeviceInfo oclgrind = device("Oclgrind", "OpenCL 1.2 (Oclgrind 21.10)", "Oclgrind Simulator", "Oclgrind", true);
   DeviceInfo pocl = device("Portable Computing Language", "OpenCL 3.0 PoCL 3.1+debian", "pthread-skylake-avx512-AMD EPYC",
                            "AuthenticAMD", false);
-  DeviceInfo nvidia = device("NVIDIA CUDA", "OpenCL 3.0 CUDA 12.4.131", "NVIDIA H200", "NVIDIA Corporation", true);
+  DeviceInfo nvidia = device("NVIDIA CUDA", "OpenCL 3.0 CUDA", "NVIDIA H100 80GB HBM3", "NVIDIA Corporation", true);
   const DeviceInfo emulator = device("Intel(R) FPGA Emulation Platform for OpenCL(TM)", "OpenCL 1.2 Intel(R) FPGA SDK",
                                      "Intel(R) FPGA Emulation Device", "Intel(R) Corporation", false);
   CHECK(opencl::is_simulator(oclgrind));
