@@ -6,8 +6,9 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  # OpenCL: C headers, C++ bindings, ICD loader, the PoCL CPU device, clinfo for diagnosis
-  opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd clinfo
+  # OpenCL: C headers, C++ bindings, ICD loader, the PoCL CPU device, clinfo for diagnosis, and the
+  # Oclgrind simulator that checks the kernels (scripts/oclgrind-check.sh; it registers no ICD itself)
+  opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd clinfo oclgrind
   # geometry and maths
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libpolyclipping-dev
   # input: SVG (svgpp over libxml2), JSON, command line

@@ -43,6 +43,7 @@ struct DeviceInfo {
   std::string driver;            ///< driver version
   std::string version;           ///< device OpenCL version
   bool gpu = false;
+  bool simulator = false;  ///< simulates or emulates a device (Oclgrind): correct, but far too slow to pack on
   std::uint32_t compute_units = 0;
   std::uint64_t global_memory = 0;   ///< bytes
   std::uint64_t max_allocation = 0;  ///< bytes, largest single buffer
@@ -67,7 +68,8 @@ struct DeviceChoice {
   std::string reason;             ///< one line: which device and why
 };
 
-/// `request` empty: the default rule (first GPU, else PoCL, else the reference). "reference": the
+/// `request` empty: the default rule (first GPU, else PoCL, else the reference; never a simulator,
+/// which only a request by name chooses). "reference": the
 /// scalar reference. Anything else: the one device whose platform, device name or vendor contains
 /// `request` (case-insensitive). UsageError when nothing or more than one device matches.
 DeviceChoice choose_device(std::string_view request);

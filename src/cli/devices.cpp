@@ -19,7 +19,8 @@ int devices(const DevicesOptions& options) {
     }
     const KernelBuild build = try_build_kernels(d);
     std::cout << "  Device: " << d.name << "\n    vendor " << d.vendor << ", driver " << d.driver << ", " << d.version
-              << ", " << (d.gpu ? "GPU" : "not a GPU") << ", " << d.compute_units << " compute units, " << std::fixed
+              << ", " << (d.gpu ? "GPU" : "not a GPU") << (d.simulator ? " (a simulator: never the default)" : "")
+              << ", " << d.compute_units << " compute units, " << std::fixed
               << std::setprecision(1) << double(d.global_memory) / (1u << 30) << " GiB (largest buffer "
               << double(d.max_allocation) / (1u << 30) << " GiB)\n    kernels: "
               << (build.ok ? "build OK" : "FAIL to build") << "\n";

@@ -23,7 +23,8 @@ namespace animpak::test {
 /// may use either (automatic picks by device type, --grid-sort overrides).
 inline constexpr GridSort grid_sorts[] = {GridSort::host, GridSort::device};
 
-/// The OpenCL devices to test: the one ANIMPAK_TEST_DEVICE names, or every device present.
+/// The OpenCL devices to test: the one ANIMPAK_TEST_DEVICE names, or every device present but
+/// simulators (Oclgrind takes tens of minutes over the suite; scripts/oclgrind-check.sh names it).
 inline std::vector<DeviceChoice> devices_under_test() {
   std::vector<DeviceChoice> out;
   if (const char* wanted = std::getenv("ANIMPAK_TEST_DEVICE"); wanted != nullptr && *wanted != '\0') {
@@ -32,6 +33,7 @@ inline std::vector<DeviceChoice> devices_under_test() {
     return out;
   }
   for (const DeviceInfo& d : list_devices()) {
+    if (d.simulator) continue;
     DeviceChoice c;
     c.reference = false;
     c.device = d;

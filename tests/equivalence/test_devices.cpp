@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "animpak/error.hpp"
+#include "cl_host.hpp"
 #include "equivalence_support.hpp"
 #include "kernel_sources.hpp"
 
@@ -19,11 +20,44 @@ TEST_CASE("choose_device: reference by name, unknown names refused", "[opencl]")
   const DeviceChoice def = choose_device("");
   CHECK_FALSE(def.explicit_request);
   CHECK_FALSE(def.reason.empty());
-  // The default is a device exactly when one qualifies: a GPU, else PoCL.
+  // The default is a device exactly when one qualifies: a GPU, else PoCL, never a simulator.
   bool qualifies = false;
   for (const DeviceInfo& d : list_devices())
-    qualifies = qualifies || d.gpu || d.platform.find("Portable Computing Language") != std::string::npos;
+    qualifies = qualifies || (!d.simulator && (d.gpu || d.platform.find("Portable Computing Language") != std::string::npos));
   CHECK(def.reference == !qualifies);
+  CHECK_FALSE(def.device.simulator);
+}
+
+TEST_CASE("default device: real GPUs, then PoCL, then the reference; never a simulator", "[opencl]") {
+  // What the three implementations report (Oclgrind 21.10, PoCL 3.1, NVIDIA 580.159.04), and an emulator.
+  auto device = [](const char* platform, const char* platform_version, const char* name, const char* vendor, bool gpu) {
+    DeviceInfo d;
+    d.platform = platform, d.platform_version = platform_version, d.name = name, d.vendor = vendor, d.gpu = gpu;
+    return d;
+  };
+  DeviceInfo oclgrind = device("Oclgrind", "OpenCL 1.2 (Oclgrind 21.10)", "Oclgrind Simulator", "Oclgrind", true);
+  DeviceInfo pocl = device("Portable Computing Language", "OpenCL 3.0 PoCL 3.1+debian", "pthread-skylake-avx512-AMD EPYC",
+                           "AuthenticAMD", false);
+  DeviceInfo nvidia = device("NVIDIA CUDA", "OpenCL 3.0 CUDA", "NVIDIA H100 80GB HBM3", "NVIDIA Corporation", true);
+  const DeviceInfo emulator = device("Intel(R) FPGA Emulation Platform for OpenCL(TM)", "OpenCL 1.2 Intel(R) FPGA SDK",
+                                     "Intel(R) FPGA Emulation Device", "Intel(R) Corporation", false);
+  CHECK(opencl::is_simulator(oclgrind));
+  CHECK(opencl::is_simulator(emulator));
+  CHECK_FALSE(opencl::is_simulator(pocl));
+  CHECK_FALSE(opencl::is_simulator(nvidia));
+  for (DeviceInfo* d : {&oclgrind, &pocl, &nvidia}) d->simulator = opencl::is_simulator(*d);
+
+  // Oclgrind says it is a GPU and comes first in platform order: PoCL is still the default.
+  const DeviceChoice with_pocl = opencl::default_device({oclgrind, pocl});
+  CHECK_FALSE(with_pocl.reference);
+  CHECK(with_pocl.device.name == pocl.name);
+  CHECK(with_pocl.reason.find("Oclgrind Simulator skipped") != std::string::npos);
+  CHECK(opencl::default_device({oclgrind, pocl, nvidia}).device.name == nvidia.name);
+  const DeviceChoice alone = opencl::default_device({oclgrind});
+  CHECK(alone.reference);
+  CHECK(alone.reason.find("Oclgrind Simulator skipped") != std::string::npos);
+  CHECK(opencl::default_device({}).reference);
+  CHECK(opencl::default_device({pocl}).reason.find("skipped") == std::string::npos);
 }
 
 TEST_CASE("opencl_error_name: codes become their names", "[opencl]") {
@@ -74,6 +108,9 @@ TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and
                           "<kernel>:" + std::to_string(directive_line + 1) + ":8: note: here\nno location\n";
   CHECK(opencl::annotate_build_log(log, source) ==
         "temporal.cl:3:1: error: unknown type name 'this'\ntemporal.cl:1:8: note: here\nno location\n");
+  // Oclgrind's compiler names the program "input.cl" and counts lines in all of it, as NVIDIA's does.
+  CHECK(opencl::annotate_build_log("input.cl:" + std::to_string(third) + ":1: error: x\n", source) ==
+        "temporal.cl:3:1: error: x\n");
   // Compilers that honour #line already name the file; their logs pass through unchanged.
   CHECK(opencl::annotate_build_log("temporal.cl:5:1: error: x\n", source) == "temporal.cl:5:1: error: x\n");
 }

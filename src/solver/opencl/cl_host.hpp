@@ -29,6 +29,12 @@ struct FoundDevice {
 /// Every device of every platform; empty (not an error) when the ICD loader finds no platform.
 std::vector<FoundDevice> find_devices();
 
+/// Whether `d` simulates or emulates a device (Oclgrind, an FPGA emulator) by its names and vendor.
+bool is_simulator(const DeviceInfo& d);
+
+/// The default rule of choose_device("") over `devices`, in their order.
+DeviceChoice default_device(const std::vector<DeviceInfo>& devices);
+
 /// The cl::Device described by `info` (same platform and device name). OpenclError when gone.
 cl::Device device_for(const DeviceInfo& info);
 

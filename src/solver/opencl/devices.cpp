@@ -30,6 +30,40 @@ static bool is_pocl(const DeviceInfo& d) {
          lower(d.platform_version).find("pocl") != std::string::npos;
 }
 
+bool is_simulator(const DeviceInfo& d) {
+  // Oclgrind calls its device "Oclgrind Simulator"; Intel's FPGA platform says "Emulation".
+  const std::string words = lower(d.platform + " " + d.platform_version + " " + d.name + " " + d.vendor);
+  for (const char* word : {"oclgrind", "simulat", "emulat"})
+    if (words.find(word) != std::string::npos) return true;
+  return false;
+}
+
+DeviceChoice default_device(const std::vector<DeviceInfo>& devices) {
+  DeviceChoice choice;
+  if (devices.empty()) {
+    choice.reason = "reference: no OpenCL platform found (install an ICD such as pocl-opencl-icd for OpenCL)";
+    return choice;
+  }
+  // A simulator may call itself a GPU (Oclgrind does) yet runs kernels thousands of times slower: whoever
+  // installs one to check kernels must not get every pack run in it, so only --device chooses one.
+  std::string skipped;
+  for (const DeviceInfo& d : devices)
+    if (d.simulator) skipped += (skipped.empty() ? "" : ", ") + d.name;
+  const std::string aside = skipped.empty() ? "" : " (" + skipped + " skipped: a simulator, chosen only by --device)";
+  auto pick = [&](const DeviceInfo& d, const std::string& why) {
+    choice.reference = false;
+    choice.device = d;
+    choice.reason = d.name + " (" + d.platform + "): " + why + aside;
+    return choice;
+  };
+  for (const DeviceInfo& d : devices)
+    if (d.gpu && !d.simulator) return pick(d, "the first GPU");
+  for (const DeviceInfo& d : devices)
+    if (is_pocl(d) && !d.simulator) return pick(d, "no GPU found; PoCL's CPU device");
+  choice.reason = "reference: none of the " + std::to_string(devices.size()) + " OpenCL devices is a GPU or PoCL" + aside;
+  return choice;
+}
+
 std::vector<FoundDevice> find_devices() {
   std::vector<cl::Platform> platforms;
   const cl_int err = cl::Platform::get(&platforms);
@@ -61,6 +95,7 @@ std::vector<FoundDevice> find_devices() {
       for (std::string* s : {&info.name, &info.vendor, &info.driver, &info.version, &info.platform,
                              &info.platform_version})
         s->erase(std::find(s->begin(), s->end(), '\0'), s->end());
+      info.simulator = is_simulator(info);
       found.push_back({d, info});
     }
   }
@@ -107,24 +142,7 @@ DeviceChoice choose_device(std::string_view request) {
     return choice;
   }
   const std::vector<DeviceInfo> devices = list_devices();
-  if (request.empty()) {
-    if (devices.empty()) {
-      choice.reason = "reference: no OpenCL platform found (install an ICD such as pocl-opencl-icd for OpenCL)";
-      return choice;
-    }
-    auto pick = [&](const DeviceInfo& d, const std::string& why) {
-      choice.reference = false;
-      choice.device = d;
-      choice.reason = d.name + " (" + d.platform + "): " + why;
-      return choice;
-    };
-    for (const DeviceInfo& d : devices)
-      if (d.gpu) return pick(d, "the first GPU");
-    for (const DeviceInfo& d : devices)
-      if (opencl::is_pocl(d)) return pick(d, "no GPU found; PoCL's CPU device");
-    choice.reason = "reference: none of the " + std::to_string(devices.size()) + " OpenCL devices is a GPU or PoCL";
-    return choice;
-  }
+  if (request.empty()) return opencl::default_device(devices);
   const std::string wanted = opencl::lower(request);
   std::vector<DeviceInfo> matches;
   for (const DeviceInfo& d : devices) {

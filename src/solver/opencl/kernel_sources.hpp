@@ -18,8 +18,8 @@ std::string program_source();
 /// falls before the first file.
 std::string program_location(const std::string& source, int line);
 
-/// The build log with every "<kernel>:LINE" or "<source>:LINE" (compilers that ignore #line and count
-/// lines in the whole program, NVIDIA's among them) rewritten as "file.cl:N", so every driver's log
+/// The build log with every "<kernel>:LINE", "<source>:LINE" or "input.cl:LINE" (compilers that ignore
+/// #line and count lines in the whole program: NVIDIA's, Oclgrind's) rewritten as "file.cl:N", so every driver's log
 /// names the kernel file and the line in it.
 std::string annotate_build_log(const std::string& log, const std::string& source);
 

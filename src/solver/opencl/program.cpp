@@ -63,7 +63,7 @@ std::string program_location(const std::string& source, int line) {
 }
 
 std::string annotate_build_log(const std::string& log, const std::string& source) {
-  static const std::regex whole_program(R"(<(?:kernel|source)>:(\d+))");
+  static const std::regex whole_program(R"((?:<kernel>|<source>|\binput\.cl):(\d+))");
   std::string out;
   auto last = log.cbegin();
   for (std::sregex_iterator it(log.begin(), log.end(), whole_program), end; it != end; ++it) {
