@@ -28,7 +28,7 @@ TEST_CASE("choose_device: reference by name, unknown names refused", "[opencl]")
   CHECK_FALSE(def.device.simulator);
 }
 
-TEST_CASE("default device: real GPUs, then PoCL, then the reference; never a simulator", "[opencl]") {
+TEST_CASE("default device: real GPUs, then PoCL, then the reference, never a simulator", "[opencl]") {
   // What the three implementations report (Oclgrind 21.10, PoCL 3.1, NVIDIA 580.159.04), and an emulator.
   auto device = [](const char* platform, const char* platform_version, const char* name, const char* vendor, bool gpu) {
     DeviceInfo d;
