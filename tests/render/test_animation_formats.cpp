@@ -198,8 +198,10 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
                            "background:transparent}svg{display:block}</style></head><body>"
                         << svg << "<script>const svg = document.querySelector('svg'); svg.pauseAnimations(); "
                         << "svg.setCurrentTime(" << i / out.fps << ");</script></body></html>\n";
-    // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's.
+    // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's; a
+    // profile of its own keeps a Chromium already running (another test run) from taking the page over.
     const std::string command = "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+                                "--user-data-dir='" + (dir / "profile").string() + "' "
                                 "--default-background-color=00000000 --window-size=" +
                                 std::to_string(ours.width) + "," + std::to_string(ours.height) + " --screenshot='" +
                                 shot.string() + "' 'file://" + page.string() + "' >/dev/null 2>&1";
