@@ -2,7 +2,7 @@
 // frames after pack, bench --plot). Only this executable compiles this file and links animpak_render.
 #include <CLI/CLI.hpp>
 
-#include <iomanip>
+#include <cstdio>
 #include <iostream>
 
 #include "animpak/error.hpp"
@@ -38,9 +38,9 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   for (FrameFormat f : out.formats) {
     const std::string name = animation_file_name(f);
     if (name.empty()) continue;
-    std::cerr << "animpak: wrote " << (dir / name).string() << " (" << std::fixed << std::setprecision(1)
-              << std::filesystem::file_size(dir / name) / 1024.0 << " KiB, " << out.count << " frames)\n"
-              << std::defaultfloat;
+    char size[32];
+    std::snprintf(size, sizeof size, "%.1f KiB", std::filesystem::file_size(dir / name) / 1024.0);
+    std::cerr << "animpak: wrote " << (dir / name).string() << " (" << size << ", " << out.count << " frames)\n";
   }
   return quality;
 }
