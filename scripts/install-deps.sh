@@ -15,8 +15,9 @@ packages=(
   libsvgpp-dev libxml2-dev nlohmann-json3-dev libcli11-dev
   # output: vector rasterisation, image files, video
   libcairo2-dev libopenimageio-dev ffmpeg
-  # tests: Catch2 v2, the real-world SVG test bed, and rsvg-convert, the renderer `animpak check --png` is held to
-  catch2 openclipart-svg librsvg2-bin
+  # tests: Catch2 v2, the real-world SVG test bed, and rsvg-convert, the renderer `animpak check --png` is held to;
+  # rlottie and Chromium, the players the Lottie and animated SVG exports are held to
+  catch2 openclipart-svg librsvg2-bin librlottie-dev chromium
 )
 
 missing=()

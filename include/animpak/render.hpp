@@ -19,6 +19,15 @@ using ArtPoints = std::vector<std::vector<std::vector<Vec2>>>;
 
 /// An RGBA raster with a world-to-pixel mapping: `world` is fitted into the picture with a margin,
 /// keeping its aspect ratio; y points down in both.
+/// Where Picture puts a world box: pixel = world * scale + offset, the box centred with a margin and its
+/// aspect kept.
+struct PixelFit {
+  double scale = 1.0;
+  Vec2 offset;
+  Vec2 to_pixel(Vec2 world) const { return world * scale + offset; }
+};
+PixelFit fit_to_picture(int width, int height, Box world, double margin_px);
+
 class Picture {
  public:
   Picture(int width, int height, Box world, Rgba background = {1, 1, 1, 1}, double margin_px = 8.0);
@@ -89,6 +98,19 @@ struct FrameStyle {
   bool draw_container = true;      ///< the outline and holes, thin grey
 };
 
+/// One element's art at one frame time: replayed on its interpolated slice (element_at, replay_art), and
+/// the factor its stroke widths are drawn at (element_scale).
+struct ElementArt {
+  ArtPoints points;
+  double stroke_scale = 1.0;
+};
+
+/// Every element's art at frame time tf, in element order: the one geometry every frame writer (PNG,
+/// SVG frames, Lottie, animated SVG) and the frame metrics use.
+std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf);
+
+/// The picture of one frame's art, elements in order, then the container when the style asks for it.
+Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style);
 /// One frame: every element's art replayed on its interpolated slice, in element order.
 Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style);
 
@@ -168,6 +190,8 @@ Region container_region(const Container& container);
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
 /// draw it (element_at, replay_art, element_scale), measured with measure_regions.
 FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
+/// The same for art frame_art has replayed at tf.
+FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf);
 
 /// The middle of every slice interval, t = (s + 0.5) / (n_s − 1) for s = 0 … n_s − 2: the times
 /// farthest from any slice, where interpolated elements can overlap unseen by the slices (paper §6).
@@ -179,7 +203,12 @@ struct PackingQuality {
   std::vector<FrameMetrics> between_slices;
 };
 
-enum class FrameFormat { png, gif, mp4, svg };
+/// lottie: animation.json, a Lottie (Bodymovin) document; svg_anim: animation.svg, paths animated with SMIL
+/// (docs/animation-formats.md).
+enum class FrameFormat { png, gif, mp4, svg, lottie, svg_anim };
+
+/// How the animated vector formats move a path between two frames.
+enum class Interpolation { linear, hold };
 
 struct FrameOutput {
   std::filesystem::path dir;
@@ -187,10 +216,16 @@ struct FrameOutput {
   double fps = 25.0;
   std::vector<FrameFormat> formats{FrameFormat::png, FrameFormat::gif};
   FrameStyle style;
+  int precision = 2;  ///< decimals of a pixel (of a `style.size` picture) kept in Lottie and animated SVG coordinates
+  Interpolation interpolation = Interpolation::linear;
 };
 
+/// The file name of an animated format (animation.json, animation.svg), empty for the others.
+std::string animation_file_name(FrameFormat format);
+
 /// Writes `count` frames one at a time (never all in memory): frames/frame_NNNN.png (and .svg), then
-/// animation.gif / animation.mp4 through ffmpeg. Returns the metrics of every frame and of every time
+/// animation.gif / animation.mp4 through ffmpeg, and animation.json / animation.svg assembled from a
+/// scratch file of the frames' coordinates. Returns the metrics of every frame and of every time
 /// between slices.
 PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out);
 

@@ -41,6 +41,8 @@ struct FrameOptions {
   double fps = 25.0;
   std::vector<std::string> formats{"png", "gif"};
   bool draw_container = true;
+  int precision = 2;                      ///< lottie, svg-anim: decimals of a pixel
+  std::string interpolation = "linear";  ///< lottie, svg-anim: linear or hold
 };
 
 struct PackOptions {

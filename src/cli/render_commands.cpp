@@ -2,6 +2,7 @@
 // frames after pack, bench --plot). Only this executable compiles this file and links animpak_render.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 
 #include "animpak/error.hpp"
@@ -16,7 +17,9 @@ FrameFormat parse_format(const std::string& name) {
   if (name == "gif") return FrameFormat::gif;
   if (name == "mp4") return FrameFormat::mp4;
   if (name == "svg") return FrameFormat::svg;
-  throw UsageError("--format " + name + ": expected png, gif, mp4 or svg");
+  if (name == "lottie") return FrameFormat::lottie;
+  if (name == "svg-anim") return FrameFormat::svg_anim;
+  throw UsageError("--format " + name + ": expected png, gif, mp4, svg, lottie or svg-anim");
 }
 
 /// Writes the frames in the requested formats into `dir` and returns their quality.
@@ -28,17 +31,33 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   out.style.size = options.size;
   out.style.draw_container = options.draw_container;
   out.formats.clear();
+  out.precision = options.precision;
+  out.interpolation = options.interpolation == "hold" ? Interpolation::hold : Interpolation::linear;
   for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
-  return write_frames(world, world.state, out);
+  PackingQuality quality = write_frames(world, world.state, out);
+  for (FrameFormat f : out.formats) {
+    const std::string name = animation_file_name(f);
+    if (name.empty()) continue;
+    char size[32];
+    std::snprintf(size, sizeof size, "%.1f KiB", std::filesystem::file_size(dir / name) / 1024.0);
+    std::cerr << "animpak: wrote " << (dir / name).string() << " (" << size << ", " << out.count << " frames)\n";
+  }
+  return quality;
 }
 
 void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
   cmd.add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
-  cmd.add_option("--fps", f.fps, "frames per second of GIF and MP4")->check(CLI::Range(1.0, 240.0));
-  cmd.add_option("--format", f.formats, "png, gif, mp4, svg (several allowed)")
+  cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")->check(CLI::Range(1.0, 240.0));
+  cmd.add_option("--format", f.formats,
+                 "png, gif, mp4, svg (frames), lottie (animation.json), svg-anim (animation.svg); several allowed")
       ->delimiter(',')
-      ->check(CLI::IsMember({"png", "gif", "mp4", "svg"}));
+      ->check(CLI::IsMember({"png", "gif", "mp4", "svg", "lottie", "svg-anim"}));
+  cmd.add_option("--precision", f.precision,
+                 "decimals of a pixel kept in lottie and svg-anim coordinates (of a --size picture)")
+      ->check(CLI::Range(0, 6));
+  cmd.add_option("--interpolation", f.interpolation, "how lottie and svg-anim move between frames: linear or hold")
+      ->check(CLI::IsMember({"linear", "hold"}));
   cmd.add_flag("!--no-container", f.draw_container, "do not draw the container outline");
 }
 

@@ -40,22 +40,33 @@ int raster_width(const Box& box, int height) {
   return std::max(1, static_cast<int>(std::lround(height * box.width() / std::max(box.height(), 1e-9))));
 }
 
-Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style) {
+std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf) {
+  std::vector<ElementArt> art(world.elements.size());
+  for (std::size_t i = 0; i < world.elements.size(); ++i) {
+    const SpacetimeElement& lib = world.library[world.elements[i].library];
+    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
+    art[i] = {replay_art(lib.binding, lib.slice, positions), element_scale(world, int(i), positions)};
+  }
+  return art;
+}
+
+Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style) {
   const Box box = world.container.bounds();
   const int height = style.size;
   const int width = raster_width(box, height);
   Picture pic(width, height, box, style.background, 0.02 * style.size);
-  for (std::size_t i = 0; i < world.elements.size(); ++i) {
-    const SpacetimeElement& lib = world.library[world.elements[i].library];
-    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
-    pic.draw_art(lib.art.art, replay_art(lib.binding, lib.slice, positions), 1.0, element_scale(world, int(i), positions));
-  }
+  for (std::size_t i = 0; i < world.elements.size(); ++i)
+    pic.draw_art(world.library[world.elements[i].library].art.art, art[i].points, 1.0, art[i].stroke_scale);
   if (style.draw_container) {
     const double w = std::max(1.0, style.size / 400.0);
     pic.draw_ring(world.container.outline, {0.55, 0.55, 0.55, 1}, w);
     for (const auto& hole : world.container.holes) pic.draw_ring(hole, {0.55, 0.55, 0.55, 1}, w);
   }
   return pic;
+}
+
+Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style) {
+  return draw_frame(world, frame_art(world, state, tf), style);
 }
 
 }  // namespace animpak

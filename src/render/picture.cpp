@@ -37,12 +37,19 @@ Picture::Picture(int width, int height, Box world, Rgba background, double margi
   cairo_set_source_rgba(impl_->cr, background.r, background.g, background.b, background.a);
   cairo_paint(impl_->cr);
 
+  const PixelFit fit = fit_to_picture(width, height, world, margin_px);
+  impl_->scale = fit.scale;
+  impl_->offset = fit.offset;
+}
+
+PixelFit fit_to_picture(int width, int height, Box world, double margin_px) {
   if (world.empty()) world.add({0, 0}), world.add({1, 1});
   const double w = std::max(world.width(), 1e-12), h = std::max(world.height(), 1e-12);
   const double usable_w = std::max(1.0, width - 2 * margin_px), usable_h = std::max(1.0, height - 2 * margin_px);
-  impl_->scale = std::min(usable_w / w, usable_h / h);
-  impl_->offset = {0.5 * (width - impl_->scale * (world.min.x + world.max.x)),
-                   0.5 * (height - impl_->scale * (world.min.y + world.max.y))};
+  PixelFit fit;
+  fit.scale = std::min(usable_w / w, usable_h / h);
+  fit.offset = {0.5 * (width - fit.scale * (world.min.x + world.max.x)), 0.5 * (height - fit.scale * (world.min.y + world.max.y))};
+  return fit;
 }
 
 Picture::~Picture() = default;

@@ -3,20 +3,16 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
+#include "frame_writers.hpp"
 
 namespace animpak {
-namespace {
-
-std::string frame_name(int i, const char* ext) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d.%s", i, ext);
-  return name;
-}
+namespace frame_writers {
 
 std::string hex(Rgba c) {
   char s[8];
@@ -55,6 +51,19 @@ std::vector<std::string> element_ids(const World& world) {
   return ids;
 }
 
+}  // namespace frame_writers
+
+namespace {
+
+using frame_writers::hex;
+using frame_writers::xml_escaped;
+
+std::string frame_name(int i, const char* ext) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.%s", i, ext);
+  return name;
+}
+
 // The path data of polylines mapped by `to`: "M x y L x y … Z".
 template <class Map>
 void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& polylines, const std::vector<bool>& closed,
@@ -71,7 +80,7 @@ void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& po
 // One SVG frame in the container art's coordinates, so that it lays over the container's own art: the
 // container (outline and holes, even–odd) first, then one group per element, id its name, holding its
 // paths in drawing order with their paint. Strokes have round joins and caps as draw_art paints them.
-void write_svg(const World& world, const SimState& state, double tf, const FrameStyle& style,
+void write_svg(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style,
                const std::vector<std::string>& ids, const std::filesystem::path& file) {
   std::ofstream out(file);
   if (!out) throw InputError(file.string() + ": cannot write; check that the folder is writable");
@@ -102,9 +111,8 @@ void write_svg(const World& world, const SimState& state, double tf, const Frame
 
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
     const SpacetimeElement& lib = world.library[world.elements[i].library];
-    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
-    const double stroke_scale = element_scale(world, int(i), positions) * art_per_unit;
-    const ArtPoints points = replay_art(lib.binding, lib.slice, positions);
+    const double stroke_scale = art[i].stroke_scale * art_per_unit;
+    const ArtPoints& points = art[i].points;
     out << "<g id=\"" << xml_escaped(ids[i]) << "\">\n";
     for (std::size_t p = 0; p < lib.art.art.paths.size(); ++p) {
       const ArtPath& path = lib.art.art.paths[p];
@@ -149,19 +157,37 @@ std::string quoted(const std::filesystem::path& p) {
 
 }  // namespace
 
+std::string animation_file_name(FrameFormat format) {
+  switch (format) {
+    case FrameFormat::lottie: return "animation.json";
+    case FrameFormat::svg_anim: return "animation.svg";
+    default: return "";
+  }
+}
+
 PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out) {
   auto wants = [&](FrameFormat f) { return std::find(out.formats.begin(), out.formats.end(), f) != out.formats.end(); };
   const std::filesystem::path frames = out.dir / "frames";
   std::filesystem::create_directories(frames);
   const bool raster = wants(FrameFormat::png) || wants(FrameFormat::gif) || wants(FrameFormat::mp4);
-  const std::vector<std::string> ids = element_ids(world);
+  const std::vector<std::string> ids = frame_writers::element_ids(world);
+  std::optional<frame_writers::GeometryLog> log;
+  if (wants(FrameFormat::lottie) || wants(FrameFormat::svg_anim)) log.emplace(world, out.dir / "animation.geometry.tmp");
   PackingQuality quality;
   const std::vector<double> times = frame_times(out.count, world.loop);
   for (int i = 0; i < out.count; ++i) {
-    if (raster) draw_frame(world, state, times[i], out.style).write(frames / frame_name(i, "png"));
-    if (wants(FrameFormat::svg)) write_svg(world, state, times[i], out.style, ids, frames / frame_name(i, "svg"));
-    quality.frames.push_back(measure_frame(world, state, times[i]));
+    // One replay per frame, drawn, written and measured by every format alike.
+    const std::vector<ElementArt> art = frame_art(world, state, times[i]);
+    if (raster) draw_frame(world, art, out.style).write(frames / frame_name(i, "png"));
+    if (wants(FrameFormat::svg)) write_svg(world, art, out.style, ids, frames / frame_name(i, "svg"));
+    if (log) log->append(art, i);
+    quality.frames.push_back(measure_frame(world, art, times[i]));
   }
+  if (wants(FrameFormat::lottie))
+    frame_writers::write_lottie(world, *log, out, ids, out.dir / animation_file_name(FrameFormat::lottie));
+  if (wants(FrameFormat::svg_anim))
+    frame_writers::write_svg_animation(world, *log, out, ids, out.dir / animation_file_name(FrameFormat::svg_anim));
+  log.reset();
   for (double t : between_slice_times(world.params.slices)) quality.between_slices.push_back(measure_frame(world, state, t));
   std::ostringstream rate;
   rate << out.fps;

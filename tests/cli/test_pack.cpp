@@ -9,6 +9,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <regex>
 
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
@@ -198,4 +199,39 @@ TEST_CASE("animpak render: a packed folder moved together with its scene still r
   CHECK(r.code == 0);
   CHECK(fs::exists(moved / "out" / "frames" / "frame_0000.png"));
   CHECK_THAT(r.out, Contains("quality: ") && Contains("between slices: "));
+}
+
+TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and animation.svg with their sizes printed, no PNG") {
+  const Sandbox box("animated");
+  const CommandResult packed = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
+                                           " --max-iterations 10 --frames 4 --size 48 --format lottie,svg-anim");
+  INFO(packed.err);
+  REQUIRE(packed.code == 0);
+  const fs::path out = box.path("out");
+  for (const char* name : {"animation.json", "animation.svg"}) {
+    INFO(name);
+    REQUIRE(fs::is_regular_file(out / name));
+    CHECK_THAT(packed.err, Contains((out / name).string() + " (") && Contains("KiB, 4 frames)"));
+  }
+  CHECK(fs::is_empty(out / "frames"));
+  CHECK_FALSE(fs::exists(out / "animation.geometry.tmp"));  // the scratch file is gone
+  const nlohmann::json lottie = nlohmann::json::parse(read_text(out / "animation.json"));
+  CHECK(lottie["op"] == 4);
+  CHECK(lottie["h"] == 48);
+
+  // render again: held keys, whole pixels.
+  const CommandResult rendered =
+      run_animpak("render " + out.string() + " --frames 3 --size 48 --format lottie --interpolation hold --precision 0");
+  INFO(rendered.err);
+  REQUIRE(rendered.code == 0);
+  const std::string text = read_text(out / "animation.json");
+  CHECK_THAT(text, Contains("\"h\":1"));
+  // Every point ([x,y]; colours have four numbers) in whole pixels.
+  const std::regex point("\\[-?[0-9.]+,-?[0-9.]+\\]");
+  std::size_t points = 0, fractional = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), point); it != std::sregex_iterator(); ++it)
+    ++points, fractional += it->str().find('.') != std::string::npos;
+  CHECK(points > 0);
+  CHECK(fractional == 0);
+  CHECK(run_animpak("render " + out.string() + " --format lottie --interpolation smooth").code != 0);
 }

@@ -26,6 +26,16 @@ Image read_rgba(const std::filesystem::path& file) {
   return img;
 }
 
+double alpha_iou(const Image& a, const Image& b) {
+  std::size_t both = 0, either = 0;
+  for (std::size_t i = 3; i < a.rgba.size() && i < b.rgba.size(); i += 4) {
+    const bool x = a.rgba[i] >= 128, y = b.rgba[i] >= 128;
+    both += (x && y) || ((x || y) && std::abs(a.rgba[i] - b.rgba[i]) <= kEdgeNoise);
+    either += x || y;
+  }
+  return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+}
+
 namespace {
 
 void write_rgba(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {

@@ -28,6 +28,16 @@ struct Image {
   std::vector<unsigned char> rgba;
 };
 
+/// Two rasterisers place an edge a little apart (each flattens curves its own way, cairo to 0.1 px by
+/// default, and antialiases on its own grid), so a pixel on a thin line's edge may be 0.55 opaque in one
+/// picture and 0.45 in the other. Such a pixel says nothing about the drawing: alpha_iou counts it against
+/// the match only when its two alphas are also more than this (0.1 of opaque) apart.
+inline constexpr int kEdgeNoise = 26;
+
+/// Intersection over union of two same-size pictures' alpha masks: alpha ≥ 0.5 in both (or in one, the
+/// other within kEdgeNoise of it), over alpha ≥ 0.5 in either; 1 when both are empty.
+double alpha_iou(const Image& a, const Image& b);
+
 /// Reads a PNG (RGBA or RGB) as 8-bit RGBA; an empty image when the file is missing or unreadable.
 Image read_rgba(const std::filesystem::path& file);
 

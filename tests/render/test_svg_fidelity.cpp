@@ -28,11 +28,6 @@ namespace {
 // viewport or fill rule moves many pixels.
 constexpr int kSize = 128;
 constexpr double kMinIou = 0.97;
-// Two rasterisers place an edge a little apart (each flattens curves its own way, cairo to 0.1 px by
-// default, and antialiases on its own grid), so a pixel on a thin line's edge may be 0.55 opaque in one
-// picture and 0.45 in the other. Such a pixel says nothing about the import: it counts against the match
-// only when its two alphas are also more than this (0.1 of opaque) apart.
-constexpr int kEdgeNoise = 26;
 // Every 43rd file of the sorted collection: all categories, without reading all 8000 files.
 constexpr std::size_t kStride = 43;
 
@@ -76,17 +71,6 @@ struct Outcome {
   std::string skipped;  // why not, when not compared
   double iou = 0.0;
 };
-
-// Alpha ≥ 0.5 in both pictures (or in one, the other within kEdgeNoise of it), over alpha ≥ 0.5 in either.
-double alpha_iou(const Image& a, const Image& b) {
-  std::size_t both = 0, either = 0;
-  for (std::size_t i = 3; i < a.rgba.size(); i += 4) {
-    const bool x = a.rgba[i] >= 128, y = b.rgba[i] >= 128;
-    both += (x && y) || ((x || y) && std::abs(a.rgba[i] - b.rgba[i]) <= kEdgeNoise);
-    either += x || y;
-  }
-  return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
-}
 
 Outcome compare_with_rsvg(const fs::path& svg, const fs::path& dir) {
   Outcome outcome;
