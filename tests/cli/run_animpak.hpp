@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include "temp_dir.hpp"
+
 struct CommandResult {
   int code = -1;
   std::string out, err;
@@ -25,11 +27,9 @@ inline std::string read_text(const std::filesystem::path& file) {
 /// `environment`, e.g. "ANIMPAK_KERNEL_DIR=/tmp/k", is put before it, for this command only.
 inline CommandResult run_executable(const std::string& executable, const std::string& args,
                                     const std::string& environment = {}) {
-  static int counter = 0;
-  const auto dir = std::filesystem::temp_directory_path() / ("animpak-cli-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto out = dir / ("out" + std::to_string(counter) + ".txt");
-  const auto err = dir / ("err" + std::to_string(counter++) + ".txt");
+  // The captured output lives only as long as this call.
+  const animpak::test::TempDir dir("animpak-cli-");
+  const auto out = dir / "out.txt", err = dir / "err.txt";
   const std::string command = environment + " " + executable + " " + args + " </dev/null >" + out.string() + " 2>" + err.string();
   const int status = std::system(command.c_str());
   CommandResult r;

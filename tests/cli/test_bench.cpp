@@ -3,14 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include "run_animpak.hpp"
+#include "temp_dir.hpp"
 
 namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("animpak-bench-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
 
 std::string examples() { return std::string(ANIMPAK_SOURCE_DIR) + "/examples"; }
 
@@ -18,9 +13,8 @@ std::string examples() { return std::string(ANIMPAK_SOURCE_DIR) + "/examples"; }
 
 // Only the shape of the results is checked: wall times differ from machine to machine.
 TEST_CASE("animpak bench: JSON rows for every world, with phases, a fit and a written plot") {
-  const auto json_file = scratch("bench.json"), plot = scratch("bench.png");
-  std::filesystem::remove(json_file);
-  std::filesystem::remove(plot);
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const auto json_file = scratch / "bench.json", plot = scratch / "bench.png";
   const CommandResult r = run_animpak("bench --sizes 2000,4000 --steps 2 --warmup 1 --examples " + examples() +
                                       " --json " + json_file.string() + " --plot " + plot.string());
   INFO(r.err);
@@ -64,8 +58,8 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
     WARN("no OpenCL device: bench --grid-sort both not tested");
     return;
   }
-  const auto json_file = scratch("bench-sorts.json");
-  std::filesystem::remove(json_file);
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const auto json_file = scratch / "bench-sorts.json";
   const CommandResult r = run_animpak("bench --device pocl --grid-sort both --sizes 2000 --steps 2 --warmup 1 "
                                       "--no-example-scenes --examples " + examples() + " --json " + json_file.string());
   INFO(r.err);
@@ -84,5 +78,5 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
 
   CHECK(run_animpak("bench --grid-sort sideways --sizes 2000").code == 1);
   CHECK(run_animpak("pack --grid-sort sideways " + examples() + "/default/scene.json --out " +
-                    scratch("never").string()).code == 1);
+                    (scratch / "never").string()).code == 1);
 }

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "run_animpak.hpp"
+#include "temp_dir.hpp"
 
 TEST_CASE("animpak: --help for the program and every command exits 0 and describes it") {
   for (const std::string args : {"--help", "inspect --help", "devices --help"}) {
@@ -55,15 +56,14 @@ TEST_CASE("animpak inspect --json: counts follow the extrusion formulas") {
 }
 
 TEST_CASE("animpak inspect --out: writes the slice, art and strip pictures of every element") {
-  const auto dir = std::filesystem::temp_directory_path() / ("animpak-inspect-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const animpak::test::TempDir scratch("animpak-inspect-");
+  const auto dir = scratch / "out";
   const CommandResult r = run_animpak("inspect " + shapes_dir() + "/snake.path --slices 4 --size 64 --out " + dir.string());
   REQUIRE(r.code == 0);
   for (const char* suffix : {"-slice.png", "-art.png", "-strip.png"}) {
     INFO(suffix);
     CHECK(std::filesystem::file_size(dir / (std::string("snake") + suffix)) > 100);
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("animpak inspect: the default example scene builds every library element") {
@@ -88,9 +88,9 @@ TEST_CASE("animpak devices: lists each device with its build result and the defa
 
 TEST_CASE("animpak pack --device: a name no device has is a usage error naming it") {
   const auto scene = std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/scene.json";
-  const auto out = std::filesystem::temp_directory_path() / ("animpak-cli-device-" + std::to_string(::getpid()));
-  const CommandResult r = run_animpak("pack " + scene + " --out " + out.string() + " --device no-such-device --no-render");
-  std::filesystem::remove_all(out);
+  const animpak::test::TempDir scratch("animpak-cli-device-");
+  const CommandResult r =
+      run_animpak("pack " + scene + " --out " + (scratch / "out").string() + " --device no-such-device --no-render");
   CHECK(r.code == 1);
   CHECK(r.err.find("no-such-device") != std::string::npos);
 }

@@ -3,8 +3,6 @@
 // and a rendered pack writes exactly the frames and statistics it promises.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -13,6 +11,7 @@
 
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;
@@ -23,17 +22,14 @@ namespace {
 class Sandbox {
  public:
   explicit Sandbox(const std::string& name, const std::string& scene = animpak::test::star_scene(3, 5, 2))
-      : dir_(fs::temp_directory_path() / ("animpak-pack-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+      : dir_("animpak-pack-" + name + "-") {
     std::ofstream(dir_ / "scene.json") << scene;
   }
-  ~Sandbox() { fs::remove_all(dir_); }
   std::string scene() const { return (dir_ / "scene.json").string(); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
  private:
-  fs::path dir_;
+  animpak::test::TempDir dir_;
 };
 
 std::string bytes_of(const fs::path& file) {

@@ -3,14 +3,13 @@
 // that folder afterwards as if it had packed it itself.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include <fstream>
 
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;
@@ -37,9 +36,8 @@ TEST_CASE("animpak-solve: inspect, render and bench --plot are usage errors that
 }
 
 TEST_CASE("animpak-solve pack, then animpak render: state and statistics here, frames there") {
-  const fs::path dir = fs::temp_directory_path() / ("animpak-solve-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const animpak::test::TempDir scratch("animpak-solve-");
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "scene.json") << animpak::test::star_scene(3, 5, 2);
   const std::string out = (dir / "out").string();
 
@@ -64,5 +62,4 @@ TEST_CASE("animpak-solve pack, then animpak render: state and statistics here, f
   CHECK(fs::exists(dir / "out" / "frames" / "frame_0000.png"));
   CHECK(fs::exists(dir / "out" / "frames" / "frame_0001.png"));
   CHECK_FALSE(fs::exists(dir / "out" / "frames" / "frame_0002.png"));
-  fs::remove_all(dir);
 }

@@ -3,8 +3,6 @@
 // with exit code 4, and wrong requests get their usage and input codes.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -13,6 +11,7 @@
 #include "animpak/opencl.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using Catch::Matchers::Contains;
@@ -22,16 +21,14 @@ namespace {
 // Three stars, six slices and a coarse grid: a few hundred vertices, quick even under the sanitizers.
 class Scene {
  public:
-  Scene() : dir_(fs::temp_directory_path() / ("animpak-validate-" + std::to_string(::getpid()))) {
-    fs::create_directories(dir_);
+  Scene() : dir_("animpak-validate-") {
     std::ofstream(dir_ / "scene.json") << animpak::test::star_scene(3, 6, 1, {"", R"("cell_size": 0.1)"});
   }
-  ~Scene() { fs::remove_all(dir_); }
   std::string file() const { return (dir_ / "scene.json").string(); }
-  fs::path dir() const { return dir_; }
+  fs::path dir() const { return dir_.path(); }
 
  private:
-  fs::path dir_;
+  animpak::test::TempDir dir_;
 };
 
 bool have_pocl() {

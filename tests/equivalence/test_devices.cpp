@@ -9,6 +9,7 @@
 #include "cl_host.hpp"
 #include "equivalence_support.hpp"
 #include "kernel_sources.hpp"
+#include "temp_dir.hpp"
 
 namespace animpak::test {
 
@@ -78,8 +79,8 @@ TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its l
     CHECK(ok.ok);
   }
   // A copy of the kernels with one syntax error, loaded through ANIMPAK_KERNEL_DIR.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("animpak-broken-kernels-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const TempDir temp("animpak-broken-kernels-");
+  const std::filesystem::path& dir = temp.path();
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ANIMPAK_SOURCE_DIR) / "kernels"))
     std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
                                std::filesystem::copy_options::overwrite_existing);
@@ -87,7 +88,6 @@ TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its l
   ::setenv("ANIMPAK_KERNEL_DIR", dir.c_str(), 1);
   const KernelBuild broken = try_build_kernels(devices.front().device);
   ::unsetenv("ANIMPAK_KERNEL_DIR");
-  std::filesystem::remove_all(dir);
   CHECK_FALSE(broken.ok);
   INFO(broken.log);
   CHECK(broken.log.find("temporal.cl") != std::string::npos);

@@ -5,10 +5,9 @@
 #include <iterator>
 #include <string>
 
-#include <unistd.h>
-
 #include "animpak/error.hpp"
 #include "animpak/scene_spec.hpp"
+#include "temp_dir.hpp"
 
 using namespace animpak;
 using Catch::Matchers::Contains;
@@ -137,7 +136,8 @@ TEST_CASE("parse_scene: fixed and constant-field orientations, count fill") {
 }
 
 TEST_CASE("load_scene: relative art resolves against the scene file's folder") {
-  const auto dir = std::filesystem::temp_directory_path() / ("animpak-scene-" + std::to_string(::getpid()));
+  const test::TempDir temp("animpak-scene-");
+  const auto& dir = temp.path();
   std::filesystem::create_directories(dir / "art");
   std::filesystem::copy_file(kShapes / "bird.path", dir / "art" / "bird.path",
                              std::filesystem::copy_options::overwrite_existing);
@@ -145,7 +145,6 @@ TEST_CASE("load_scene: relative art resolves against the scene file's folder") {
   const SceneSpec s = load_scene(dir / "scene.json");
   CHECK(s.elements[0].art == dir / "art" / "bird.path");
   CHECK(s.file == dir / "scene.json");
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("load_scene: a missing scene file") {

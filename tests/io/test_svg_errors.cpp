@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "io/svg_helpers.hpp"
+#include "temp_dir.hpp"
 
 using namespace svg_test;
 
@@ -92,8 +93,8 @@ TEST_CASE("svg: malformed input is an InputError naming file and element", "[svg
 }
 
 TEST_CASE("svg: files are read with a size limit, load_art dispatches by extension", "[svg]") {
-  const auto dir = std::filesystem::temp_directory_path() / "animpak_test_svg";
-  std::filesystem::create_directories(dir);
+  const animpak::test::TempDir temp("animpak-svg-");
+  const auto& dir = temp.path();
   const auto file = dir / "tri.SVG";
   std::ofstream(file) << doc(R"~(<path d="M0 0 L1 0 L1 1 Z"/>)~");
   CHECK(animpak::load_art(file).paths.size() == 1);
@@ -103,5 +104,4 @@ TEST_CASE("svg: files are read with a size limit, load_art dispatches by extensi
   CHECK_THROWS_WITH(animpak::load_svg(dir / "missing.svg"), Catch::Contains("missing.svg"));
   CHECK_THROWS_WITH(animpak::load_art(dir / "art.png"), Catch::Contains("art.png") && Catch::Contains(".svg") &&
                                                             Catch::Contains(".path"));
-  std::filesystem::remove_all(dir);
 }

@@ -4,8 +4,6 @@
 // schema check; every path keeps its layout from frame to frame or the export refuses it.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
@@ -18,6 +16,7 @@
 #include "frame_writers.hpp"
 #include "golden.hpp"
 #include "lottie_schema.hpp"
+#include "temp_dir.hpp"
 #include "tiny_world.hpp"
 #ifdef ANIMPAK_HAVE_RLOTTIE
 #include "players/rlottie_frame.hpp"
@@ -31,12 +30,6 @@ namespace {
 
 constexpr double kMinIou = 0.97;
 constexpr int kFrames = 6;
-
-fs::path fresh_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("animpak-animation-" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  return dir;
-}
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);
@@ -73,7 +66,8 @@ bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1")
 
 TEST_CASE("lottie: animation.json passes the schema check, one layer per element named by its id, N + 1 keys per path ending on frame 0") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("lottie");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "lottie";
   FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::lottie});
   out.style.draw_container = true;
   write_frames(world, world.state, out);
@@ -106,7 +100,8 @@ TEST_CASE("lottie: animation.json passes the schema check, one layer per element
 
 TEST_CASE("lottie: --interpolation hold writes hold keys, linear ones ease linearly") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("lottie-hold");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "lottie-hold";
   FrameOutput out = animated_output(dir, {FrameFormat::lottie});
   out.interpolation = Interpolation::hold;
   write_frames(world, world.state, out);
@@ -126,7 +121,8 @@ TEST_CASE("lottie: --interpolation hold writes hold keys, linear ones ease linea
 
 TEST_CASE("lottie schema check: broken documents fail, each error naming its JSON path") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("lottie-broken");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "lottie-broken";
   write_frames(world, world.state, animated_output(dir, {FrameFormat::lottie}));
   const nlohmann::json good = nlohmann::json::parse(text_of(dir / "animation.json"));
   REQUIRE(lottie_schema::errors(good).empty());
@@ -164,7 +160,8 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
   WARN("skipped: rlottie is absent (Debian package librlottie-dev); nothing was compared");
 #else
   const World world = big_star_world();
-  const auto dir = fresh_dir("rlottie");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "rlottie";
   write_frames(world, world.state, animated_output(dir, {FrameFormat::png, FrameFormat::lottie}));
   REQUIRE(rlottie_frame_count(dir / "animation.json") == std::size_t(kFrames));
   for (int i : {0, kFrames / 3, 2 * kFrames / 3}) {
@@ -186,7 +183,8 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
     return;
   }
   const World world = big_star_world();
-  const auto dir = fresh_dir("chromium");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "chromium";
   const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
   write_frames(world, world.state, out);
   const std::string svg = text_of(dir / "animation.svg");
@@ -217,7 +215,8 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
 
 TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over N + 1 values ending on frame 0, one cycle N / fps long") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("svg-anim");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "svg-anim";
   FrameOutput out = animated_output(dir, {FrameFormat::svg, FrameFormat::svg_anim});
   write_frames(world, world.state, out);
   const std::string svg = text_of(dir / "animation.svg"), frame0 = text_of(dir / "frames" / "frame_0000.svg");
@@ -252,7 +251,8 @@ TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over N + 1 va
 
 TEST_CASE("animated formats: --precision sets the decimals of a pixel kept") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("precision");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "precision";
   FrameOutput out = animated_output(dir, {FrameFormat::lottie});
   // The most decimals of any point, [x,y] (colours have four numbers, widths one).
   auto longest_decimals = [&] {
@@ -275,7 +275,8 @@ TEST_CASE("animated formats: --precision sets the decimals of a pixel kept") {
 
 TEST_CASE("animated formats: a frame whose replayed art lost a path, polyline or point is refused, naming element and frame") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("layout");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "layout";
   fs::create_directories(dir);
   const std::vector<ElementArt> good = frame_art(world, world.state, 0.0);
   auto append_twice = [&](const std::vector<ElementArt>& second) {
@@ -300,7 +301,8 @@ TEST_CASE("animated formats: a frame whose replayed art lost a path, polyline or
 
 TEST_CASE("animated formats: the scratch file gives back every frame's coordinates and stroke scale") {
   const World world = big_star_world();
-  const auto dir = fresh_dir("scratch");
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "scratch";
   fs::create_directories(dir);
   frame_writers::GeometryLog log(world, dir / "scratch");
   std::vector<std::vector<ElementArt>> frames;

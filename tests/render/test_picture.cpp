@@ -6,6 +6,7 @@
 
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
+#include "temp_dir.hpp"
 
 using namespace animpak;
 
@@ -87,7 +88,8 @@ TEST_CASE("Picture: write produces a PNG that reads back pixel for pixel") {
   const ArtShape art = square_art({true, {0.2, 0.6, 0.4, 1}}, {true, {0, 0, 0, 1}}, 0.02, PaintOrder::fill_then_stroke);
   Picture pic(64, 48, unit_box());
   pic.draw_art(art, own_points(art));
-  const auto file = std::filesystem::temp_directory_path() / "animpak-test-picture.png";
+  const test::TempDir temp("animpak-picture-");
+  const auto file = temp / "picture.png";
   pic.write(file);
   auto in = OIIO::ImageInput::open(file.string());
   REQUIRE(in);
@@ -99,7 +101,6 @@ TEST_CASE("Picture: write produces a PNG that reads back pixel for pixel") {
   REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, back.data()));
   in->close();
   CHECK(back == pic.rgba8());
-  std::filesystem::remove(file);
 }
 
 TEST_CASE("Picture: bad sizes and unwritable files are input errors naming the problem") {
@@ -107,7 +108,8 @@ TEST_CASE("Picture: bad sizes and unwritable files are input errors naming the p
   CHECK_THROWS_WITH(Picture(20000, 10, unit_box()), Catch::Contains("out of range"));
   Picture pic(8, 8, unit_box());
   CHECK_THROWS_WITH(pic.write("/nonexistent-folder/x.png"), Catch::Contains("/nonexistent-folder/x.png"));
-  CHECK_THROWS_WITH(pic.write(std::filesystem::temp_directory_path() / "x.unknownformat"),
+  const test::TempDir temp("animpak-picture-");
+  CHECK_THROWS_WITH(pic.write(temp / "x.unknownformat"),
                     Catch::Contains("cannot write this image format"));
 }
 

@@ -19,6 +19,7 @@
 #include "animpak/io.hpp"
 #include "animpak/render.hpp"
 #include "golden.hpp"
+#include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -32,12 +33,6 @@ constexpr double kMinIou = 0.97;
 constexpr std::size_t kStride = 43;
 
 bool have_rsvg() { return std::system("rsvg-convert --version >/dev/null 2>&1") == 0; }
-
-fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / ("animpak-fidelity-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The feature behind an import warning, as the importer words it (src/io/svg.cpp, svg_context.hpp).
 std::string reduced_feature(const std::string& warning) {
@@ -70,6 +65,7 @@ struct Outcome {
   bool compared = false;
   std::string skipped;  // why not, when not compared
   double iou = 0.0;
+  fs::path kept;  // where both pictures were copied when they disagree
 };
 
 Outcome compare_with_rsvg(const fs::path& svg, const fs::path& dir) {
@@ -126,10 +122,10 @@ Outcome compare_with_rsvg(const fs::path& svg, const fs::path& dir) {
   outcome.iou = alpha_iou(a, b);
   if (outcome.iou < kMinIou) {
     // Both pictures beside the test binary, to hold side by side.
-    const fs::path kept = fs::current_path() / "svg-fidelity";
-    fs::create_directories(kept);
-    fs::copy_file(ours_file, kept / (svg.stem().string() + "-animpak.png"), fs::copy_options::overwrite_existing);
-    fs::copy_file(theirs_file, kept / (svg.stem().string() + "-rsvg.png"), fs::copy_options::overwrite_existing);
+    outcome.kept = fs::current_path() / "svg-fidelity";
+    fs::create_directories(outcome.kept);
+    fs::copy_file(ours_file, outcome.kept / (svg.stem().string() + "-animpak.png"), fs::copy_options::overwrite_existing);
+    fs::copy_file(theirs_file, outcome.kept / (svg.stem().string() + "-rsvg.png"), fs::copy_options::overwrite_existing);
   }
   return outcome;
 }
@@ -189,7 +185,8 @@ TEST_CASE("svg fidelity: the preview's alpha matches rsvg-convert's on openclipa
     WARN("skipped: rsvg-convert is absent (Debian package librsvg2-bin); nothing was compared");
     return;
   }
-  const fs::path dir = scratch();
+  const animpak::test::TempDir temp("animpak-fidelity-");
+  const fs::path& dir = temp.path();
   std::vector<fs::path> files;
   for (const auto& [name, text] : hand_written()) {
     std::ofstream(dir / name) << text;
@@ -219,11 +216,11 @@ TEST_CASE("svg fidelity: the preview's alpha matches rsvg-convert's on openclipa
     }
     ++compared;
     report << "  IoU " << o.iou << " " << file.filename().string() << "\n";
+    if (!o.kept.empty()) UNSCOPED_INFO("both pictures kept in " << o.kept.string());
     CHECK(o.iou >= kMinIou);
   }
   report << compared << " of " << files.size() << " files compared";
   for (const auto& [why, count] : skips) report << "; " << count << " skipped for " << why;
   WARN(report.str());
   if (fs::is_directory(root)) CHECK(compared >= 30);
-  fs::remove_all(dir);
 }

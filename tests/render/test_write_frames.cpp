@@ -1,7 +1,5 @@
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -10,18 +8,12 @@
 
 #include "animpak/io.hpp"
 #include "animpak/render.hpp"
+#include "temp_dir.hpp"
 #include "tiny_world.hpp"
 
 using namespace animpak;
 
 namespace {
-
-std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("animpak-frames-" + std::to_string(::getpid())) / name;
-  std::filesystem::remove_all(dir);
-  return dir;
-}
 
 std::vector<std::string> sorted_names(const std::filesystem::path& dir) {
   std::vector<std::string> names;
@@ -45,7 +37,8 @@ FrameOutput small_output(const std::filesystem::path& dir, std::vector<FrameForm
 
 TEST_CASE("write_frames: png and svg write exactly N frames named frame_0000 on, one metric each and one between slices") {
   const World world = tiny_star_world();
-  const auto dir = fresh_dir("png-svg");
+  const animpak::test::TempDir temp("animpak-frames-");
+  const auto dir = temp / "png-svg";
   const auto quality = write_frames(world, world.state, small_output(dir, {FrameFormat::png, FrameFormat::svg}));
   REQUIRE(quality.frames.size() == 3);
   CHECK(quality.frames[1].t == Approx(1.0 / 3));  // the tiny world loops: frames at i / 3
@@ -83,7 +76,8 @@ TEST_CASE("write_frames: an SVG frame parses back to one group per element and t
     world.state.x[v] += static_cast<float>(shift.x);
     world.state.y[v] += static_cast<float>(shift.y);
   }
-  const auto dir = fresh_dir("svg");
+  const animpak::test::TempDir temp("animpak-frames-");
+  const auto dir = temp / "svg";
   const PackingQuality quality = write_frames(world, world.state, small_output(dir, {FrameFormat::svg}));
   const FrameMetrics& written = quality.frames.at(1);
   REQUIRE_FALSE(written.overlapping().empty());
@@ -161,7 +155,8 @@ TEST_CASE("write_frames: SVG ids are the element names, XML-escaped and made uni
   world.elements[0].name = "a<b>&\"c\"";
   world.elements[1].name = "container";
   world.elements[2].name = "a<b>&\"c\"";
-  const auto dir = fresh_dir("ids");
+  const animpak::test::TempDir temp("animpak-frames-");
+  const auto dir = temp / "ids";
   FrameOutput out = small_output(dir, {FrameFormat::svg});
   out.count = 1;
   write_frames(world, world.state, out);
@@ -180,7 +175,8 @@ TEST_CASE("write_frames: gif and mp4 through ffmpeg are non-empty files") {
     return;
   }
   const World world = tiny_star_world();
-  const auto dir = fresh_dir("video");
+  const animpak::test::TempDir temp("animpak-frames-");
+  const auto dir = temp / "video";
   write_frames(world, world.state, small_output(dir, {FrameFormat::gif, FrameFormat::mp4}));
   for (const char* name : {"animation.gif", "animation.mp4"}) {
     INFO(name);

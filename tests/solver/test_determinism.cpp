@@ -2,8 +2,6 @@
 // for byte, and a state written to state.bin, read back and continued equals the uninterrupted run.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <cstring>
 #include <filesystem>
 
@@ -11,6 +9,7 @@
 #include "animpak/scene.hpp"
 #include "animpak/simulation.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "temp_dir.hpp"
 
 using namespace animpak;
 
@@ -73,10 +72,9 @@ TEST_CASE("reference solver: N steps, state.bin, read back, M more steps equals 
   saved.seed = w.seed;
   saved.stop_reason = "running";
   saved.state = run_steps(*before, n);
-  const auto file = std::filesystem::temp_directory_path() / ("animpak-resume-" + std::to_string(::getpid()) + ".bin");
-  write_checkpoint(file, saved);
-  const Checkpoint loaded = read_checkpoint(file);
-  std::filesystem::remove(file);
+  const test::TempDir temp("animpak-resume-");
+  write_checkpoint(temp / "state.bin", saved);
+  const Checkpoint loaded = read_checkpoint(temp / "state.bin");
   require_identical(loaded.state, saved.state);
   CHECK(loaded.seed == w.seed);
   CHECK(loaded.stop_reason == "running");
@@ -101,10 +99,9 @@ TEST_CASE("reference solver: a run resumed in its settling phase stays settling 
   saved.scene_file = "tiny.json";
   saved.stop_reason = "interrupted";
   saved.state = run_steps(*before, 15);
-  const auto file = std::filesystem::temp_directory_path() / ("animpak-settle-" + std::to_string(::getpid()) + ".bin");
-  write_checkpoint(file, saved);
-  const Checkpoint loaded = read_checkpoint(file);
-  std::filesystem::remove(file);
+  const test::TempDir temp("animpak-settle-");
+  write_checkpoint(temp / "state.bin", saved);
+  const Checkpoint loaded = read_checkpoint(temp / "state.bin");
   CHECK(loaded.state.settling_since == 30);
   auto after = make_reference_backend(w.topology, loaded.state, w.params);
   const SimState resumed = run_steps(*after, 25);
