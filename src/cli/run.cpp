@@ -64,11 +64,18 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "host", "device"}));
 
   BenchOptions bench_options;
-  CLI::App* bench_cmd =
-      app.add_subcommand("bench", "Time solver steps per phase on synthetic worlds and the example scenes");
+  CLI::App* bench_cmd = app.add_subcommand(
+      "bench", "Time solver steps per phase on synthetic worlds and the example scenes, or on your own scenes");
   bench_cmd->add_option("--device", bench_options.devices,
                          "devices to time beside the reference: name fragments (pocl, nvidia), see animpak devices")
       ->delimiter(',');
+  bench_cmd->add_option("--series", bench_options.series,
+                        "synthetic worlds: constant (density: the container grows with the copies; the default), "
+                        "dense (more copies in the same container) or both; with --scene, none unless given")
+      ->check(CLI::IsMember({"constant", "dense", "both"}));
+  bench_cmd->add_option("--scene", bench_options.scenes,
+                        "time this scene file too (repeatable); without --series, instead of the synthetic worlds "
+                        "and the example scenes");
   bench_cmd->add_option("--sizes", bench_options.sizes, "target vertex counts of the synthetic worlds")
       ->delimiter(',')
       ->check(CLI::Range(100, 10000000));
