@@ -34,8 +34,9 @@ struct LinearFit {
   double intercept_ms = 0.0;
   double cost_ratio = 0.0;  ///< ms per vertex at the largest size over ms per vertex at the smallest
   PhaseTimes phase_ratios;  ///< the same ratio phase by phase: locates a step that grows faster than linear
-  /// Forces ms per neighbour visit at the largest size over the smallest: near 1 when the force phase
-  /// costs what its neighbourhoods hold, i.e. when any growth of cost per vertex is density, not code.
+  /// Forces ms per neighbour visit at the largest size over the smallest of the rows with at least one
+  /// visit per vertex: near 1 when the force phase costs what its neighbourhoods hold, i.e. when any
+  /// growth of cost per vertex is density, not code; 0 with fewer than two such rows.
   double visit_cost_ratio = 0.0;
   double min_visits_per_vertex = 0.0, max_visits_per_vertex = 0.0;  ///< over the fitted rows
 };

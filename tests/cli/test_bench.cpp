@@ -179,5 +179,16 @@ TEST_CASE("bench fit: least-squares slope and intercept over one device's rows o
   CHECK(f.min_visits_per_vertex == Approx(100.0));
   CHECK(f.max_visits_per_vertex == Approx(120.0));
   CHECK(f.cost_ratio == Approx((18.0 / 30000) / (8.0 / 10000)));
+  // Forces (half of each step here) per neighbour visit, largest over smallest size.
+  CHECK(f.visit_cost_ratio == Approx((9.0 / 3300000) / (4.0 / 1000000)));
   CHECK(animpak::cli::fit_series(rows, "reference", "dense").points == 1);
+
+  // A world with under one visit per vertex costs what its springs and overlap test cost, not its
+  // visits: the ratio compares the worlds that visit.
+  std::vector<BenchRow> sparse = rows;
+  sparse.push_back(row("reference", "constant", 5000, 3.0, 2000));
+  const animpak::cli::LinearFit g = animpak::cli::fit_series(sparse, "reference", "constant");
+  CHECK(g.points == 4);
+  CHECK(g.min_visits_per_vertex == Approx(0.4));
+  CHECK(g.visit_cost_ratio == Approx(f.visit_cost_ratio));
 }
