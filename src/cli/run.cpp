@@ -81,7 +81,8 @@ int run(int argc, char** argv) {
       ->check(CLI::Range(100, 10000000));
   bench_cmd->add_option("--steps", bench_options.steps, "timed steps per world")->check(CLI::Range(1, 100000));
   bench_cmd->add_option("--warmup", bench_options.warmup, "untimed steps before timing")->check(CLI::Range(0, 100000));
-  bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the synthetic worlds")->check(CLI::Range(2, 1000));
+  bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the dense worlds, and of the constant series at 45 copies (it "
+                        "gives larger worlds more, docs/benchmark.md)")->check(CLI::Range(2, 1000));
   bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");
   bench_cmd->add_flag("!--no-example-scenes", bench_options.example_scenes, "time only the synthetic worlds");
   bench_cmd->add_option("--json", bench_options.json, "write the results as JSON");
