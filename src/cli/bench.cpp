@@ -16,7 +16,7 @@ namespace {
 
 struct BenchWorld {
   std::string scene;
-  bool synthetic = false;
+  std::string series;  ///< as BenchRow::series
   int elements = 0;
   World world;
 };
@@ -57,28 +57,63 @@ std::vector<BenchTarget> bench_targets(const BenchOptions& options) {
   return targets;
 }
 
+// The synthetic series to time: with --scene given, none unless --series asks for them.
+std::vector<std::string> bench_series(const BenchOptions& options) {
+  const std::string series = options.series.value_or(options.scenes.empty() ? "constant" : "");
+  if (series.empty()) return {};
+  if (series == "both") return {"constant", "dense"};
+  return {series};
+}
+
+void print_notes(const BenchWorld& w) {
+  for (const std::string& note : w.world.notes) std::cerr << "animpak: " << w.scene << ": " << note << "\n";
+}
+
 std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
-  const auto star = options.examples / "default" / "star.svg";
-  if (!std::filesystem::exists(star))
-    throw InputError(star.string() + ": not found; run from the source folder or pass --examples DIR");
   std::vector<BenchWorld> worlds;
-  for (int size : options.sizes) {
-    SyntheticSpec spec;
-    spec.element_art = star;
-    spec.target_vertices = size;
-    spec.slices = options.slices;
-    SyntheticWorld s = make_synthetic_world(spec);
-    std::cerr << "animpak: synthetic-" << size << ": " << s.elements << " stars x " << options.slices
-              << " slices at initial scale " << s.initial_scale << "\n";
-    worlds.push_back({"synthetic-" + std::to_string(size), true, s.elements, std::move(s.world)});
+  // The user's scenes first: a wrong path or field fails before minutes of synthetic world building.
+  for (const std::filesystem::path& file : options.scenes) {
+    World w = make_world(load_scene(file));
+    const int elements = static_cast<int>(w.elements.size());
+    worlds.push_back({file.string(), "scene", elements, std::move(w)});
+    print_notes(worlds.back());
   }
-  if (options.example_scenes)
+  const std::vector<std::string> series = bench_series(options);
+  const auto star = options.examples / "default" / "star.svg";
+  if (!series.empty() && !std::filesystem::exists(star))
+    throw InputError(star.string() + ": not found; run from the source folder or pass --examples DIR");
+  for (const std::string& name : series)
+    for (int size : options.sizes) {
+      SyntheticSpec spec;
+      spec.element_art = star;
+      spec.target_vertices = size;
+      spec.slices = options.slices;
+      spec.density = name == "constant" ? SyntheticDensity::constant : SyntheticDensity::dense;
+      SyntheticWorld s = make_synthetic_world(spec);
+      const std::string scene = name + "-" + std::to_string(size);
+      std::cerr << "animpak: " << scene << ": " << s.elements << " stars x " << s.slices
+                << " slices at initial scale " << s.initial_scale << ", cell_size " << s.world.params.cell_size
+                << "\n";
+      worlds.push_back({scene, name, s.elements, std::move(s.world)});
+      print_notes(worlds.back());
+    }
+  if (options.example_scenes && options.scenes.empty())
     for (const char* name : {"default", "aquarium", "annulus"}) {
       World w = make_world(load_scene(options.examples / name / "scene.json"));
       const int elements = static_cast<int>(w.elements.size());
-      worlds.push_back({name, false, elements, std::move(w)});
+      worlds.push_back({name, "example", elements, std::move(w)});
     }
   return worlds;
+}
+
+// Every (device, synthetic series) pair with rows, in row order.
+std::vector<std::pair<std::string, std::string>> fitted_lines(const std::vector<BenchRow>& rows) {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const BenchRow& r : rows) {
+    const std::pair<std::string, std::string> line{r.device, r.series};
+    if (r.synthetic() && std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+  }
+  return lines;
 }
 
 nlohmann::json phases_json(const PhaseTimes& p) {
@@ -87,14 +122,15 @@ nlohmann::json phases_json(const PhaseTimes& p) {
   return out;
 }
 
-void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string>& devices,
-                const std::filesystem::path& file) {
+void write_json(const std::vector<BenchRow>& rows, const std::filesystem::path& file) {
   nlohmann::json results = nlohmann::json::array();
   for (const BenchRow& r : rows)
     results.push_back({{"device", r.device},
                        {"scene", r.scene},
-                       {"synthetic", r.synthetic},
+                       {"series", r.series},
+                       {"synthetic", r.synthetic()},
                        {"vertices", r.vertices}, {"neighbour_visits", r.neighbour_visits},
+                       {"visits_per_vertex", r.visits_per_vertex()},
                        {"elements", r.elements},
                        {"steps", r.timing.steps},
                        {"ms_per_iter", r.timing.ms_per_iter},
@@ -103,10 +139,13 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
                        {"speedup", r.reference_ms_per_iter / r.timing.ms_per_iter},
                        {"phases", phases_json(r.timing.phases_ms)}});
   nlohmann::json fits = nlohmann::json::array();
-  for (const std::string& d : devices) {
-    const LinearFit f = fit_synthetic(rows, d);
+  for (const auto& [device, series] : fitted_lines(rows)) {
+    const LinearFit f = fit_series(rows, device, series);
     if (f.points >= 2)
-      fits.push_back({{"device", d}, {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
+      fits.push_back({{"device", device}, {"series", series}, {"points", f.points},
+                      {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
+                      {"visits_per_vertex_min", f.min_visits_per_vertex},
+                      {"visits_per_vertex_max", f.max_visits_per_vertex},
                       {"cost_ratio_largest_to_smallest", f.cost_ratio}, {"visit_cost_ratio", f.visit_cost_ratio},
                       {"phase_cost_ratios", phases_json(f.phase_ratios)}});
   }
@@ -117,12 +156,16 @@ void write_json(const std::vector<BenchRow>& rows, const std::vector<std::string
 }
 
 void print_table(const std::vector<BenchRow>& rows) {
-  std::printf("%-18s %-14s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", "scene", "device", "vertices", "elem", "visits/v",
-              "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth", "statistics");
+  // A --scene path can be long; the column fits the longest name.
+  int width = 18;
+  for (const BenchRow& r : rows) width = std::max(width, static_cast<int>(r.scene.size()));
+  std::printf("%-*s %-14s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", width, "scene", "device", "vertices",
+              "elem", "visits/v", "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth",
+              "statistics");
   for (const BenchRow& r : rows) {
     const PhaseTimes& p = r.timing.phases_ms;
-    std::printf("%-18s %-14s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", r.scene.c_str(),
-                r.device.c_str(), r.vertices, r.elements, double(r.neighbour_visits) / r.vertices, r.timing.ms_per_iter,
+    std::printf("%-*s %-14s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", width,
+                r.scene.c_str(), r.device.c_str(), r.vertices, r.elements, r.visits_per_vertex(), r.timing.ms_per_iter,
                 r.reference_ms_per_iter / r.timing.ms_per_iter, p.grid, p.forces, p.integrate, p.constraints, p.loop,
                 p.growth, p.statistics);
   }
@@ -130,13 +173,16 @@ void print_table(const std::vector<BenchRow>& rows) {
 
 }  // namespace
 
-LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& device) {
+LinearFit fit_series(const std::vector<BenchRow>& rows, const std::string& device, const std::string& series) {
   std::vector<const BenchRow*> pts;
   for (const BenchRow& r : rows)
-    if (r.synthetic && r.device == device) pts.push_back(&r);
+    if (r.series == series && r.device == device) pts.push_back(&r);
   LinearFit f;
   f.points = static_cast<int>(pts.size());
   if (f.points < 2) return f;
+  auto by_visits = [](const BenchRow* a, const BenchRow* b) { return a->visits_per_vertex() < b->visits_per_vertex(); };
+  f.min_visits_per_vertex = (*std::min_element(pts.begin(), pts.end(), by_visits))->visits_per_vertex();
+  f.max_visits_per_vertex = (*std::max_element(pts.begin(), pts.end(), by_visits))->visits_per_vertex();
   double mx = 0, my = 0;
   for (const BenchRow* r : pts) mx += r->vertices / 1000.0, my += r->timing.ms_per_iter;
   mx /= f.points, my /= f.points;
@@ -157,10 +203,11 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
     return small > 0 ? (hi->timing.phases_ms.*phase / hi->vertices) / small : 0.0;
   };
   for (const NamedPhase& phase : phase_fields) f.phase_ratios.*phase.seconds = ratio(phase.seconds);
-  // Rows whose elements have no neighbour in reach cost only springs; compare the ones that visit.
+  // Rows whose elements have (almost) no neighbour in reach cost only springs and the overlap test;
+  // compare the ones that visit at least once per vertex (a dense world of 25,000 vertices visits 0.4).
   std::vector<const BenchRow*> visiting;
   for (const BenchRow* r : pts)
-    if (r->neighbour_visits > 0) visiting.push_back(r);
+    if (r->visits_per_vertex() >= 1.0) visiting.push_back(r);
   if (visiting.size() >= 2) {
     const BenchRow* vlo = *std::min_element(visiting.begin(), visiting.end(), by_size);
     const BenchRow* vhi = *std::max_element(visiting.begin(), visiting.end(), by_size);
@@ -173,8 +220,6 @@ LinearFit fit_synthetic(const std::vector<BenchRow>& rows, const std::string& de
 int bench(const BenchOptions& options, const BenchPlotter& plot) {
   // Every device name is resolved before minutes of world building, so a typo fails at once.
   const std::vector<BenchTarget> targets = bench_targets(options);
-  std::vector<std::string> devices;
-  for (const BenchTarget& t : targets) devices.push_back(t.label);
 
   std::vector<BenchRow> rows;
   for (const BenchWorld& w : bench_worlds(options)) {
@@ -184,7 +229,7 @@ int bench(const BenchOptions& options, const BenchPlotter& plot) {
                 << target.label << "\n";
       std::string grid_sort;
       auto backend = make_backend(target, w.world, grid_sort);
-      BenchRow row{target.label, w.scene, w.synthetic, w.world.topology.vertex_count(), w.elements,
+      BenchRow row{target.label, w.scene, w.series, w.world.topology.vertex_count(), w.elements,
                    time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0, 0, grid_sort};
       if (target.label == "reference") reference_ms = row.timing.ms_per_iter;
       row.neighbour_visits = neighbour_visits(w.world.topology, backend->state(), w.world.params);
@@ -194,25 +239,29 @@ int bench(const BenchOptions& options, const BenchPlotter& plot) {
   }
 
   print_table(rows);
-  for (const std::string& d : devices) {
-    const LinearFit f = fit_synthetic(rows, d);
+  for (const auto& [device, series] : fitted_lines(rows)) {
+    const LinearFit f = fit_series(rows, device, series);
+    const char* d = device.c_str();
+    const char* s = series.c_str();
     if (f.points < 2) {
-      std::printf("%s: linear fit needs two or more --sizes\n", d.c_str());
+      std::printf("%s, %s series: linear fit needs two or more --sizes\n", d, s);
       continue;
     }
     // A ratio near 1 means the cost per vertex does not grow with size: no quadratic step.
-    std::printf("%s: %.4f ms per 1k vertices (intercept %.3f ms); per-vertex cost, largest / smallest size: %.2f\n",
-                d.c_str(), f.slope_ms_per_kvertex, f.intercept_ms, f.cost_ratio);
+    std::printf("%s, %s series: %.4f ms per 1k vertices (intercept %.3f ms) over %d sizes, visits per vertex "
+                "%.1f to %.1f; per-vertex cost, largest / smallest size: %.2f\n",
+                d, s, f.slope_ms_per_kvertex, f.intercept_ms, f.points, f.min_visits_per_vertex,
+                f.max_visits_per_vertex, f.cost_ratio);
     const PhaseTimes& r = f.phase_ratios;
-    std::printf("%s: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, constraints %.2f, "
-                "loop %.2f, growth %.2f, statistics %.2f\n",
-                d.c_str(), r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
+    std::printf("%s, %s series: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, "
+                "constraints %.2f, loop %.2f, growth %.2f, statistics %.2f\n",
+                d, s, r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
     if (f.visit_cost_ratio > 0)
-      std::printf("%s: forces cost per neighbour visit, largest / smallest size: %.2f (at or below 1: the force "
-                  "phase grows with the neighbours it must visit, not with an accidental quadratic loop)\n",
-                  d.c_str(), f.visit_cost_ratio);
+      std::printf("%s, %s series: forces cost per neighbour visit, largest / smallest size: %.2f (at or below 1: "
+                  "the force phase grows with the neighbours it must visit, not with an accidental quadratic loop)\n",
+                  d, s, f.visit_cost_ratio);
   }
-  if (options.json) write_json(rows, devices, *options.json);
+  if (options.json) write_json(rows, *options.json);
   if (plot) plot(rows);
   return 0;
 }

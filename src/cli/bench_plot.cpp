@@ -15,10 +15,11 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:libfontconfi
 namespace animpak::cli {
 namespace {
 
-constexpr int width = 900, height = 560;
-constexpr double left = 80, right = 180, top = 40, bottom = 60;  // margins around the axes, pixels
+constexpr int width = 960, height = 560;
+constexpr double left = 80, right = 240, top = 40, bottom = 60;  // margins around the axes, pixels
 constexpr Rgba ink{0.15, 0.15, 0.15, 1}, grid_ink{0.88, 0.88, 0.88, 1};
-constexpr Rgba device_colours[] = {{0.12, 0.39, 0.75, 1}, {0.85, 0.33, 0.1, 1}, {0.2, 0.6, 0.25, 1}};
+constexpr Rgba line_colours[] = {{0.12, 0.39, 0.75, 1}, {0.85, 0.33, 0.1, 1}, {0.2, 0.6, 0.25, 1},
+                                 {0.55, 0.25, 0.65, 1}, {0.8, 0.6, 0.1, 1}, {0.1, 0.6, 0.65, 1}};
 constexpr Rgba example_colour{0.45, 0.45, 0.45, 1};
 
 // A 1-2-5 tick step giving about five ticks over [0, max].
@@ -81,16 +82,19 @@ void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::
   Picture pic(width, height, pixels, {1, 1, 1, 1}, 0.0);
   draw_axes(pic, axes);
 
-  std::map<std::string, std::vector<Vec2>> lines;  // device → synthetic points, in row order
+  // One line per device and synthetic series ("reference, constant"), in row order.
+  std::map<std::string, std::vector<Vec2>> lines;
   std::vector<std::string> order;
   for (const BenchRow& r : rows) {
-    if (!lines.count(r.device)) order.push_back(r.device);
-    if (r.synthetic) lines[r.device].push_back({double(r.vertices), r.timing.ms_per_iter});
+    if (!r.synthetic()) continue;
+    const std::string line = r.device + ", " + r.series;
+    if (!lines.count(line)) order.push_back(line);
+    lines[line].push_back({double(r.vertices), r.timing.ms_per_iter});
   }
   double legend_y = top + 10;
   const double legend_x = width - right + 20;
   for (std::size_t d = 0; d < order.size(); ++d) {
-    const Rgba colour = device_colours[d % std::size(device_colours)];
+    const Rgba colour = line_colours[d % std::size(line_colours)];
     std::vector<Vec2> pts = lines[order[d]];
     std::sort(pts.begin(), pts.end(), [](Vec2 a, Vec2 b) { return a.x < b.x; });
     std::vector<Vec2> px;
@@ -105,7 +109,7 @@ void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::
   // Example scenes are all small, so their squares cluster: labels are stacked to stay readable.
   int examples = 0;
   for (const BenchRow& r : rows)
-    if (!r.synthetic) {
+    if (!r.synthetic()) {
       const Vec2 c = axes.at(r.vertices, r.timing.ms_per_iter);
       draw_square(pic, c, example_colour);
       pic.draw_text(c + Vec2{8, -8.0 - 14.0 * examples}, r.scene + " (" + r.device + ")", 11, example_colour, {0.0, 1.0});
@@ -113,7 +117,7 @@ void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::
     }
   if (examples > 0) {
     draw_square(pic, {legend_x + 12, legend_y}, example_colour);
-    pic.draw_text({legend_x + 32, legend_y}, "example scenes", 14, ink, {0.0, 0.5});
+    pic.draw_text({legend_x + 32, legend_y}, "scenes", 14, ink, {0.0, 0.5});
   }
   pic.write(file);
 }

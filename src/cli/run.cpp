@@ -64,17 +64,25 @@ int run(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "host", "device"}));
 
   BenchOptions bench_options;
-  CLI::App* bench_cmd =
-      app.add_subcommand("bench", "Time solver steps per phase on synthetic worlds and the example scenes");
+  CLI::App* bench_cmd = app.add_subcommand(
+      "bench", "Time solver steps per phase on synthetic worlds and the example scenes, or on your own scenes");
   bench_cmd->add_option("--device", bench_options.devices,
                          "devices to time beside the reference: name fragments (pocl, nvidia), see animpak devices")
       ->delimiter(',');
+  bench_cmd->add_option("--series", bench_options.series,
+                        "synthetic worlds: constant (density: the container grows with the copies; the default), "
+                        "dense (more copies in the same container) or both; with --scene, none unless given")
+      ->check(CLI::IsMember({"constant", "dense", "both"}));
+  bench_cmd->add_option("--scene", bench_options.scenes,
+                        "time this scene file too (repeatable); without --series, instead of the synthetic worlds "
+                        "and the example scenes");
   bench_cmd->add_option("--sizes", bench_options.sizes, "target vertex counts of the synthetic worlds")
       ->delimiter(',')
       ->check(CLI::Range(100, 10000000));
   bench_cmd->add_option("--steps", bench_options.steps, "timed steps per world")->check(CLI::Range(1, 100000));
   bench_cmd->add_option("--warmup", bench_options.warmup, "untimed steps before timing")->check(CLI::Range(0, 100000));
-  bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the synthetic worlds")->check(CLI::Range(2, 1000));
+  bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the dense worlds, and of the constant series at 45 copies (it "
+                        "gives larger worlds more, docs/benchmark.md)")->check(CLI::Range(2, 1000));
   bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");
   bench_cmd->add_flag("!--no-example-scenes", bench_options.example_scenes, "time only the synthetic worlds");
   bench_cmd->add_option("--json", bench_options.json, "write the results as JSON");

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_report.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"
 
@@ -35,11 +36,19 @@ TEST_CASE("animpak bench: JSON rows for every world, with phases, a fit and a wr
     for (const char* phase : {"grid", "forces", "integrate", "constraints", "loop", "growth", "statistics"})
       CHECK(row.at("phases").at(phase).get<double>() >= 0.0);
   }
-  CHECK(scenes == std::vector<std::string>{"synthetic-2000", "synthetic-4000", "default", "aquarium", "annulus"});
+  // The constant-density series is the default.
+  CHECK(scenes == std::vector<std::string>{"constant-2000", "constant-4000", "default", "aquarium", "annulus"});
+  CHECK(results[0].at("series") == "constant");
+  CHECK(results[2].at("series") == "example");
   // Synthetic worlds land near their target size (whole elements of one size).
   CHECK(std::abs(results[0].at("vertices").get<int>() - 2000) < 700);
   CHECK(std::abs(results[1].at("vertices").get<int>() - 4000) < 700);
+  for (const auto& row : results)
+    CHECK(row.at("visits_per_vertex").get<double>() ==
+          Approx(row.at("neighbour_visits").get<double>() / row.at("vertices").get<double>()));
   REQUIRE(j.at("fits").size() == 1);
+  CHECK(j.at("fits")[0].at("series") == "constant");
+  CHECK(j.at("fits")[0].at("points") == 2);
   CHECK(j.at("fits")[0].at("cost_ratio_largest_to_smallest").get<double>() > 0.0);
 
   REQUIRE(std::filesystem::exists(plot));
@@ -79,4 +88,101 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
   CHECK(run_animpak("bench --grid-sort sideways --sizes 2000").code == 1);
   CHECK(run_animpak("pack --grid-sort sideways " + examples() + "/default/scene.json --out " +
                     (scratch / "never").string()).code == 1);
+}
+
+TEST_CASE("animpak bench --series both: constant and dense worlds, a fit for each, visits per vertex printed") {
+  const auto json_file = scratch("bench-series.json");
+  std::filesystem::remove(json_file);
+  const CommandResult r = run_animpak("bench --series both --sizes 2000,8000 --steps 1 --warmup 0 --no-example-scenes "
+                                      "--examples " + examples() + " --json " + json_file.string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("reference, constant series: "));
+  CHECK_THAT(r.out, Catch::Matchers::Contains("reference, dense series: "));
+  CHECK_THAT(r.out, Catch::Matchers::Contains("visits per vertex"));
+  const nlohmann::json j = nlohmann::json::parse(read_text(json_file));
+  std::vector<std::string> scenes;
+  for (const auto& row : j.at("results")) scenes.push_back(row.at("scene").get<std::string>());
+  CHECK(scenes == std::vector<std::string>{"constant-2000", "constant-8000", "dense-2000", "dense-8000"});
+  REQUIRE(j.at("fits").size() == 2);
+  CHECK(j.at("fits")[0].at("series") == "constant");
+  CHECK(j.at("fits")[1].at("series") == "dense");
+  for (const auto& fit : j.at("fits")) {
+    CHECK(fit.at("device") == "reference");
+    CHECK(fit.at("visits_per_vertex_min").get<double>() <= fit.at("visits_per_vertex_max").get<double>());
+  }
+  CHECK(run_animpak("bench --series sparse --sizes 2000").code == 1);
+}
+
+TEST_CASE("animpak bench --scene: times the given scene by its path, alone or beside a series") {
+  const std::string scene = examples() + "/aquarium/scene.json";
+  const auto json_file = scratch("bench-scene.json");
+  std::filesystem::remove(json_file);
+  CommandResult r = run_animpak("bench --scene " + scene + " --steps 1 --warmup 0 --examples " + examples() +
+                                " --json " + json_file.string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.out, Catch::Matchers::Contains(scene));
+  nlohmann::json j = nlohmann::json::parse(read_text(json_file));
+  // Instead of the synthetic worlds and the example scenes: one row.
+  REQUIRE(j.at("results").size() == 1);
+  CHECK(j.at("results")[0].at("scene") == scene);
+  CHECK(j.at("results")[0].at("series") == "scene");
+  CHECK(j.at("results")[0].at("vertices").get<int>() > 0);
+
+  r = run_animpak("bench --scene " + scene + " --series dense --sizes 2000 --steps 1 --warmup 0 --examples " +
+                  examples() + " --json " + json_file.string());
+  REQUIRE(r.code == 0);
+  j = nlohmann::json::parse(read_text(json_file));
+  std::vector<std::string> scenes;
+  for (const auto& row : j.at("results")) scenes.push_back(row.at("scene").get<std::string>());
+  CHECK(scenes == std::vector<std::string>{scene, "dense-2000"});
+}
+
+TEST_CASE("animpak bench --scene with a missing file is bad input naming the file") {
+  const std::string missing = scratch("no-such-scene.json").string();
+  const CommandResult r = run_animpak("bench --scene " + missing + " --steps 1 --examples " + examples());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains(missing));
+}
+
+TEST_CASE("bench fit: least-squares slope and intercept over one device's rows of one series") {
+  using animpak::cli::BenchRow;
+  auto row = [](std::string device, std::string series, int vertices, double ms, std::int64_t visits) {
+    BenchRow r;
+    r.device = std::move(device);
+    r.series = std::move(series);
+    r.vertices = vertices;
+    r.timing.ms_per_iter = ms;
+    r.timing.phases_ms.forces = ms / 2;
+    r.neighbour_visits = visits;
+    return r;
+  };
+  // ms = 2 + 0.5 per 1,000 vertices with a residual of +1, -2, +1 (which leaves the line unchanged),
+  // among rows of another series, another device and a scene that the fit must leave out.
+  const std::vector<BenchRow> rows{row("reference", "constant", 10000, 8.0, 1000000),
+                                   row("reference", "dense", 20000, 500.0, 9000000),
+                                   row("pocl", "constant", 20000, 1.0, 2400000),
+                                   row("reference", "constant", 20000, 10.0, 2400000),
+                                   row("reference", "scene", 30000, 900.0, 1),
+                                   row("reference", "constant", 30000, 18.0, 3300000)};
+  const animpak::cli::LinearFit f = animpak::cli::fit_series(rows, "reference", "constant");
+  CHECK(f.points == 3);
+  CHECK(f.slope_ms_per_kvertex == Approx(0.5));
+  CHECK(f.intercept_ms == Approx(2.0));
+  CHECK(f.min_visits_per_vertex == Approx(100.0));
+  CHECK(f.max_visits_per_vertex == Approx(120.0));
+  CHECK(f.cost_ratio == Approx((18.0 / 30000) / (8.0 / 10000)));
+  // Forces (half of each step here) per neighbour visit, largest over smallest size.
+  CHECK(f.visit_cost_ratio == Approx((9.0 / 3300000) / (4.0 / 1000000)));
+  CHECK(animpak::cli::fit_series(rows, "reference", "dense").points == 1);
+
+  // A world with under one visit per vertex costs what its springs and overlap test cost, not its
+  // visits: the ratio compares the worlds that visit.
+  std::vector<BenchRow> sparse = rows;
+  sparse.push_back(row("reference", "constant", 5000, 3.0, 2000));
+  const animpak::cli::LinearFit g = animpak::cli::fit_series(sparse, "reference", "constant");
+  CHECK(g.points == 4);
+  CHECK(g.min_visits_per_vertex == Approx(0.4));
+  CHECK(g.visit_cost_ratio == Approx(f.visit_cost_ratio));
 }
