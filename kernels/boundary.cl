@@ -32,7 +32,8 @@ bool container_query(int segments, float px, float py, bool nearest, __global co
 }
 
 /** The container's force from the query of (px, py) (reference boundary_force): Eq. 4 outside; inside,
- * for a boundary vertex, the wall's Eq. 1-shaped repulsion from its nearest point. */
+ * for a boundary vertex within wall_range of the wall, the wall's Eq. 1-shaped repulsion from its
+ * nearest point. */
 void boundary_force(const ForceParams p, bool inside, float distance2, float qx, float qy, float px, float py,
                     bool boundary, float* fx, float* fy) {
   if (!inside) {
@@ -40,7 +41,7 @@ void boundary_force(const ForceParams p, bool inside, float distance2, float qx,
     *fy = p.k_boundary * (qy - py);
     return;
   }
-  if (!boundary || !(distance2 > 0.0f) || !(distance2 < INFINITY)) return;
+  if (!boundary || !(distance2 > 0.0f) || !(distance2 < p.wall_range2)) return;
   const float ux = px - qx, uy = py - qy;
   const float inv_len = 1.0f / sqrt(distance2);
   const float w = inv_len * (1.0f / (p.repulsion_epsilon + distance2));

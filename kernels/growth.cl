@@ -1,5 +1,6 @@
 /* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
- * (shrink while overlapping or outside, pause at the wall, grow otherwise), then every slice is limited
+ * (shrink while outside or while overlapping an element no larger there, pause while overlapping a
+ * larger one or at the wall, grow otherwise), then every slice is limited
  * to growth_ratio × the smallest proposal of its element, and the springs touching a changed slice
  * take their rest length from the scaled rest copy. */
 
@@ -16,10 +17,11 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
   for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) bits |= contact[v];
   const float g = growth[s];
   float next = g;
-  if ((bits & (AP_CONTACT_OVERLAP | AP_CONTACT_OUTSIDE)) != 0) {
+  if ((bits & AP_CONTACT_OUTSIDE) != 0 ||
+      (bits & (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) == (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) {
     next = g - p.shrink_step;
     if (next < 1.0f) next = 1.0f;
-  } else if (growing != 0 && (bits & AP_CONTACT_WALL) == 0 && g < p.max_growth) {
+  } else if (growing != 0 && (bits & (AP_CONTACT_WALL | AP_CONTACT_OVERLAP)) == 0 && g < p.max_growth) {
     next = g + p.growth_step;
     if (next > p.max_growth) next = p.max_growth;
   }

@@ -45,15 +45,16 @@ __kernel void slice_boxes(const WorldInfo world,
 
 /** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
  * `own`, each one's slice pair around pt searched from slice index `start` (reference point_overlap).
- * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy). */
-uchar overlap_point(int own, int start, float px, float py, float pt, float nx, float ny, int elements,
+ * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy),
+ * plus AP_CONTACT_YIELD when an element it overlaps is no larger (g at pt) than own_g. */
+uchar overlap_point(int own, float own_g, int start, float px, float py, float pt, float nx, float ny, int elements,
                     __global const int* element_slice_begin, __global const int* slice_begin,
                     __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                     __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                    __global const float* y, __global const float* t, float* near2_out, float* qx_out,
-                    float* qy_out) {
+                    __global const float* y, __global const float* t, __global const float* growth,
+                    float* near2_out, float* qx_out, float* qy_out) {
   const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
-  bool overlap = false, found_inside = false;
+  bool overlap = false, found_inside = false, yield = false;
   *near2_out = 0.0f;
   *qx_out = 0.0f;
   *qy_out = 0.0f;
@@ -91,6 +92,7 @@ uchar overlap_point(int own, int start, float px, float py, float pt, float nx, 
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
     if (crosses) overlap = true;
+    if ((crosses || inside) && !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g)) yield = true;
     if (inside && (!found_inside || near2 < *near2_out)) {
       overlap = true;
       found_inside = true;
@@ -101,6 +103,7 @@ uchar overlap_point(int own, int start, float px, float py, float pt, float nx, 
   }
   uchar bits = overlap ? AP_CONTACT_OVERLAP : 0;
   if (found_inside) bits |= AP_CONTACT_INSIDE;
+  if (yield) bits |= AP_CONTACT_YIELD;
   return bits;
 }
 
@@ -108,6 +111,7 @@ uchar overlap_point(int own, int start, float px, float py, float pt, float nx, 
 void overlap_fold(uchar found, float near2, float qx, float qy, float px, float py, uchar* bits, float* depth2,
                   float* out_x, float* out_y) {
   if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;
+  if ((found & AP_CONTACT_YIELD) != 0) *bits |= AP_CONTACT_YIELD;
   if ((found & AP_CONTACT_INSIDE) == 0 || ((*bits & AP_CONTACT_INSIDE) != 0 && !(near2 > *depth2))) return;
   *bits |= AP_CONTACT_INSIDE;
   *depth2 = near2;
@@ -122,7 +126,8 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
                    __global const int* element_slice_begin, __global const int* slice_begin,
                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                   __global const float* y, __global const float* t, float* out_x, float* out_y) {
+                   __global const float* y, __global const float* t, __global const float* growth, float* out_x,
+                   float* out_y) {
   const int own = element[v], own_slice = slice[v];
   const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
   const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
@@ -133,8 +138,10 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
   float depth2 = 0.0f, near2, qx, qy;
   *out_x = 0.0f;
   *out_y = 0.0f;
-  uchar found = overlap_point(own, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
-                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, &near2, &qx, &qy);
+  const float own_g = growth[own_slice];
+  uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements,
+                              element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y,
+                              t, growth, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? 1 : -1;
@@ -143,9 +150,9 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
     const float mx = (x[v] + x[w]) * 0.5f, my = (y[v] + y[w]) * 0.5f;
     const float mt = (t[v] + t[w]) * 0.5f;
     const float nx = (x[next] + x[wn]) * 0.5f, ny = (y[next] + y[wn]) * 0.5f;
-    found = overlap_point(own, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
+    found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
                           element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
-                          &near2, &qx, &qy);
+                          growth, &near2, &qx, &qy);
     overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
   }
   return bits;

@@ -24,6 +24,7 @@ typedef float ap_float;
 #define AP_CONTACT_OUTSIDE 2
 #define AP_CONTACT_WALL 4
 #define AP_CONTACT_INSIDE 8
+#define AP_CONTACT_YIELD 16
 
 /* GrowthChange values (reference.hpp): what grow_slices did to a slice's g. */
 #define AP_GROWTH_GREW 1
@@ -66,6 +67,7 @@ typedef struct {
   ap_float max_growth;
   ap_float stop_gap;
   ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
+  ap_float wall_range2;                 /* wall_range * wall_range */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

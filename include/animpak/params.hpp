@@ -28,6 +28,7 @@ struct Params {
   double k_repulsion = 8e-8;        ///< Eq. 1
   double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
   double wall_repulsion = 10.0;     ///< the container's wall repels a boundary vertex like this many Eq. 1 terms
+  double wall_range = 0.08;         ///< ... within this distance of the wall (the 5×5×5 repulsion shell's reach)
   double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
   double k_shear = 5000.0;          ///< Eq. 2, shear springs
   double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs

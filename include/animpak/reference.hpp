@@ -97,6 +97,7 @@ struct OverlapResult {
   bool overlap = false;  ///< v or a middle next to it lies inside another element, or its edge crosses one
   bool inside = false;   ///< v or a middle next to it lies inside another element
   float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
+  bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g)
 };
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary

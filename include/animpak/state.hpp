@@ -29,6 +29,7 @@ enum ContactBit : std::uint8_t {
   contact_outside = 2,  ///< outside the container (growth shrinks)
   contact_wall = 4,     ///< a boundary vertex nearer the container's boundary than stop_gap (growth pauses)
   contact_inside = 8,   ///< inside another element (the depth term of the overlap force)
+  contact_yield = 16,   ///< overlaps an element no larger than its own slice there (growth shrinks; else pauses)
 };
 
 /// The container extruded over t: line segments of the outline and of every hole.

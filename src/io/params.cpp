@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 38> table{{
+const std::array<ParamInfo, 39> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
     {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
@@ -22,6 +22,7 @@ const std::array<ParamInfo, 38> table{{
     {"k_repulsion", &Params::k_repulsion, 0.0, inf, "k_rpl, repulsion strength (Eq. 1)"},
     {"repulsion_epsilon", &Params::repulsion_epsilon, 1e-12, inf, "ε, softening of Eq. 1"},
     {"wall_repulsion", &Params::wall_repulsion, 0.0, inf, "Eq. 1 terms the container's wall counts as"},
+    {"wall_range", &Params::wall_range, 0.0, 1.0, "distance within which the wall repels"},
     {"k_edge", &Params::k_edge, 0.0, inf, "k_edg of slice edge springs (Eq. 2)"},
     {"k_shear", &Params::k_shear, 0.0, inf, "k_edg of shear springs (Eq. 2)"},
     {"k_negative_space", &Params::k_negative_space, 0.0, inf, "k_edg of negative-space springs (Eq. 2)"},

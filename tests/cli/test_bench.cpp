@@ -91,8 +91,8 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
 }
 
 TEST_CASE("animpak bench --series both: constant and dense worlds, a fit for each, visits per vertex printed") {
-  const auto json_file = scratch("bench-series.json");
-  std::filesystem::remove(json_file);
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const auto json_file = scratch / "bench-series.json";
   const CommandResult r = run_animpak("bench --series both --sizes 2000,8000 --steps 1 --warmup 0 --no-example-scenes "
                                       "--examples " + examples() + " --json " + json_file.string());
   INFO(r.err);
@@ -116,8 +116,8 @@ TEST_CASE("animpak bench --series both: constant and dense worlds, a fit for eac
 
 TEST_CASE("animpak bench --scene: times the given scene by its path, alone or beside a series") {
   const std::string scene = examples() + "/aquarium/scene.json";
-  const auto json_file = scratch("bench-scene.json");
-  std::filesystem::remove(json_file);
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const auto json_file = scratch / "bench-scene.json";
   CommandResult r = run_animpak("bench --scene " + scene + " --steps 1 --warmup 0 --examples " + examples() +
                                 " --json " + json_file.string());
   INFO(r.err);
@@ -140,7 +140,8 @@ TEST_CASE("animpak bench --scene: times the given scene by its path, alone or be
 }
 
 TEST_CASE("animpak bench --scene with a missing file is bad input naming the file") {
-  const std::string missing = scratch("no-such-scene.json").string();
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const std::string missing = (scratch / "no-such-scene.json").string();
   const CommandResult r = run_animpak("bench --scene " + missing + " --steps 1 --examples " + examples());
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Catch::Matchers::Contains(missing));

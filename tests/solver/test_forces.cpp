@@ -127,7 +127,8 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
 }
 
 TEST_CASE("boundary: the wall repels a boundary vertex inside the container like Eq. 1, interior vertices not") {
-  const Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
+  Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
+  p.wall_range = 0.2;               // both vertices below are within reach
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
@@ -143,6 +144,23 @@ TEST_CASE("boundary: the wall repels a boundary vertex inside the container like
   w.topo.flags[1] = 0;  // an interior vertex feels nothing inside
   const Vec3f interior = boundary_force(w.topo, w.state, p, 1);
   CHECK((interior.x == 0.0f && interior.y == 0.0f && interior.t == 0.0f));
+}
+
+TEST_CASE("boundary: the wall repels only within wall_range, so a wall across the container pushes nothing") {
+  Params p = test::paper_params();
+  WorldBuilder b;
+  b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
+  b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
+  test::World w = b.build();
+  // Vertex 0 is 0.125 from the hole's edge, vertex 1 0.1 from the outline.
+  p.wall_range = 0.11;
+  const Vec3f far0 = boundary_force(w.topo, w.state, p, 0);
+  CHECK((far0.x == 0.0f && far0.y == 0.0f));
+  const Vec3f near1 = boundary_force(w.topo, w.state, p, 1);
+  CHECK(near1.y == Approx(-100.0 / (1.0 + 0.01)).epsilon(1e-6));
+  p.wall_range = 0.09;
+  const Vec3f far1 = boundary_force(w.topo, w.state, p, 1);
+  CHECK((far1.x == 0.0f && far1.y == 0.0f));
 }
 
 TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {

@@ -10,14 +10,15 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
-static_assert(sizeof(ForceParams) == 23 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+static_assert(sizeof(ForceParams) == 24 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
-              offsetof(ForceParams, k_target_angle) == 88);
+              offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
 static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
-              AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside);
+              AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside &&
+              AP_CONTACT_YIELD == contact_yield);
 static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank &&
               AP_GROWTH_HELD == reference::growth_held);
 static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);
@@ -45,6 +46,7 @@ ForceParams force_params(const Params& params) {
   p.max_growth = static_cast<float>(params.max_growth);
   p.stop_gap = static_cast<float>(params.stop_gap);
   p.k_target_angle = static_cast<float>(params.k_target_angle);
+  p.wall_range2 = static_cast<float>(params.wall_range * params.wall_range);
   return p;
 }
 

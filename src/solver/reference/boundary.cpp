@@ -5,7 +5,6 @@
 // even–odd rule over the segments of all rings puts a vertex inside a hole outside the container, and
 // p_b is searched on every ring.
 #include <cmath>
-#include <limits>
 
 #include "animpak/reference.hpp"
 
@@ -49,8 +48,11 @@ Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, fl
     return {k * (q.qx - px), k * (q.qy - py), 0.0f};
   }
   // Inside, a boundary vertex is pushed off the wall as by a neighbour's closest point (Eq. 1), so an
-  // element pressed to the wall, which stops growing there, moves back into open space.
-  if (!boundary || !(q.distance2 > 0.0f) || !(q.distance2 < std::numeric_limits<float>::infinity())) return {};
+  // element pressed to the wall, which stops growing there, moves back into open space. Only within
+  // wall_range, as a neighbour's triangles repel only within the repulsion shell: a wall felt from
+  // across the container presses every element towards the middle (docs/parameters.md, "Containment").
+  const float range2 = static_cast<float>(params.wall_range * params.wall_range);
+  if (!boundary || !(q.distance2 > 0.0f) || !(q.distance2 < range2)) return {};
   const float ux = px - q.qx, uy = py - q.qy;
   const float inv_len = 1.0f / std::sqrt(q.distance2);
   const float w = inv_len * (1.0f / (static_cast<float>(params.repulsion_epsilon) + q.distance2));

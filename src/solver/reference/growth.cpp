@@ -1,6 +1,6 @@
 // Growth of §5.3 with the containment and steadiness rules of docs/parameters.md ("Growth"): the paper
-// pauses a slice that overlaps; here an overlapping or spilling slice shrinks back, a slice touching the
-// wall pauses, and no slice outgrows growth_ratio × the smallest slice of its element nor
+// pauses a slice that overlaps; here a spilling slice, and an overlapping slice that is the larger of the
+// two there, shrink back, while a smaller overlapping slice and a slice touching the wall pause, and no slice outgrows growth_ratio × the smallest slice of its element nor
 // neighbour_growth_ratio × either time neighbour, so an element's size changes smoothly over the loop.
 #include "animpak/reference.hpp"
 
@@ -22,10 +22,10 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) bits |= contact[v];
     const float g = state.growth[s];
     float next = g;
-    if ((bits & (contact_overlap | contact_outside)) != 0) {
+    if ((bits & contact_outside) != 0 || (bits & (contact_overlap | contact_yield)) == (contact_overlap | contact_yield)) {
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
-    } else if (growing && (bits & contact_wall) == 0 && g < cap) {
+    } else if (growing && (bits & (contact_wall | contact_overlap)) == 0 && g < cap) {
       next = g + step;
       if (next > cap) next = cap;
     }

@@ -52,6 +52,7 @@ namespace {
 // What one query point found: a point p at time pt, with its boundary edge p → n.
 struct PointOverlap {
   bool overlap = false, inside = false;
+  bool yield = false;          // one of the elements overlapped is no larger (g) than own_g
   float near2 = 0.0f;          // when inside: squared distance to the nearest way out
   float qx = 0.0f, qy = 0.0f;  // that way out, a point of the other element's outline
 };
@@ -59,7 +60,7 @@ struct PointOverlap {
 // The query point against every element but `own`, each one's slice pair around pt searched from slice
 // index `start` of that element.
 PointOverlap point_overlap(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t own,
-                           std::int32_t start, float px, float py, float pt, float nx, float ny) {
+                           float own_g, std::int32_t start, float px, float py, float pt, float nx, float ny) {
   PointOverlap r;
   const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
   for (std::int32_t e = 0; e < topo.element_count(); ++e) {
@@ -101,6 +102,10 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
       if (d2 < near2) near2 = d2, qx = cx, qy = cy;
     }
     if (crosses) r.overlap = true;
+    // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, between
+    // its two slices as its polygon is.
+    if ((crosses || inside) && !(state.growth[s] + (state.growth[s + 1] - state.growth[s]) * w > own_g))
+      r.yield = true;
     // Inside several elements: the nearest way out, the first element reaching it wins.
     if (inside && (!r.inside || near2 < r.near2)) {
       r.overlap = r.inside = true;
@@ -116,6 +121,7 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
 // element the deepest gives the way out, the first reaching it winning.
 void fold(const PointOverlap& found, float px, float py, OverlapResult& r, float& depth2) {
   r.overlap = r.overlap || found.overlap;
+  r.yield = r.yield || found.yield;
   if (!found.inside || (r.inside && !(found.near2 > depth2))) return;
   r.inside = true;
   depth2 = found.near2;
@@ -134,8 +140,9 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   const std::int32_t own_index = own_slice - topo.element_slice_begin[own];
   const std::int32_t own_slices = topo.element_slice_begin[own + 1] - topo.element_slice_begin[own];
   const std::int32_t per_slice = topo.slice_begin[own_slice + 1] - own_lo;
+  const float own_g = state.growth[own_slice];
   float depth2 = 0.0f;
-  fold(point_overlap(topo, state, boxes, own, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
+  fold(point_overlap(topo, state, boxes, own, own_g, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
                      state.y[next]),
        state.x[v], state.y[v], r, depth2);
   // Between slices (the paper's §6 and §8: overlaps can hide there): the middles of the two slice
@@ -147,7 +154,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
     const float mx = (state.x[v] + state.x[w]) * 0.5f, my = (state.y[v] + state.y[w]) * 0.5f;
     const float mt = (state.t[v] + state.t[w]) * 0.5f;
     const float nx = (state.x[next] + state.x[wn]) * 0.5f, ny = (state.y[next] + state.y[wn]) * 0.5f;
-    fold(point_overlap(topo, state, boxes, own, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
+    fold(point_overlap(topo, state, boxes, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
          depth2);
   }
   return r;
