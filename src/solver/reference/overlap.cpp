@@ -81,10 +81,12 @@ void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGr
   grid.elements.clear();
   // The pairs of every element with two slices or more, named by their lower slice: increasing slice
   // order is increasing element order.
-  std::vector<std::int32_t> pairs;
+  std::vector<std::int32_t> pairs, owner;
   for (std::int32_t e = 0; e < topo.element_count(); ++e)
-    for (std::int32_t s = topo.element_slice_begin[e]; s + 1 < topo.element_slice_begin[e + 1]; ++s)
+    for (std::int32_t s = topo.element_slice_begin[e]; s + 1 < topo.element_slice_begin[e + 1]; ++s) {
       pairs.push_back(s);
+      owner.push_back(e);
+    }
   if (pairs.empty()) return;
   // The grid spans the pairs' boxes; its cell is their mean extent, so a box meets a few cells. A NaN
   // (a blown-up state) leaves the grid without cells: every query then tries every element, as the
@@ -121,15 +123,15 @@ void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGr
   // Every pair in every cell its box meets, pairs in increasing order; the stable sort keeps that
   // order within a cell, and a cell lists an element once, though several of its pairs may meet it.
   std::vector<std::int32_t> entry_cell, entry_element;
-  for (const std::int32_t s : pairs) {
-    const PairBox b = pair_box(boxes, s);
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const PairBox b = pair_box(boxes, pairs[i]);
     const std::int32_t ix0 = grid_axis_cell(b.x0 - grid.x0, grid.cell, grid.nx),
                        ix1 = grid_axis_cell(b.x1 - grid.x0, grid.cell, grid.nx);
     const std::int32_t iy0 = grid_axis_cell(b.y0 - grid.y0, grid.cell, grid.ny),
                        iy1 = grid_axis_cell(b.y1 - grid.y0, grid.cell, grid.ny);
     const std::int32_t it0 = grid_axis_cell(b.t0 - grid.t0, grid.cell_t, grid.nt),
                        it1 = grid_axis_cell(b.t1 - grid.t0, grid.cell_t, grid.nt);
-    const std::int32_t e = topo.slice_element[s];
+    const std::int32_t e = owner[i];
     for (std::int32_t it = it0; it <= it1; ++it)
       for (std::int32_t iy = iy0; iy <= iy1; ++iy)
         for (std::int32_t ix = ix0; ix <= ix1; ++ix) {
