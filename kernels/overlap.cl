@@ -1,7 +1,10 @@
 /* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and the
  * middles of the slice intervals next to it, against every other element's boundary polygon interpolated
  * at their t, at any depth, with the boundary edge tested for crossings on the same walk; the force adds
- * a pull along the way out of the other element. */
+ * a pull along the way out of the other element. The elements tried are the broadphase's candidates
+ * (OverlapGridInfo, built on the host by reference::build_overlap_grid; docs/architecture.md, "The
+ * overlap test"): the merged lists of the cells the query edge's box meets, in increasing element
+ * order, exactly as reference::overlap_candidates. */
 
 /** Half-open ray-crossing step of the even-odd test (boundary.cpp: ray_crosses_segment). */
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {
@@ -20,16 +23,20 @@ float overlap_orient(float ax, float ay, float bx, float by, float cx, float cy)
 
 bool overlap_opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
 
-/** Box of every slice's boundary polygon; one work-item per slice. */
+/** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
+ * slice. */
 __kernel void slice_boxes(const WorldInfo world,
                           __global const int* slice_begin,    /* input: slices + 1 */
                           __global const int* slice_boundary, /* input: boundary vertices per slice */
                           __global const float* x, __global const float* y, /* input: positions */
+                          __global const float* t,                          /* input */
                           __global float* box_x0, __global float* box_y0,   /* output: per slice */
-                          __global float* box_x1, __global float* box_y1) { /* output: per slice */
+                          __global float* box_x1, __global float* box_y1,   /* output: per slice */
+                          __global float* box_t) {                          /* output: per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int lo = slice_begin[s], count = slice_boundary[s];
+  box_t[s] = t[lo];
   float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
   if (count > 0) {
     x0 = x[lo], x1 = x0, y0 = y[lo], y1 = y0;
@@ -44,7 +51,8 @@ __kernel void slice_boxes(const WorldInfo world,
 }
 
 /** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
- * `own`, each one's slice pair around pt searched from slice index `start` (reference point_overlap).
+ * `own` that the broadphase lists, in increasing order, each one's slice pair around pt searched from
+ * slice index `start` (reference point_overlap and overlap_candidates).
  * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy),
  * plus AP_CONTACT_YIELD when an element it overlaps is no larger (g at pt) than own_g. */
 uchar overlap_point(int own, float own_g, int start, float px, float py, float pt, float nx, float ny, int elements,
@@ -52,13 +60,44 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
                     __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                     __global const float* box_x1, __global const float* box_y1, __global const float* x,
                     __global const float* y, __global const float* t, __global const float* growth,
+                    const OverlapGridInfo grid, __global const int* grid_start, __global const int* grid_elements,
                     float* near2_out, float* qx_out, float* qy_out) {
   const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
   bool overlap = false, found_inside = false, yield = false;
   *near2_out = 0.0f;
   *qx_out = 0.0f;
   *qy_out = 0.0f;
-  for (int e = 0; e < elements; ++e) {
+  /* The cells the query's box meets at pt's cell in t, or every element (no grid, a NaN, a box over
+   * more than 2 x 2 cells). */
+  bool every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(pt);
+  int begin[4], end[4], lists = 0;
+  if (!every) {
+    const int ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx);
+    const int ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
+    const int iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny);
+    const int iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
+    const int it = grid_axis_cell(pt - grid.t0, grid.cell_t, grid.nt);
+    every = (ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 4;
+    for (int iy = iy0; !every && iy <= iy1; ++iy)
+      for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
+        const int c = (it * grid.ny + iy) * grid.nx + ix;
+        begin[lists] = grid_start[c];
+        end[lists] = grid_start[c + 1];
+      }
+  }
+  for (int e = -1;;) {
+    /* The next candidate: e + 1, or the smallest listed element above e. */
+    if (every) {
+      if (++e >= elements) break;
+    } else {
+      int next = elements;
+      for (int l = 0; l < lists; ++l) {
+        while (begin[l] < end[l] && grid_elements[begin[l]] <= e) ++begin[l];
+        if (begin[l] < end[l] && grid_elements[begin[l]] < next) next = grid_elements[begin[l]];
+      }
+      if (next == elements) break;
+      e = next;
+    }
     if (e == own) continue;
     const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
     if (count < 2) continue;
@@ -126,7 +165,9 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
                    __global const int* element_slice_begin, __global const int* slice_begin,
                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                   __global const float* y, __global const float* t, __global const float* growth, float* out_x,
+                   __global const float* y, __global const float* t, __global const float* growth,
+                   const OverlapGridInfo grid, __global const int* grid_start, __global const int* grid_elements,
+                   float* out_x,
                    float* out_y) {
   const int own = element[v], own_slice = slice[v];
   const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
@@ -141,7 +182,7 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
   const float own_g = growth[own_slice];
   uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements,
                               element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y,
-                              t, growth, &near2, &qx, &qy);
+                              t, growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? 1 : -1;
@@ -152,7 +193,7 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
     const float nx = (x[next] + x[wn]) * 0.5f, ny = (y[next] + y[wn]) * 0.5f;
     found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
                           element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
-                          growth, &near2, &qx, &qy);
+                          growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
     overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
   }
   return bits;

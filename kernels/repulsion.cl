@@ -64,7 +64,10 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
                         __global float* closest,                 /* output: per vertex */
                         __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD */
-                        __global float* depth_x, __global float* depth_y) { /* output: the way out when inside */
+                        __global float* depth_x, __global float* depth_y, /* output: the way out when inside */
+                        const OverlapGridInfo overlap_grid,      /* the overlap test's broadphase */
+                        __global const int* overlap_start,       /* input: its cells + 1 */
+                        __global const int* overlap_elements) {  /* input: its element lists */
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];
@@ -72,7 +75,8 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
   const int own = element[v];
   float way_out_x, way_out_y;
   const uchar bits = overlap_test(v, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                                  box_x0, box_y0, box_x1, box_y1, x, y, t, growth, &way_out_x, &way_out_y);
+                                  box_x0, box_y0, box_x1, box_y1, x, y, t, growth, overlap_grid, overlap_start,
+                                  overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx = 0.0f, sy = 0.0f, st = 0.0f;

@@ -51,6 +51,14 @@ typedef struct {
   ap_int cells;          /* n * n * n */
 } GridInfo;
 
+/* The overlap test's broadphase (reference::OverlapGrid without its arrays), built on the host each
+ * step and passed to the repulsion kernel. nx == 0: no grid, every query tries every element. */
+typedef struct {
+  ap_int nx, ny, nt;           /* cells per axis */
+  ap_float x0, y0, t0;         /* low corner */
+  ap_float cell, cell_t;       /* cell edge in x and y, in t */
+} OverlapGridInfo;
+
 /* Every Params constant a kernel uses, converted once to float by the host exactly as the reference
  * converts it (static_cast<float>, products formed in double first). */
 typedef struct {

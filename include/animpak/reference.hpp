@@ -85,12 +85,37 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
                                 const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
                                 bool overlapping);
 
-/// Per global slice, the box of its boundary polygon (x0 ≤ x ≤ x1, y0 ≤ y ≤ y1), from one snapshot of
-/// positions. overlap.cpp.
+/// Per global slice, the box of its boundary polygon (x0 ≤ x ≤ x1, y0 ≤ y ≤ y1) and its t (its first
+/// vertex's), from one snapshot of positions. overlap.cpp.
 struct SliceBoxes {
-  std::vector<float> x0, y0, x1, y1;
+  std::vector<float> x0, y0, x1, y1, t;
 };
 void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out);
+
+/// The overlap test's broadphase (docs/architecture.md, "The overlap test"): a uniform (x, y, t) cell
+/// grid over every slice pair's box (the union of its two slices' boxes, from t of one slice to t of
+/// the other), listing per cell the elements owning a pair whose box meets the cell, in increasing
+/// element order, each once. A grid without cells (nx = 0: a box or slice t is NaN) sends every query
+/// to every element.
+struct OverlapGrid {
+  std::int32_t nx = 0, ny = 0, nt = 0;    ///< cells per axis
+  float x0 = 0.0f, y0 = 0.0f, t0 = 0.0f;  ///< the grid's low corner
+  float cell = 1.0f, cell_t = 1.0f;       ///< cell edge in x and y, in t
+  std::vector<std::int32_t> cell_start;   ///< nx · ny · nt + 1 entries: cell c lists elements[cell_start[c], cell_start[c+1])
+  std::vector<std::int32_t> elements;     ///< element ids, by cell, increasing within a cell
+};
+
+/// Builds the broadphase from this step's slice boxes: the pairs in increasing slice order, each in
+/// every cell its box meets, then the stable counting sort (src/solver/counting_sort.cpp). Runs on
+/// the host for both backends (the OpenCL backend reads the boxes back). overlap.cpp.
+void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGrid& grid);
+
+/// The elements, in increasing order and each once, whose slice-pair boxes may meet the query box
+/// x ∈ [ex0, ex1], y ∈ [ey0, ey1] at time pt: the merged lists of the (at most four) cells the box
+/// meets, or all `elements` when the box meets more cells or has a NaN. Every element whose pair
+/// around pt passes the overlap test's box test is among them. overlap.cpp.
+void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex0, float ex1, float ey0, float ey1,
+                        float pt, std::vector<std::int32_t>& out);
 
 /// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
 struct OverlapResult {
@@ -102,11 +127,13 @@ struct OverlapResult {
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
 /// vertex of its slice) against every other element's boundary polygon interpolated linearly at v's t,
-/// skipping elements whose slice boxes miss the edge; then the same for the middle of each slice interval
+/// skipping elements whose slice boxes miss the edge (only the broadphase's candidates, `grid`, are
+/// tried, in increasing element order); then the same for the middle of each slice interval
 /// next to v (v and its edge interpolated halfway to the neighbouring slice, at the middle time), where
 /// the paper's discrete test cannot see (§6, §8). Interior vertices and elements with fewer than two
 /// slices never overlap. overlap.cpp.
-OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v);
+OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
+                           const OverlapGrid& grid, std::int32_t v);
 
 /// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a middle
 /// next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so the push grows

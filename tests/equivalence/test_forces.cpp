@@ -55,6 +55,38 @@ World finish(WorldBuilder& b) {
   return w;
 }
 
+// How the overlap test's broadphase served a world's boundary vertices (their own points and edges):
+// candidates tried in all, and queries whose edge's box meets two cells, or four.
+struct BroadphaseUse {
+  long queries = 0, candidates = 0, two_cells = 0, four_cells = 0;
+};
+
+BroadphaseUse broadphase_use(const World& w) {
+  reference::SliceBoxes boxes;
+  reference::slice_boxes(w.topo, w.state, boxes);
+  reference::OverlapGrid g;
+  reference::build_overlap_grid(w.topo, boxes, g);
+  BroadphaseUse u;
+  std::vector<std::int32_t> found;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const std::int32_t lo = w.topo.slice_begin[w.topo.slice[v]], count = w.topo.slice_boundary[w.topo.slice[v]];
+    if (v - lo >= count) continue;
+    const std::int32_t next = v - lo + 1 == count ? lo : v + 1;
+    const float ex0 = std::min(w.state.x[v], w.state.x[next]), ex1 = std::max(w.state.x[v], w.state.x[next]);
+    const float ey0 = std::min(w.state.y[v], w.state.y[next]), ey1 = std::max(w.state.y[v], w.state.y[next]);
+    reference::overlap_candidates(g, w.topo.element_count(), ex0, ex1, ey0, ey1, w.state.t[v], found);
+    const int cells_x = reference::grid_axis_cell(ex1 - g.x0, g.cell, g.nx) -
+                        reference::grid_axis_cell(ex0 - g.x0, g.cell, g.nx) + 1;
+    const int cells_y = reference::grid_axis_cell(ey1 - g.y0, g.cell, g.ny) -
+                        reference::grid_axis_cell(ey0 - g.y0, g.cell, g.ny) + 1;
+    ++u.queries;
+    u.candidates += static_cast<long>(found.size());
+    u.two_cells += cells_x * cells_y == 2;
+    u.four_cells += cells_x * cells_y == 4;
+  }
+  return u;
+}
+
 }  // namespace
 
 TEST_CASE("forces: random worlds, default and paper constants", "[equivalence][opencl]") {
@@ -91,6 +123,51 @@ TEST_CASE("forces: vertices on cell borders and the grid's edge", "[equivalence]
   b.add_element(tube({{0.96f, 0.96f}, {1.02f, 0.96f}, {1.0f, 1.0f}, {0.96f, 1.0f}}, {0.0f, 0.96f, 1.0f}));
   const World w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "cell borders");
+}
+
+TEST_CASE("forces: many small elements spread out, the overlap broadphase leaving most out", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  Coverage total;
+  for (std::uint64_t seed = 21; seed <= 22; ++seed) {
+    RandomWorldShape shape;
+    shape.elements = 60;
+    shape.min_radius = 0.02f;
+    shape.max_radius = 0.06f;
+    const World w = random_world(seed, shape);
+    const BroadphaseUse u = broadphase_use(w);
+    CHECK(u.candidates * 10 < u.queries * shape.elements);  // fewer than a tenth of the elements tried
+    for (const Params& params : {Params{}, paper_params()}) {
+      const Coverage c = check_forces(w, params, "spread, seed " + std::to_string(seed));
+      total.inside += c.inside, total.crossing += c.crossing;
+    }
+  }
+  CHECK(total.inside > 0);
+  CHECK(total.crossing > 0);
+}
+
+TEST_CASE("forces: slice-pair boxes across the overlap broadphase's cell borders", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  // Squares and diamonds of one size, so the broadphase's cell (the mean pair box's extent) is their
+  // box, 0.08: placed half a cell apart, their boxes straddle cell borders and their corners lie on
+  // them; the diamonds' slanted edges meet four cells, the squares' edges two.
+  const std::vector<float> times = {0.0f, 0.3f, 0.7f, 1.0f};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const float cx = 0.3f + 0.06f * static_cast<float>(i), cy = 0.3f + 0.06f * static_cast<float>(j);
+      if ((i + j) % 2 == 0)
+        b.add_element(square_tube(cx, cy, 0.04f, times));
+      else
+        b.add_element(tube({{cx, cy - 0.04f}, {cx + 0.04f, cy}, {cx, cy + 0.04f}, {cx - 0.04f, cy}}, times));
+    }
+  const World w = finish(b);
+  const BroadphaseUse u = broadphase_use(w);
+  CHECK(u.two_cells > 0);
+  CHECK(u.four_cells > 0);
+  for (const Params& params : {Params{}, paper_params()}) {
+    const Coverage c = check_forces(w, params, "cell borders of the overlap broadphase");
+    CHECK(c.inside > 0);
+  }
 }
 
 TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]") {

@@ -64,6 +64,15 @@ TEST_CASE("steps: random worlds, 20 steps each", "[equivalence][opencl]") {
   }
 }
 
+TEST_CASE("steps: many small elements, the overlap broadphase leaving most out", "[equivalence][opencl]") {
+  RandomWorldShape shape;
+  shape.elements = 50;
+  shape.min_radius = 0.02f;
+  shape.max_radius = 0.06f;
+  const World w = random_world(31, shape);
+  check_steps(w.topo, w.state, paper_params(), 10, 1, "50 small elements");
+}
+
 TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equivalence][opencl]") {
   const std::string text = R"({
     "container": {"art": "../shapes/heart-container.path"},

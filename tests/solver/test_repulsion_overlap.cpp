@@ -100,7 +100,9 @@ namespace {
 OverlapResult overlap_at(const test::World& w, std::int32_t v) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
-  return overlap_test(w.topo, w.state, boxes, v);
+  OverlapGrid grid;
+  build_overlap_grid(w.topo, boxes, grid);
+  return overlap_test(w.topo, w.state, boxes, grid, v);
 }
 
 }  // namespace

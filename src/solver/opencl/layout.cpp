@@ -10,6 +10,8 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
+static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
+              offsetof(OverlapGridInfo, cell_t) == 28);
 static_assert(sizeof(ForceParams) == 24 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
               offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92);

@@ -1,8 +1,9 @@
 // The OpenCL backend: the reference backend's step (src/solver/reference/backend.cpp) with the state
 // on the device. The grid's stable counting sort (count → exclusive scan → scatter) runs either on the
-// device (GPUs: nothing crosses the bus in a step) or on the host from the cell ids read back (CPU
-// devices); statistics are per-slice reductions read on demand, and the full state comes back only in
-// state().
+// device (GPUs) or on the host from the cell ids read back (CPU devices); the overlap test's broadphase
+// is built on the host every step from the slice boxes read back (reference::build_overlap_grid), so
+// each step crosses the bus once each way for it; statistics are per-slice reductions read on demand,
+// and the full state comes back only in state().
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -65,7 +66,8 @@ struct ScratchBuffers {
   cl::Buffer cell_count, cursor, block_sum;                                            // grid sort
   cl::Buffer slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct;          // triangles in cell order
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;          // repulsion, overlap test
-  cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1;                       // per-slice geometry
+  cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;                // per-slice geometry
+  cl::Buffer overlap_start, overlap_elements;                                          // overlap broadphase
   cl::Buffer proposed;                                                                 // growth proposals
 };
 
@@ -110,6 +112,7 @@ class DeviceBackend final : public OpenclBackend {
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
     timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
+    build_overlap_grid();
     timed(times_.forces, repulsion_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
     timed(times_.integrate, integrate_.run(queue_, world_.vertices));
@@ -177,6 +180,7 @@ class DeviceBackend final : public OpenclBackend {
     forces_.set(0, world);
     slice_centroids_.run(queue_, world_.slices);
     slice_boxes_.run(queue_, world_.slices);
+    build_overlap_grid();
     repulsion_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
     forces_.set(0, world_);
@@ -318,6 +322,9 @@ class DeviceBackend final : public OpenclBackend {
     w.slice_cx = scratch(fs, "slice_cx"), w.slice_cy = scratch(fs, "slice_cy");
     w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
     w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
+    w.box_t = scratch(fs, "slice_t");
+    boxes_.x0.resize(slices), boxes_.y0.resize(slices), boxes_.x1.resize(slices), boxes_.y1.resize(slices);
+    boxes_.t.resize(slices);
     w.proposed = scratch(fs, "proposed_growth");
   }
 
@@ -352,12 +359,15 @@ class DeviceBackend final : public OpenclBackend {
     const TopologyBuffers& b = topo_buf_;
     const ScratchBuffers& w = scratch_;
     slice_boxes_ = Kernel(program, "slice_boxes");
-    slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, x_, y_, w.box_x0, w.box_y0, w.box_x1, w.box_y1);
+    slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, x_, y_, t_, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
+                      w.box_t);
     repulsion_ = Kernel(program, "repulsion");
-    repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
-                    cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
-                    b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
-                    growth_, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
+    // The broadphase's three arguments come last; build_overlap_grid sets them every step.
+    overlap_grid_arg_ =
+        repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
+                        cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
+                        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
+                        growth_, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
     forces_ = Kernel(program, "step_forces");
@@ -490,6 +500,37 @@ class DeviceBackend final : public OpenclBackend {
             "clEnqueueWriteBuffer(sorted_triangles)");
   }
 
+  // The overlap test's broadphase (reference::build_overlap_grid) from this step's slice boxes, read
+  // back; its lists go up into buffers that grow as needed.
+  void build_overlap_grid() {
+    ScratchBuffers& w = scratch_;
+    read(w.box_x0, boxes_.x0, "slice_box_x0"), read(w.box_y0, boxes_.y0, "slice_box_y0");
+    read(w.box_x1, boxes_.x1, "slice_box_x1"), read(w.box_y1, boxes_.y1, "slice_box_y1");
+    read(w.box_t, boxes_.t, "slice_t", true);
+    settle_times();
+    PhaseStopwatch watch(times_.forces);
+    reference::build_overlap_grid(topo_, boxes_, overlap_grid_);
+    const auto grow = [&](cl::Buffer& buffer, std::size_t& capacity, const std::vector<std::int32_t>& data,
+                          const char* name) {
+      if (data.size() > capacity || capacity == 0) {
+        capacity = std::max<std::size_t>(data.size() + data.size() / 2, 1);
+        buffer = scratch(sizeof(std::int32_t) * capacity, name);
+      }
+      // The host vectors stay untouched until the next build, which first waits on this queue.
+      if (!data.empty())
+        check(queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, sizeof(std::int32_t) * data.size(), data.data()),
+              std::string("clEnqueueWriteBuffer(") + name + ")");
+    };
+    grow(w.overlap_start, overlap_start_capacity_, overlap_grid_.cell_start, "overlap_cell_start");
+    grow(w.overlap_elements, overlap_elements_capacity_, overlap_grid_.elements, "overlap_elements");
+    const OverlapGridInfo info{overlap_grid_.nx,  overlap_grid_.ny,   overlap_grid_.nt,
+                               overlap_grid_.x0,  overlap_grid_.y0,   overlap_grid_.t0,
+                               overlap_grid_.cell, overlap_grid_.cell_t};
+    repulsion_.set(overlap_grid_arg_, info);
+    repulsion_.set(overlap_grid_arg_ + 1, w.overlap_start);
+    repulsion_.set(overlap_grid_arg_ + 2, w.overlap_elements);
+  }
+
   Topology topo_;
   DeviceInfo info_;
   std::uint64_t iteration_;
@@ -521,6 +562,10 @@ class DeviceBackend final : public OpenclBackend {
       grid_order_, grid_gather_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_,
       containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
+  cl_uint overlap_grid_arg_ = 0;
+  reference::SliceBoxes boxes_;
+  reference::OverlapGrid overlap_grid_;
+  std::size_t overlap_start_capacity_ = 0, overlap_elements_capacity_ = 0;
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
   std::vector<std::pair<double*, cl::Event>> pending_;
   PhaseTimes times_;

@@ -31,11 +31,13 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   }
 
   // Per-slice passes first, whose results every vertex of the slice reads: the centroids (Eq. 5) and the
-  // boxes of the boundary polygons (the overlap test).
+  // boxes of the boundary polygons with the overlap test's broadphase over them.
   std::vector<float> cx, cy;
   slice_centroids(topo, state, cx, cy);
   SliceBoxes boxes;
   slice_boxes(topo, state, boxes);
+  OverlapGrid overlap_grid;
+  build_overlap_grid(topo, boxes, overlap_grid);
   const float stop_gap = static_cast<float>(params.stop_gap);
 
   std::vector<std::int32_t> near, far;
@@ -49,7 +51,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
       near_triangles(grid, topo, q, topo.element[v], near);
       far_triangles(grid, topo, q, topo.element[v], far);
     }
-    const OverlapResult overlap = overlap_test(topo, state, boxes, v);
+    const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f edg = spring_force(topo, state, params, v);

@@ -5,10 +5,17 @@
 // every other element whose boundary polygon, interpolated linearly at the vertex's t, can reach it (a
 // box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk;
 // so are the middles of the slice intervals on either side of it.
+// Which elements the box test can accept comes from a broadphase rebuilt every step (OverlapGrid,
+// docs/architecture.md, "The overlap test"): an (x, y, t) cell grid over the slice pairs' boxes, so a
+// query tries only the elements listed in the cells its edge's box meets, in increasing element order
+// as a walk over every element would; the results are the same bits, at a cost per vertex that does
+// not grow with the element count.
 // The force adds to Eq. 3 a pull towards the other element's outline that grows with depth
 // (docs/parameters.md, "Overlaps").
 #include <algorithm>
+#include <cmath>
 
+#include "../counting_sort.hpp"
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
@@ -33,7 +40,9 @@ void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
   out.y0.assign(slices, 0.0f);
   out.x1.assign(slices, 0.0f);
   out.y1.assign(slices, 0.0f);
+  out.t.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
+    out.t[s] = slice_t(topo, state, s);
     const std::int32_t lo = topo.slice_begin[s], count = topo.slice_boundary[s];
     if (count == 0) continue;
     float x0 = state.x[lo], x1 = x0, y0 = state.y[lo], y1 = y0;
@@ -49,6 +58,145 @@ void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
 
 namespace {
 
+// A pair's box: the union of its two slices' boxes (exactly what point_overlap tests) and its t range.
+struct PairBox {
+  float x0, y0, x1, y1, t0, t1;
+};
+
+PairBox pair_box(const SliceBoxes& boxes, std::int32_t s) {
+  return {std::min(boxes.x0[s], boxes.x0[s + 1]), std::min(boxes.y0[s], boxes.y0[s + 1]),
+          std::max(boxes.x1[s], boxes.x1[s + 1]), std::max(boxes.y1[s], boxes.y1[s + 1]),
+          std::min(boxes.t[s], boxes.t[s + 1]),   std::max(boxes.t[s], boxes.t[s + 1])};
+}
+
+// The grid's cells per axis are capped so that a far-flung world does not make the cell table larger
+// than the pair lists it indexes.
+constexpr std::int32_t overlap_grid_max_axis = 1024;
+
+}  // namespace
+
+void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGrid& grid) {
+  grid.nx = grid.ny = grid.nt = 0;
+  grid.cell_start.assign(1, 0);
+  grid.elements.clear();
+  // The pairs of every element with two slices or more, named by their lower slice: increasing slice
+  // order is increasing element order.
+  std::vector<std::int32_t> pairs, owner;
+  for (std::int32_t e = 0; e < topo.element_count(); ++e)
+    for (std::int32_t s = topo.element_slice_begin[e]; s + 1 < topo.element_slice_begin[e + 1]; ++s) {
+      pairs.push_back(s);
+      owner.push_back(e);
+    }
+  if (pairs.empty()) return;
+  // The grid spans the pairs' boxes; its cell is their mean extent, so a box meets a few cells. A NaN
+  // (a blown-up state) leaves the grid without cells: every query then tries every element, as the
+  // box test, which a NaN never fails, would.
+  PairBox all = pair_box(boxes, pairs.front());
+  double w = 0.0, h = 0.0, d = 0.0;
+  for (const std::int32_t s : pairs) {
+    const PairBox b = pair_box(boxes, s);
+    if (std::isnan(b.x0) || std::isnan(b.y0) || std::isnan(b.x1) || std::isnan(b.y1) || std::isnan(b.t0) ||
+        std::isnan(b.t1))
+      return;
+    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1),
+           std::max(all.y1, b.y1), std::min(all.t0, b.t0), std::max(all.t1, b.t1)};
+    w += static_cast<double>(b.x1) - b.x0;
+    h += static_cast<double>(b.y1) - b.y0;
+    d += static_cast<double>(b.t1) - b.t0;
+  }
+  const double count = static_cast<double>(pairs.size());
+  const double span_x = static_cast<double>(all.x1) - all.x0, span_y = static_cast<double>(all.y1) - all.y0,
+               span_t = static_cast<double>(all.t1) - all.t0;
+  double cell = std::max(w, h) / count, cell_t = d / count;
+  if (!(cell > 0.0)) cell = std::max({span_x, span_y, 1.0});
+  if (!(cell_t > 0.0)) cell_t = std::max(span_t, 1.0);
+  const auto axis = [](double span, double edge) {
+    return static_cast<std::int32_t>(std::min<double>(overlap_grid_max_axis, std::floor(span / edge) + 1.0));
+  };
+  // Never more cells than a few per pair: a sparse world gets coarser cells.
+  while (static_cast<double>(axis(span_x, cell)) * axis(span_y, cell) * axis(span_t, cell_t) > 8.0 * count + 64.0)
+    cell *= 2.0, cell_t *= 2.0;
+  grid.x0 = all.x0, grid.y0 = all.y0, grid.t0 = all.t0;
+  grid.cell = static_cast<float>(cell), grid.cell_t = static_cast<float>(cell_t);
+  grid.nx = axis(span_x, cell), grid.ny = axis(span_y, cell), grid.nt = axis(span_t, cell_t);
+
+  // Every pair in every cell its box meets, pairs in increasing order; the stable sort keeps that
+  // order within a cell, and a cell lists an element once, though several of its pairs may meet it.
+  std::vector<std::int32_t> entry_cell, entry_element;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const PairBox b = pair_box(boxes, pairs[i]);
+    const std::int32_t ix0 = grid_axis_cell(b.x0 - grid.x0, grid.cell, grid.nx),
+                       ix1 = grid_axis_cell(b.x1 - grid.x0, grid.cell, grid.nx);
+    const std::int32_t iy0 = grid_axis_cell(b.y0 - grid.y0, grid.cell, grid.ny),
+                       iy1 = grid_axis_cell(b.y1 - grid.y0, grid.cell, grid.ny);
+    const std::int32_t it0 = grid_axis_cell(b.t0 - grid.t0, grid.cell_t, grid.nt),
+                       it1 = grid_axis_cell(b.t1 - grid.t0, grid.cell_t, grid.nt);
+    const std::int32_t e = owner[i];
+    for (std::int32_t it = it0; it <= it1; ++it)
+      for (std::int32_t iy = iy0; iy <= iy1; ++iy)
+        for (std::int32_t ix = ix0; ix <= ix1; ++ix) {
+          entry_cell.push_back((it * grid.ny + iy) * grid.nx + ix);
+          entry_element.push_back(e);
+        }
+  }
+  const std::int32_t cells = grid.nx * grid.ny * grid.nt;
+  std::vector<std::int32_t> start, order;
+  counting_sort(entry_cell, cells, start, order);
+  // Within a cell an element's entries are adjacent: keep the first.
+  grid.cell_start.assign(static_cast<std::size_t>(cells) + 1, 0);
+  grid.elements.reserve(order.size());
+  for (std::int32_t c = 0; c < cells; ++c) {
+    for (std::int32_t i = start[c]; i < start[c + 1]; ++i) {
+      const std::int32_t e = entry_element[order[i]];
+      if (i == start[c] || e != grid.elements.back()) grid.elements.push_back(e);
+    }
+    grid.cell_start[c + 1] = static_cast<std::int32_t>(grid.elements.size());
+  }
+}
+
+void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex0, float ex1, float ey0, float ey1,
+                        float pt, std::vector<std::int32_t>& out) {
+  out.clear();
+  // The cells the query's box meets, at pt's cell in t: a pair whose box passes the box test around pt
+  // is listed in one of them (the cell of a point in both boxes; the cell of a coordinate never
+  // decreases as the coordinate grows, and clamping keeps that).
+  bool every = grid.nx == 0 || std::isnan(ex0) || std::isnan(ex1) || std::isnan(ey0) || std::isnan(ey1) ||
+               std::isnan(pt);
+  std::int32_t begin[4], end[4], lists = 0;
+  if (!every) {
+    const std::int32_t ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx),
+                       ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
+    const std::int32_t iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny),
+                       iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
+    const std::int32_t it = grid_axis_cell(pt - grid.t0, grid.cell_t, grid.nt);
+    // An edge longer than a cell (rare: the cell is a mean box's extent) tries every element.
+    every = (ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 4;
+    for (std::int32_t iy = iy0; !every && iy <= iy1; ++iy)
+      for (std::int32_t ix = ix0; ix <= ix1; ++ix, ++lists) {
+        const std::int32_t c = (it * grid.ny + iy) * grid.nx + ix;
+        begin[lists] = grid.cell_start[c];
+        end[lists] = grid.cell_start[c + 1];
+      }
+  }
+  if (every) {
+    for (std::int32_t e = 0; e < elements; ++e) out.push_back(e);
+    return;
+  }
+  // Merge the cells' increasing lists: the smallest element above the last one taken, until none is left.
+  for (std::int32_t last = -1;;) {
+    std::int32_t next = elements;
+    for (std::int32_t l = 0; l < lists; ++l) {
+      while (begin[l] < end[l] && grid.elements[begin[l]] <= last) ++begin[l];
+      if (begin[l] < end[l] && grid.elements[begin[l]] < next) next = grid.elements[begin[l]];
+    }
+    if (next == elements) return;
+    out.push_back(next);
+    last = next;
+  }
+}
+
+namespace {
+
 // What one query point found: a point p at time pt, with its boundary edge p → n.
 struct PointOverlap {
   bool overlap = false, inside = false;
@@ -57,13 +205,17 @@ struct PointOverlap {
   float qx = 0.0f, qy = 0.0f;  // that way out, a point of the other element's outline
 };
 
-// The query point against every element but `own`, each one's slice pair around pt searched from slice
-// index `start` of that element.
-PointOverlap point_overlap(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t own,
-                           float own_g, std::int32_t start, float px, float py, float pt, float nx, float ny) {
+// The query point against every element but `own` that the broadphase lists, in increasing order, each
+// one's slice pair around pt searched from slice index `start` of that element.
+PointOverlap point_overlap(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
+                           const OverlapGrid& grid, std::int32_t own, float own_g, std::int32_t start, float px, float py, float pt,
+                           float nx, float ny) {
   PointOverlap r;
   const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
-  for (std::int32_t e = 0; e < topo.element_count(); ++e) {
+  // Reused across calls: three queries per boundary vertex.
+  thread_local std::vector<std::int32_t> candidates;
+  overlap_candidates(grid, topo.element_count(), ex0, ex1, ey0, ey1, pt, candidates);
+  for (const std::int32_t e : candidates) {
     if (e == own) continue;
     const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
     if (count < 2) continue;
@@ -131,7 +283,8 @@ void fold(const PointOverlap& found, float px, float py, OverlapResult& r, float
 
 }  // namespace
 
-OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t v) {
+OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
+                           const OverlapGrid& grid, std::int32_t v) {
   OverlapResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
@@ -142,7 +295,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   const std::int32_t per_slice = topo.slice_begin[own_slice + 1] - own_lo;
   const float own_g = state.growth[own_slice];
   float depth2 = 0.0f;
-  fold(point_overlap(topo, state, boxes, own, own_g, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
+  fold(point_overlap(topo, state, boxes, grid, own, own_g, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
                      state.y[next]),
        state.x[v], state.y[v], r, depth2);
   // Between slices (the paper's §6 and §8: overlaps can hide there): the middles of the two slice
@@ -154,7 +307,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
     const float mx = (state.x[v] + state.x[w]) * 0.5f, my = (state.y[v] + state.y[w]) * 0.5f;
     const float mt = (state.t[v] + state.t[w]) * 0.5f;
     const float nx = (state.x[next] + state.x[wn]) * 0.5f, ny = (state.y[next] + state.y[wn]) * 0.5f;
-    fold(point_overlap(topo, state, boxes, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
+    fold(point_overlap(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
          depth2);
   }
   return r;
