@@ -8,6 +8,7 @@ namespace {
 
 struct Coverage {
   int inside = 0, crossing = 0, wall = 0, boundary = 0, target = 0, repulsion = 0;
+  int yield = 0, paused = 0;  // overlapping vertices that give way, and that only pause
 };
 
 // Compares one world's forces on every device; returns what the world exercised.
@@ -19,6 +20,8 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
   for (std::size_t v = 0; v < ref.contact.size(); ++v) {
     c.inside += (ref.contact[v] & contact_inside) != 0;
     c.crossing += (ref.contact[v] & (contact_overlap | contact_inside)) == contact_overlap;
+    c.yield += (ref.contact[v] & contact_yield) != 0;
+    c.paused += (ref.contact[v] & (contact_overlap | contact_yield)) == contact_overlap;
     c.wall += (ref.contact[v] & contact_wall) != 0;
     c.boundary += ref_parts.boundary.x[v] != 0.0f;
     c.target += ref_parts.target.x[v] != 0.0f;
@@ -201,11 +204,17 @@ TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[
   // A plus sign of two bars: only edges cross.
   b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));
   b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));
-  const World w = finish(b);
+  World w = finish(b);
+  // Unequal g, so that the overlapping vertices of the larger element of each pair yield and those of
+  // the smaller only pause (docs/parameters.md, "Growth").
+  for (std::int32_t s = 0; s < w.topo.slice_count(); ++s)
+    w.state.growth[s] = 1.0f + 0.25f * static_cast<float>(w.topo.slice_element[s]);
   for (const Params& params : {Params{}, paper_params()}) {
     const Coverage c = check_forces(w, params, "deep and crossing");
     CHECK(c.inside > 0);
     CHECK(c.crossing > 0);
+    CHECK(c.yield > 0);
+    CHECK(c.paused > 0);
   }
 }
 

@@ -1,5 +1,6 @@
-// §5.3 growth on a real (tiny) world (docs/parameters.md, "Growth"): a slice that overlaps or spills
-// shrinks, one at the wall keeps its g, the others grow by exactly growth_rate · Δt_sim up to max_growth
+// §5.3 growth on a real (tiny) world (docs/parameters.md, "Growth"): a slice that spills, or overlaps
+// an element no larger than itself, shrinks; one that overlaps only larger elements, or is at the wall,
+// keeps its g; the others grow by exactly growth_rate · Δt_sim up to max_growth
 // and never past growth_ratio × their element's smallest slice; only the springs with an end on a
 // changed slice get new rest lengths.
 #include <catch2/catch.hpp>
@@ -23,7 +24,7 @@ bool same_float(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wall pause, the others grow, capped") {
+TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the others grow, capped") {
   const World w = tiny_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
@@ -37,24 +38,26 @@ TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wal
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
 
   SimState state = w.state;
-  const std::int32_t overlapping = 1, nearly_full = 3, outside = 4, at_wall = 6, full = 7, at_floor = 8;
+  const std::int32_t overlapping = 1, smaller = 2, nearly_full = 3, outside = 4, at_wall = 6, full = 7, at_floor = 8;
   state.growth[overlapping] = 1.5f;
+  state.growth[smaller] = 1.5f;       // overlaps a larger element: pauses
   state.growth[nearly_full] = 1.9f;  // 1.9 + 0.15 passes the cap: clamps to 2
   state.growth[outside] = 1.5f;
   state.growth[at_wall] = 1.5f;
   state.growth[full] = 2.0f;         // already at the cap: does not count as growing
   state.growth[at_floor] = 1.05f;    // overlapping: shrinks to 1, never below the start
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
-  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap;  // the last vertex of the slice only
+  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap | contact_yield;  // the last vertex only
+  contact[topo.slice_begin[smaller]] = contact_overlap;
   contact[topo.slice_begin[outside]] = contact_outside;
   contact[topo.slice_begin[at_wall] + 1] = contact_wall;
-  contact[topo.slice_begin[at_floor]] = contact_overlap | contact_inside;
+  contact[topo.slice_begin[at_floor]] = contact_overlap | contact_inside | contact_yield;
 
   const SimState before = state;
   std::vector<std::uint8_t> changed;
   const std::int32_t count = reference::grow_slices(topo, contact, params, true, state, changed);
   REQUIRE(changed.size() == static_cast<std::size_t>(topo.slice_count()));
-  CHECK(count == topo.slice_count() - 5);
+  CHECK(count == topo.slice_count() - 6);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     if (s == overlapping || s == outside) {
@@ -63,7 +66,7 @@ TEST_CASE("grow_slices: overlapping or spilling slices shrink, slices at the wal
     } else if (s == at_floor) {
       CHECK(changed[s] == reference::growth_shrank);
       CHECK(state.growth[s] == 1.0f);
-    } else if (s == at_wall || s == full) {
+    } else if (s == at_wall || s == full || s == smaller) {
       CHECK(changed[s] == reference::growth_kept);
       CHECK(same_float(state.growth[s], before.growth[s]));
     } else if (s == nearly_full) {

@@ -200,6 +200,37 @@ TEST_CASE("overlap: two elements whose edges cross with no vertex inside are bot
   CHECK(flagged == 2 * 2 * 26);
 }
 
+TEST_CASE("overlap: the larger of two overlapping elements yields, the smaller does not") {
+  // The crossing bars again, the horizontal one grown larger (g 2 against 1.5) in every slice: its
+  // flagged vertices must give way (yield), the vertical bar's only pause. Equal g: both yield.
+  const auto times = times26();
+  const auto bar = [&](float w, float h) {
+    std::vector<test::TinySlice> slices;
+    for (const float t : times)
+      slices.push_back({{{0.5f - w, 0.5f - h}, {0.5f + w, 0.5f - h}, {0.5f + w, 0.5f + h}, {0.5f - w, 0.5f + h}}, t});
+    return slices;
+  };
+  WorldBuilder b;
+  b.add_element(bar(0.1f, 0.01f));
+  b.add_element(bar(0.01f, 0.1f));
+  test::World w = b.build();
+  for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = 1.5f;
+  int larger = 0, smaller = 0;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const OverlapResult r = overlap_at(w, v);
+    if (!r.overlap) continue;
+    CHECK(r.yield == (w.topo.element[v] == 0));
+    (w.topo.element[v] == 0 ? larger : smaller) += 1;
+  }
+  CHECK(larger == 2 * 26);
+  CHECK(smaller == 2 * 26);
+  for (int s = 0; s < 26; ++s) w.state.growth[26 + s] = 2.0f;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const OverlapResult r = overlap_at(w, v);
+    CHECK(r.yield == r.overlap);
+  }
+}
+
 TEST_CASE("overlap: elements that cross only between two slices are found at the middle of the interval") {
   // A (half-size 0.04) moves right and B (0.05) left through the same place: at the slice times 0 and 1
   // they are 0.11 apart, at t = 0.5 A lies inside B. Only the middle of the slice interval sees it.
