@@ -19,7 +19,7 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
   float next = g;
   if ((bits & AP_CONTACT_OUTSIDE) != 0 ||
       (bits & (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) == (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) {
-    next = g - p.shrink_step;
+    next = g - (growing != 0 ? p.shrink_step : p.settle_shrink_step);
     if (next < 1.0f) next = 1.0f;
   } else if (growing != 0 && (bits & (AP_CONTACT_WALL | AP_CONTACT_OVERLAP)) == 0 && g < p.max_growth) {
     next = g + p.growth_step;

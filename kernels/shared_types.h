@@ -76,6 +76,7 @@ typedef struct {
   ap_float stop_gap;
   ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
   ap_float wall_range2;                 /* wall_range * wall_range */
+  ap_float settle_shrink_step;          /* settle_shrink_rate * dt */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 39> table{{
+const std::array<ParamInfo, 40> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
     {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
@@ -47,6 +47,7 @@ const std::array<ParamInfo, 39> table{{
     {"stop_growth", &Params::stop_growth, 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
     {"max_iterations", &Params::max_iterations, 1, 100000000, "hard cap on simulation steps"},
     {"settle_iterations", &Params::settle_iterations, 0, 100000000, "steps without growth to clear overlaps at the end"},
+    {"settle_shrink_rate", &Params::settle_shrink_rate, 0.0, inf, "g -= settle_shrink_rate · Δt_sim per settling step while overlapping"},
     {"stall_window", &Params::stall_window, 0, 100000000, "steps between the stall test's comparisons; 0 turns it off"},
     {"stall_growth", &Params::stall_growth, 0.0, inf, "mean g must rise by this share per window, or growth has stalled"},
     {"check_interval", &Params::check_interval, 1, 100000, "NaN check and statistics every k steps"},

@@ -83,6 +83,29 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
   CHECK(state.spring_rest == before.spring_rest);
 }
 
+TEST_CASE("grow_slices: while settling, nothing grows and overlapping slices shrink at settle_shrink_rate") {
+  const World w = tiny_world();
+  const Topology& topo = w.topology;
+  Params params = w.params;
+  params.growth_ratio = 100.0;
+  params.neighbour_growth_ratio = 100.0;
+  params.shrink_rate = 0.01;
+  params.settle_shrink_rate = 0.04;
+  SimState state = w.state;
+  std::fill(state.growth.begin(), state.growth.end(), 1.5f);
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  contact[topo.slice_begin[2]] = contact_overlap | contact_yield;
+  contact[topo.slice_begin[5]] = contact_outside;
+  contact[topo.slice_begin[7]] = contact_overlap;  // overlaps a larger element: pauses
+  std::vector<std::uint8_t> changed;
+  CHECK(reference::grow_slices(topo, contact, params, false, state, changed) == 0);
+  const float settle = static_cast<float>(params.settle_shrink_rate * params.dt);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    CHECK(same_float(state.growth[s], s == 2 || s == 5 ? 1.5f - settle : 1.5f));
+  }
+}
+
 TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of its element") {
   const World w = tiny_world();
   const Topology& topo = w.topology;

@@ -12,9 +12,10 @@ static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offseto
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
-static_assert(sizeof(ForceParams) == 24 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+static_assert(sizeof(ForceParams) == 25 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
-              offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92);
+              offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92 &&
+              offsetof(ForceParams, settle_shrink_step) == 96);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
@@ -43,6 +44,7 @@ ForceParams force_params(const Params& params) {
   p.velocity_cap = static_cast<float>(params.velocity_cap * params.dt);
   p.growth_step = static_cast<float>(params.growth_rate * params.dt);
   p.shrink_step = static_cast<float>(params.shrink_rate * params.dt);
+  p.settle_shrink_step = static_cast<float>(params.settle_shrink_rate * params.dt);
   p.growth_ratio = static_cast<float>(params.growth_ratio);
   p.neighbour_growth_ratio = static_cast<float>(params.neighbour_growth_ratio);
   p.max_growth = static_cast<float>(params.max_growth);

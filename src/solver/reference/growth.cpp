@@ -9,7 +9,8 @@ namespace animpak::reference {
 std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
                          bool growing, SimState& state, std::vector<std::uint8_t>& changed) {
   const float step = static_cast<float>(params.growth_rate * params.dt);
-  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
+  // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
+  const float shrink = static_cast<float>((growing ? params.shrink_rate : params.settle_shrink_rate) * params.dt);
   const float cap = static_cast<float>(params.max_growth);
   const float ratio = static_cast<float>(params.growth_ratio);
   const float neighbour_ratio = static_cast<float>(params.neighbour_growth_ratio);
