@@ -1,7 +1,8 @@
 // Growth of §5.3 with the containment and steadiness rules of docs/parameters.md ("Growth"): the paper
-// pauses a slice that overlaps; here a spilling slice, and an overlapping slice that is the larger of the
-// two there, shrink back, while a smaller overlapping slice and a slice touching the wall pause, and no slice outgrows growth_ratio × the smallest slice of its element nor
-// neighbour_growth_ratio × either time neighbour, so an element's size changes smoothly over the loop.
+// pauses a slice that overlaps; here a spilling slice, and an overlapping slice that is the larger of
+// the two there, shrink back, while a smaller overlapping slice and a slice touching the wall pause;
+// and no slice outgrows growth_ratio × the smallest slice of its element nor neighbour_growth_ratio ×
+// either time neighbour, so an element's size changes smoothly over the loop.
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
