@@ -105,6 +105,21 @@ OverlapResult overlap_at(const test::World& w, std::int32_t v) {
   return overlap_test(w.topo, w.state, boxes, grid, v);
 }
 
+// Two thin bars crossing like a plus sign over 26 slices: element 0 horizontal, element 1 vertical.
+test::World crossing_bars() {
+  const auto times = times26();
+  const auto bar = [&](float w, float h) {
+    std::vector<test::TinySlice> slices;
+    for (const float t : times)
+      slices.push_back({{{0.5f - w, 0.5f - h}, {0.5f + w, 0.5f - h}, {0.5f + w, 0.5f + h}, {0.5f - w, 0.5f + h}}, t});
+    return slices;
+  };
+  WorldBuilder b;
+  b.add_element(bar(0.1f, 0.01f));
+  b.add_element(bar(0.01f, 0.1f));
+  return b.build();
+}
+
 }  // namespace
 
 TEST_CASE("overlap: found inside a second element even when a third element's triangle is nearer") {
@@ -171,17 +186,7 @@ TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged
 TEST_CASE("overlap: two elements whose edges cross with no vertex inside are both flagged") {
   // Two thin bars crossing like a plus sign: no corner of either lies inside the other, but a long
   // edge of each crosses the other's outline twice.
-  const auto times = times26();
-  const auto bar = [&](float w, float h) {
-    std::vector<test::TinySlice> slices;
-    for (const float t : times)
-      slices.push_back({{{0.5f - w, 0.5f - h}, {0.5f + w, 0.5f - h}, {0.5f + w, 0.5f + h}, {0.5f - w, 0.5f + h}}, t});
-    return slices;
-  };
-  WorldBuilder b;
-  b.add_element(bar(0.1f, 0.01f));  // horizontal
-  b.add_element(bar(0.01f, 0.1f));  // vertical
-  const test::World w = b.build();
+  const test::World w = crossing_bars();
   int inside = 0, flagged = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
     const OverlapResult r = overlap_at(w, v);
@@ -203,17 +208,7 @@ TEST_CASE("overlap: two elements whose edges cross with no vertex inside are bot
 TEST_CASE("overlap: the larger of two overlapping elements yields, the smaller does not") {
   // The crossing bars again, the horizontal one grown larger (g 2 against 1.5) in every slice: its
   // flagged vertices must give way (yield), the vertical bar's only pause. Equal g: both yield.
-  const auto times = times26();
-  const auto bar = [&](float w, float h) {
-    std::vector<test::TinySlice> slices;
-    for (const float t : times)
-      slices.push_back({{{0.5f - w, 0.5f - h}, {0.5f + w, 0.5f - h}, {0.5f + w, 0.5f + h}, {0.5f - w, 0.5f + h}}, t});
-    return slices;
-  };
-  WorldBuilder b;
-  b.add_element(bar(0.1f, 0.01f));
-  b.add_element(bar(0.01f, 0.1f));
-  test::World w = b.build();
+  test::World w = crossing_bars();
   for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = 1.5f;
   int larger = 0, smaller = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
