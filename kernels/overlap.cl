@@ -167,8 +167,7 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
                    __global const float* y, __global const float* t, __global const float* growth,
                    const OverlapGridInfo grid, __global const int* grid_start, __global const int* grid_elements,
-                   float* out_x,
-                   float* out_y) {
+                   float* out_x, float* out_y) {
   const int own = element[v], own_slice = slice[v];
   const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
   const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
