@@ -166,6 +166,44 @@ __kernel void grid_gather(const GridInfo grid,
   slot_ct[k] = ct[tri];
 }
 
+/** The far field's cell aggregates (grid.cpp, build_far_runs): per cell, each run of slots owned by one
+ * element gets, at its first slot, one past its last slot and the mean of its centroids (summed in slot
+ * order, then divided by the count); other slots get 0. One work-item per cell. */
+__kernel void grid_runs(const GridInfo grid,
+                        __global const int* cell_start,   /* input: cells + 1 */
+                        __global const int* slot_element, /* input: per slot (grid_gather) */
+                        __global const float* slot_cx, __global const float* slot_cy,
+                        __global const float* slot_ct,    /* input: per slot */
+                        __global int* run_next,           /* output: per slot */
+                        __global float* run_cx, __global float* run_cy, __global float* run_ct) { /* output */
+  const int c = get_global_id(0);
+  if (c >= grid.cells) return;
+  const int end = cell_start[c + 1];
+  int head = cell_start[c];
+  while (head < end) {
+    const int owner = slot_element[head];
+    float sx = 0.0f, sy = 0.0f, st = 0.0f;
+    int k = head;
+    for (; k < end && slot_element[k] == owner; ++k) {
+      sx = sx + slot_cx[k];
+      sy = sy + slot_cy[k];
+      st = st + slot_ct[k];
+    }
+    const float count = (float)(k - head);
+    run_next[head] = k;
+    run_cx[head] = sx / count;
+    run_cy[head] = sy / count;
+    run_ct[head] = st / count;
+    for (int j = head + 1; j < k; ++j) {
+      run_next[j] = 0;
+      run_cx[j] = 0.0f;
+      run_cy[j] = 0.0f;
+      run_ct[j] = 0.0f;
+    }
+    head = k;
+  }
+}
+
 /** The range of grid slots of the cells cx_lo..cx_hi in row (cy, ct), empty when the row is outside
  * the grid. Cells of one row are consecutive in the linear order, so visiting the range front to back
  * visits the cells in dx order and each cell's triangles in sorted order, as the reference's per-cell

@@ -1,14 +1,15 @@
 /* Repulsion, paper Eq. 1 (src/solver/reference/repulsion.cpp): k_rpl Σ u/|u| · 1/(ε + |u|²) over the
  * exact closest points on the near envelope triangles of other elements, then the centroids of the
- * far ones, in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell),
+ * far ones (or their cells' aggregates, grid_runs), in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell),
  * and the overlap test of Eq. 3 (overlap.cl). */
 
-/** One term of Eq. 1; a point exactly at x has no direction and adds nothing. */
-void repulsion_add_term(float ux, float uy, float ut, float eps, float* sx, float* sy, float* st) {
+/** One term of Eq. 1, `count` times (a far-field run stands for count triangles; 1 is exact); a point
+ * exactly at x has no direction and adds nothing. */
+void repulsion_add_term(float ux, float uy, float ut, float eps, float count, float* sx, float* sy, float* st) {
   const float d2 = ux * ux + uy * uy + ut * ut;
   if (!(d2 > 0.0f)) return;
   const float inv_len = 1.0f / sqrt(d2);
-  const float w = inv_len * (1.0f / (eps + d2));
+  const float w = inv_len * (1.0f / (eps + d2)) * count;
   *sx = *sx + ux * w;
   *sy = *sy + uy * w;
   *st = *st + ut * w;
@@ -27,18 +28,31 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
     const float ux = px - qpx, uy = py - qpy, ut = pt - qpt;
     const float d2 = ux * ux + uy * uy + ut * ut;
     if (d2 < *closest2) *closest2 = d2;
-    repulsion_add_term(ux, uy, ut, eps, sx, sy, st);
+    repulsion_add_term(ux, uy, ut, eps, 1.0f, sx, sy, st);
   }
 }
 
-/** Centroid term of Eq. 1 for every far slot in [range.x, range.y) of triangles not owned by `own`. */
-void repulsion_far_range(int2 range, int own, float px, float py, float pt, float eps,
+/** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
+ * triangle's centroid, or with far_cells every run's mean centroid, counted once per triangle of the run
+ * (grid_runs). The range starts at a cell's first slot, which is a run's first slot. */
+void repulsion_far_range(int2 range, int own, float px, float py, float pt, float eps, int far_cells,
                          __global const int* slot_element, __global const float* slot_cx,
-                         __global const float* slot_cy, __global const float* slot_ct, float* sx, float* sy,
+                         __global const float* slot_cy, __global const float* slot_ct,
+                         __global const int* run_next, __global const float* run_cx,
+                         __global const float* run_cy, __global const float* run_ct, float* sx, float* sy,
                          float* st) {
+  if (far_cells) {
+    for (int k = range.x; k < range.y;) {
+      const int next = run_next[k];
+      if (slot_element[k] != own)
+        repulsion_add_term(px - run_cx[k], py - run_cy[k], pt - run_ct[k], eps, (float)(next - k), sx, sy, st);
+      k = next;
+    }
+    return;
+  }
   for (int k = range.x; k < range.y; ++k) {
     if (slot_element[k] == own) continue;
-    repulsion_add_term(px - slot_cx[k], py - slot_cy[k], pt - slot_ct[k], eps, sx, sy, st);
+    repulsion_add_term(px - slot_cx[k], py - slot_cy[k], pt - slot_ct[k], eps, 1.0f, sx, sy, st);
   }
 }
 
@@ -55,6 +69,8 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global const int* slot_element,        /* input: per grid slot (grid_gather) */
                         __global const int* slot_a, __global const int* slot_b, __global const int* slot_c,
                         __global const float* slot_cx, __global const float* slot_cy, __global const float* slot_ct,
+                        __global const int* run_next,            /* input: per grid slot (grid_runs) */
+                        __global const float* run_cx, __global const float* run_cy, __global const float* run_ct,
                         __global const int* element_slice_begin, /* input: elements + 1 */
                         __global const int* slice_begin,         /* input: slices + 1 */
                         __global const int* slice_boundary,      /* input: per slice */
@@ -94,12 +110,15 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
     for (int dy = -2; dy <= 2; ++dy) {
       if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */
         repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
-                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
       } else {                             /* only the row's two end cells are */
         repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
-                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
         repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
-                            slot_element, slot_cx, slot_cy, slot_ct, &sx, &sy, &st);
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
       }
     }
   }

@@ -49,6 +49,7 @@ typedef struct {
   ap_float cell;         /* cell edge */
   ap_int triangles;      /* envelope triangles */
   ap_int cells;          /* n * n * n */
+  ap_int far_cells;      /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
 } GridInfo;
 
 /* The overlap test's broadphase (reference::OverlapGrid without its arrays), built on the host each

@@ -44,6 +44,8 @@ struct Params {
   double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
   double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
   int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
+  int far_cells = 1;                ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
+                                    ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
 
   // §5.3 growth and stopping
   double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice

@@ -31,6 +31,13 @@ struct CollisionGrid {
   std::vector<std::int32_t> triangle_cell; ///< linear cell of envelope triangle i
   std::vector<std::int32_t> cell_start;    ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
   std::vector<std::int32_t> sorted_triangles;  ///< triangle ids, by cell, increasing id within a cell
+  /// The far field's cell aggregates (docs/parameters.md, "Far field"): a run is the slots of one cell
+  /// that belong to one element (consecutive, since ids are element-major). For a run's first slot k,
+  /// run_next[k] is one past its last slot and run_cx/cy/ct[k] the mean of its centroids (summed in slot
+  /// order, then divided by the count); other slots hold 0. Filled when far_cells is set.
+  bool far_cells = false;
+  std::vector<std::int32_t> run_next;
+  std::vector<float> run_cx, run_cy, run_ct;
 };
 
 /// Cells per axis for a cell edge: the smallest n with n · cell ≥ 1 (25 for 0.04). Throws
@@ -45,6 +52,10 @@ Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_
 
 CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params);
 
+/// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct) and sets far_cells; build_collision_grid
+/// calls it when params.far_cells is 1, and a device backend's read-back grid calls it too.
+void build_far_runs(const Topology& topo, CollisionGrid& grid);
+
 /// Envelope triangles of elements other than `own_element` whose centroids lie in the 3×3×3 block of
 /// cells around q's cell ("near"), or in the 98 cells of the outer shell of the 5×5×5 block ("far").
 /// Cells outside the grid are skipped. Order: cells by dz, dy, dx ascending, then sorted order within
@@ -53,6 +64,11 @@ void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, st
                     std::vector<std::int32_t>& out);
 void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out);
+
+/// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
+/// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
+void far_slots(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+               std::vector<std::int32_t>& out);
 
 // ---- geometry helpers ---------------------------------------------------------------------------------
 
@@ -77,7 +93,8 @@ struct RepulsionResult {
 };
 
 /// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
-/// `near` triangles, then over centroids of `far` triangles. The force is zero when `overlapping` (Eq. 3
+/// `near` triangles, then over the `far` slots (far_slots): a triangle's centroid, or with
+/// grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when `overlapping` (Eq. 3
 /// takes over) or v is not a boundary vertex; `closest` is computed for every boundary vertex.
 /// repulsion.cpp.
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,

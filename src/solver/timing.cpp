@@ -49,7 +49,7 @@ std::int64_t neighbour_visits(const Topology& topology, const SimState& state, c
     if ((topology.flags[v] & vertex_boundary) == 0) continue;
     const Vec3f q{state.x[v], state.y[v], state.t[v]};
     reference::near_triangles(grid, topology, q, topology.element[v], near);
-    reference::far_triangles(grid, topology, q, topology.element[v], far);
+    reference::far_slots(grid, topology, q, topology.element[v], far);
     visits += static_cast<std::int64_t>(near.size() + far.size());
   }
   return visits;

@@ -144,3 +144,72 @@ TEST_CASE("grid: near and far queries equal brute force on random worlds") {
     }
   }
 }
+
+TEST_CASE("grid: far runs split each cell into maximal runs of one element, with their mean centroid") {
+  std::mt19937 rng(777);
+  Params params;
+  params.far_cells = 1;
+  for (int world = 0; world < 4; ++world) {
+    // Few elements make long runs; many make runs of one triangle.
+    const GridWorld w = random_world(rng, 80, world % 2 == 0 ? 300 : 2000, world < 2 ? 2 : 6);
+    const CollisionGrid g = build_collision_grid(w.topo, w.state, params);
+    REQUIRE(g.far_cells);
+    REQUIRE(g.run_next.size() == g.sorted_triangles.size());
+    std::int64_t covered = 0;
+    for (std::int32_t c = 0; c + 1 < static_cast<std::int32_t>(g.cell_start.size()); ++c) {
+      for (std::int32_t head = g.cell_start[c]; head < g.cell_start[c + 1];) {
+        const std::int32_t next = g.run_next[head];
+        INFO("world " << world << " cell " << c << " head " << head);
+        REQUIRE(next > head);
+        REQUIRE(next <= g.cell_start[c + 1]);
+        const std::int32_t owner = w.topo.env_element[g.sorted_triangles[head]];
+        double mx = 0.0, my = 0.0, mt = 0.0;
+        for (std::int32_t k = head; k < next; ++k) {
+          const std::int32_t tri = g.sorted_triangles[k];
+          CHECK(w.topo.env_element[tri] == owner);
+          if (k > head) CHECK(g.run_next[k] == 0);
+          mx += g.cx[tri], my += g.cy[tri], mt += g.ct[tri];
+        }
+        // Maximal: the slot after the run, in the same cell, belongs to another element.
+        if (next < g.cell_start[c + 1]) CHECK(w.topo.env_element[g.sorted_triangles[next]] != owner);
+        const double n = next - head;
+        CHECK(g.run_cx[head] == Approx(mx / n).margin(1e-6));
+        CHECK(g.run_cy[head] == Approx(my / n).margin(1e-6));
+        CHECK(g.run_ct[head] == Approx(mt / n).margin(1e-6));
+        covered += next - head;
+        head = next;
+      }
+    }
+    CHECK(covered == static_cast<std::int64_t>(g.sorted_triangles.size()));
+  }
+}
+
+TEST_CASE("grid: far slots are the far triangles' slots, or one run head per cell and element") {
+  std::mt19937 rng(4242);
+  for (const int cells_mode : {0, 1}) {
+    Params params;
+    params.far_cells = cells_mode;
+    const GridWorld w = random_world(rng, 80, 2000, 3);
+    const CollisionGrid g = build_collision_grid(w.topo, w.state, params);
+    std::vector<std::int32_t> far, slots;
+    for (int query = 0; query < 100; ++query) {
+      const Vec3f q{special_or_random(rng), special_or_random(rng), special_or_random(rng)};
+      const std::int32_t own = std::uniform_int_distribution<int>(0, 3)(rng);
+      INFO("mode " << cells_mode << " q " << q.x << ", " << q.y << ", " << q.t << " own " << own);
+      far_triangles(g, w.topo, q, own, far);
+      far_slots(g, w.topo, q, own, slots);
+      if (cells_mode == 0) {
+        std::vector<std::int32_t> as_triangles;
+        for (const std::int32_t k : slots) as_triangles.push_back(g.sorted_triangles[k]);
+        CHECK(as_triangles == far);
+      } else {
+        // Expanding every run gives back the far triangles, in order.
+        std::vector<std::int32_t> expanded;
+        for (const std::int32_t k : slots)
+          for (std::int32_t j = k; j < g.run_next[k]; ++j) expanded.push_back(g.sorted_triangles[j]);
+        CHECK(expanded == far);
+        CHECK(slots.size() <= far.size());
+      }
+    }
+  }
+}

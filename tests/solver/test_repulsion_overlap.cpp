@@ -34,7 +34,7 @@ Query query(const test::World& w, const CollisionGrid& g, std::int32_t v) {
   Query q;
   const Vec3f p{w.state.x[v], w.state.y[v], w.state.t[v]};
   near_triangles(g, w.topo, p, w.topo.element[v], q.near);
-  far_triangles(g, w.topo, p, w.topo.element[v], q.far);
+  far_slots(g, w.topo, p, w.topo.element[v], q.far);
   return q;
 }
 
@@ -82,6 +82,51 @@ TEST_CASE("repulsion: Eq. 1 from the centroid of a far triangle") {
   CHECK(r.force.y == Approx(uy * s).epsilon(1e-5));
   CHECK(r.force.t == Approx(ut * s).epsilon(1e-5));
   CHECK(std::isinf(r.closest));  // far centroids are not closest points
+}
+
+TEST_CASE("repulsion: a far cell's triangles of one element act from their mean centroid, once per triangle") {
+  // Vertex 0 (element 0) at (0.5, 0.5, 0.5); two triangles of element 1 two cells above in t, in one
+  // cell, with centroids 0.012 apart in x.
+  WorldBuilder b;
+  b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
+  b.add_element({{{{0.482f, 0.482f}, {0.494f, 0.482f}, {0.482f, 0.494f}, {0.494f, 0.494f}, {0.506f, 0.482f},
+                   {0.494f, 0.494f}}, 0.59375f}}, false);
+  test::World w = b.build();
+  w.topo.env_a = {1, 4};
+  w.topo.env_b = {2, 5};
+  w.topo.env_c = {3, 6};
+  w.topo.env_element = {1, 1};
+  Params p = test::paper_params();
+  const auto term = [](double ux, double uy, double ut, double weight, double out[3]) {
+    const double d2 = ux * ux + uy * uy + ut * ut, s = weight * 10.0 / std::sqrt(d2) / (1.0 + d2);
+    out[0] += ux * s, out[1] += uy * s, out[2] += ut * s;
+  };
+
+  p.far_cells = 0;  // the paper: each centroid
+  const CollisionGrid each = build_collision_grid(w.topo, w.state, p);
+  Query q = query(w, each, 0);
+  REQUIRE(q.far.size() == 2);
+  const RepulsionResult r0 = repulsion_force(w.topo, w.state, p, each, 0, q.near, q.far, false);
+  double expected0[3] = {0, 0, 0};
+  for (int tri = 0; tri < 2; ++tri) term(0.5 - each.cx[tri], 0.5 - each.cy[tri], 0.5 - each.ct[tri], 1.0, expected0);
+  CHECK(r0.force.x == Approx(expected0[0]).epsilon(1e-5));
+  CHECK(r0.force.t == Approx(expected0[2]).epsilon(1e-5));
+
+  p.far_cells = 1;  // one aggregate for the cell and element
+  const CollisionGrid cells = build_collision_grid(w.topo, w.state, p);
+  q = query(w, cells, 0);
+  REQUIRE(q.far.size() == 1);
+  const RepulsionResult r1 = repulsion_force(w.topo, w.state, p, cells, 0, q.near, q.far, false);
+  const double mx = (cells.cx[0] + cells.cx[1]) / 2, my = (cells.cy[0] + cells.cy[1]) / 2,
+               mt = (cells.ct[0] + cells.ct[1]) / 2;
+  double expected1[3] = {0, 0, 0};
+  term(0.5 - mx, 0.5 - my, 0.5 - mt, 2.0, expected1);
+  CHECK(r1.force.x == Approx(expected1[0]).epsilon(1e-5));
+  CHECK(r1.force.y == Approx(expected1[1]).epsilon(1e-5));
+  CHECK(r1.force.t == Approx(expected1[2]).epsilon(1e-5));
+  // The aggregate is an approximation of the two terms, not a different force.
+  CHECK(r1.force.t == Approx(r0.force.t).epsilon(0.01));
+  CHECK(r1.force.x != r0.force.x);
 }
 
 TEST_CASE("repulsion: interior vertices get none") {

@@ -64,7 +64,7 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
 
     const Vec3f q{w.state.x[v], w.state.y[v], w.state.t[v]};
     near_triangles(g, w.topo, q, w.topo.element[v], near);
-    far_triangles(g, w.topo, q, w.topo.element[v], far);
+    far_slots(g, w.topo, q, w.topo.element[v], far);
     CHECK((f.contact[v] & contact_overlap) == 0);
     const RepulsionResult rr = repulsion_force(w.topo, w.state, p, g, v, near, far, false);
     CHECK(same(r, rr.force));

@@ -31,6 +31,7 @@ inline animpak::Params paper_params() {
   p.dt = 0.01;
   p.velocity_cap = 10.0;
   p.growth_rate = 0.001;
+  p.far_cells = 0;  // the paper's far shell: every triangle's centroid (Params{} covers the cell aggregates)
   return p;
 }
 

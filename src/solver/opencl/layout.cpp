@@ -8,7 +8,8 @@
 namespace animpak::opencl {
 
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
-static_assert(sizeof(GridInfo) == 16 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12);
+static_assert(sizeof(GridInfo) == 20 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12 &&
+              offsetof(GridInfo, far_cells) == 16);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
@@ -60,6 +61,7 @@ GridInfo grid_info(const Params& params, std::int32_t triangles) {
   g.cell = static_cast<float>(params.cell_size);
   g.triangles = triangles;
   g.cells = g.n * g.n * g.n;
+  g.far_cells = params.far_cells != 0 ? 1 : 0;
   return g;
 }
 

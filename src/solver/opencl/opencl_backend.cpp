@@ -65,6 +65,7 @@ struct TopologyBuffers {
 struct ScratchBuffers {
   cl::Buffer cell_count, cursor, block_sum;                                            // grid sort
   cl::Buffer slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct;          // triangles in cell order
+  cl::Buffer run_next, run_cx, run_cy, run_ct;                                         // far-field cell aggregates
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;          // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;                // per-slice geometry
   cl::Buffer overlap_start, overlap_elements;                                          // overlap broadphase
@@ -229,6 +230,9 @@ class DeviceBackend final : public OpenclBackend {
       read(cell_start_buf_, g.cell_start, "cell_start", true);
     }
     pending_.clear();
+    // The runs are the reference's own, from the arrays just read (the equivalence suite compares the
+    // forces they give, not the buffers).
+    if (grid_.far_cells != 0) reference::build_far_runs(topo_, g);
     return g;
   }
 
@@ -316,6 +320,8 @@ class DeviceBackend final : public OpenclBackend {
     w.slot_element = scratch(it, "slot_element");
     w.slot_a = scratch(it, "slot_a"), w.slot_b = scratch(it, "slot_b"), w.slot_c = scratch(it, "slot_c");
     w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
+    w.run_next = scratch(it, "run_next");
+    w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");
     w.rpl_x = scratch(fn, "repulsion_x"), w.rpl_y = scratch(fn, "repulsion_y"), w.rpl_t = scratch(fn, "repulsion_t");
     w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(n, "repulsion_contact");
     w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");
@@ -351,6 +357,9 @@ class DeviceBackend final : public OpenclBackend {
     grid_gather_ = Kernel(program, "grid_gather");
     grid_gather_.bind(grid_, sorted_buf_, b.env_element, b.env_a, b.env_b, b.env_c, env_cx_, env_cy_, env_ct_,
                       w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct);
+    grid_runs_ = Kernel(program, "grid_runs");
+    grid_runs_.bind(grid_, cell_start_buf_, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx,
+                    w.run_cy, w.run_ct);
   }
 
   // Every other phase of a step, in step order: forces (§5), integration, constraints (§5.2),
@@ -366,7 +375,7 @@ class DeviceBackend final : public OpenclBackend {
     overlap_grid_arg_ =
         repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
                         cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
-                        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
+                        w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
                         growth_, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
@@ -483,6 +492,7 @@ class DeviceBackend final : public OpenclBackend {
       host_sort();
     }
     timed(times_.grid, grid_gather_.run(queue_, grid_.triangles));
+    if (grid_.far_cells != 0) timed(times_.grid, grid_runs_.run(queue_, grid_.cells));
     grid_built_ = true;
   }
 
@@ -559,7 +569,7 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_,
+      grid_order_, grid_gather_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_,
       containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;

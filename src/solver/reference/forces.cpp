@@ -49,7 +49,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     if (boundary) {
       const Vec3f q{px, py, state.t[v]};
       near_triangles(grid, topo, q, topo.element[v], near);
-      far_triangles(grid, topo, q, topo.element[v], far);
+      far_slots(grid, topo, q, topo.element[v], far);
     }
     const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);

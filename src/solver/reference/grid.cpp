@@ -58,7 +58,34 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
     g.triangle_cell[i] = (it * g.n + iy) * g.n + ix;
   }
   counting_sort(g.triangle_cell, cells, g.cell_start, g.sorted_triangles);
+  if (params.far_cells != 0) build_far_runs(topo, g);
   return g;
+}
+
+void build_far_runs(const Topology& topo, CollisionGrid& g) {
+  const std::size_t slots = g.sorted_triangles.size();
+  g.far_cells = true;
+  g.run_next.assign(slots, 0);
+  g.run_cx.assign(slots, 0.0f), g.run_cy.assign(slots, 0.0f), g.run_ct.assign(slots, 0.0f);
+  const std::int32_t cells = static_cast<std::int32_t>(g.cell_start.size()) - 1;
+  for (std::int32_t c = 0; c < cells; ++c) {
+    const std::int32_t end = g.cell_start[c + 1];
+    for (std::int32_t head = g.cell_start[c]; head < end;) {
+      const std::int32_t owner = topo.env_element[g.sorted_triangles[head]];
+      float sx = 0.0f, sy = 0.0f, st = 0.0f;
+      std::int32_t k = head;
+      for (; k < end && topo.env_element[g.sorted_triangles[k]] == owner; ++k) {
+        const std::int32_t tri = g.sorted_triangles[k];
+        sx = sx + g.cx[tri];
+        sy = sy + g.cy[tri];
+        st = st + g.ct[tri];
+      }
+      const float count = static_cast<float>(k - head);
+      g.run_next[head] = k;
+      g.run_cx[head] = sx / count, g.run_cy[head] = sy / count, g.run_ct[head] = st / count;
+      head = k;
+    }
+  }
 }
 
 namespace {
@@ -98,6 +125,29 @@ void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, st
 void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out) {
   collect(grid, topo, q, own_element, 2, 2, out);
+}
+
+void far_slots(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+               std::vector<std::int32_t>& out) {
+  out.clear();
+  const std::int32_t qx = grid_axis_cell(q.x, grid.cell, grid.n);
+  const std::int32_t qy = grid_axis_cell(q.y, grid.cell, grid.n);
+  const std::int32_t qt = grid_axis_cell(q.t, grid.cell, grid.n);
+  for (std::int32_t dz = -2; dz <= 2; ++dz) {
+    for (std::int32_t dy = -2; dy <= 2; ++dy) {
+      for (std::int32_t dx = -2; dx <= 2; ++dx) {
+        if (std::max(std::abs(dz), std::max(std::abs(dy), std::abs(dx))) < 2) continue;
+        const std::int32_t cx = qx + dx, cy = qy + dy, ct = qt + dz;
+        if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
+        const std::int32_t c = (ct * grid.n + cy) * grid.n + cx;
+        for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {
+          const std::int32_t next = grid.far_cells ? grid.run_next[k] : k + 1;
+          if (topo.env_element[grid.sorted_triangles[k]] != own_element) out.push_back(k);
+          k = next;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace animpak::reference

@@ -1,6 +1,7 @@
 // Repulsion force, paper Eq. 1: F_rpl = k_rpl Σ_i u/|u| · 1/(ε + |u|²), u = x − x_i, on vertices of
 // slice boundaries. The x_i are, in this order, the exact closest points on the near envelope
-// triangles of other elements, then the centroids of the far ones (§5.1). All terms are summed, as
+// triangles of other elements, then the centroids of the far ones (§5.1), or with far_cells one mean
+// centroid per far cell and element, weighted by its triangle count (docs/parameters.md, "Far field"). All terms are summed, as
 // the authors' code does, in the grid's visiting order; k_rpl multiplies the sum once at the end.
 #include <cmath>
 
@@ -10,12 +11,13 @@ namespace animpak::reference {
 
 namespace {
 
-// Adds one term of Eq. 1. A point exactly at x has no direction, so it adds nothing rather than NaN.
-void add_term(float ux, float uy, float ut, float eps, Vec3f& sum) {
+// Adds one term of Eq. 1, `count` times (a far-field run stands for count triangles; 1 is exact). A
+// point exactly at x has no direction, so it adds nothing rather than NaN.
+void add_term(float ux, float uy, float ut, float eps, Vec3f& sum, float count = 1.0f) {
   const float d2 = ux * ux + uy * uy + ut * ut;
   if (!(d2 > 0.0f)) return;
   const float inv_len = 1.0f / std::sqrt(d2);
-  const float w = inv_len * (1.0f / (eps + d2));
+  const float w = inv_len * (1.0f / (eps + d2)) * count;
   sum.x = sum.x + ux * w;
   sum.y = sum.y + uy * w;
   sum.t = sum.t + ut * w;
@@ -43,7 +45,16 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
     if (d2 < closest2) closest2 = d2;
     add_term(ux, uy, ut, eps, sum);
   }
-  for (const std::int32_t tri : far) add_term(x.x - grid.cx[tri], x.y - grid.cy[tri], x.t - grid.ct[tri], eps, sum);
+  // Far slots: each triangle's centroid (§5.1), or each run's mean centroid for its triangles together.
+  for (const std::int32_t k : far) {
+    if (grid.far_cells) {
+      const float count = static_cast<float>(grid.run_next[k] - k);
+      add_term(x.x - grid.run_cx[k], x.y - grid.run_cy[k], x.t - grid.run_ct[k], eps, sum, count);
+    } else {
+      const std::int32_t tri = grid.sorted_triangles[k];
+      add_term(x.x - grid.cx[tri], x.y - grid.cy[tri], x.t - grid.ct[tri], eps, sum);
+    }
+  }
 
   // The closest distance feeds the stop test even while the vertex overlaps.
   r.closest = std::sqrt(closest2);
