@@ -276,3 +276,26 @@ TEST_CASE("build_world: warns when slices are farther apart in t than the collis
   CHECK_FALSE(warned(world_of(star_scene(2, 20, 1))));
   CHECK_FALSE(warned(world_of(star_scene(2, 5, 1, {"", R"("cell_size": 0.1)"}))));
 }
+
+TEST_CASE("build_world: the aquatic-loop example is at the paper's Fig. 1 scale, with two penguins that swap") {
+  // Table 1: 37 elements, 97,800 vertices; §3.1: 100 slices. Fig. 1: two guided penguins, each ending
+  // where the other starts (a loop constraint between distinct elements).
+  const World w = make_world(load_scene(animpak::test::example_file("aquatic-loop/scene.json")));
+  const Topology& topo = w.topology;
+  CHECK(w.elements.size() == 37);
+  CHECK(topo.vertex_count() >= 90000);
+  CHECK(topo.vertex_count() <= 110000);
+  for (const ElementInstance& e : w.elements) CHECK(w.library[e.library].slice_count == 100);
+  std::vector<const ElementInstance*> guided;
+  for (const ElementInstance& e : w.elements)
+    if (e.guided) guided.push_back(&e);
+  REQUIRE(guided.size() == 2);
+  for (const ElementInstance* e : guided) CHECK(w.library[e->library].name == "penguin");
+  // Each penguin's last slice is looped onto the other's first.
+  std::set<std::pair<std::int32_t, std::int32_t>> across;
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i)
+    across.insert({topo.element[topo.loop_end[i]], topo.element[topo.loop_start[i]]});
+  const auto index = [&](const ElementInstance* e) { return static_cast<std::int32_t>(e - w.elements.data()); };
+  CHECK(across.count({index(guided[0]), index(guided[1])}) == 1);
+  CHECK(across.count({index(guided[1]), index(guided[0])}) == 1);
+}
