@@ -2,31 +2,63 @@
  * k_bdr (p_b − x) in x, y for a vertex outside the container (even-odd over every ring, so inside a
  * hole is outside); a vertex still outside after a step moves onto the boundary. */
 
+/** Row or column of the container index holding c (container_index_axis in state.hpp). */
+int container_index_axis(float c, float origin, float cell, int n) {
+  float f = floor((c - origin) / cell);
+  if (!(f >= 0.0f)) f = 0.0f;
+  const float last = (float)(n - 1);
+  if (f > last) f = last;
+  return (int)f;
+}
+
+/** One segment's turn at the nearest point: the first segment (by index) reaching the minimum wins. */
+void container_try_segment(int i, float px, float py, __global const float* ax, __global const float* ay,
+                           __global const float* bx, __global const float* by, float* distance2, float* qx,
+                           float* qy) {
+  float cx, cy;
+  const float d2 = closest_point_on_segment(px, py, ax[i], ay[i], bx[i], by[i], &cx, &cy);
+  if (d2 < *distance2) {
+    *distance2 = d2;
+    *qx = cx;
+    *qy = cy;
+  }
+}
+
 /** The container query (reference container_query): returns whether (px, py) is inside; when it is not,
  * or when `nearest`, also the squared distance to and the nearest point on the boundary (the first
- * segment reaching the minimum wins). Without a container every point is inside, at +inf. */
-bool container_query(int segments, float px, float py, bool nearest, __global const float* ax,
-                     __global const float* ay, __global const float* bx, __global const float* by,
-                     float* distance2, float* qx, float* qy) {
+ * segment reaching the minimum wins). With the index, the even-odd ray tries only the segments of py's
+ * band and the nearest point only those of the point's cell (or every segment outside the grid), in
+ * index order: the same answer as trying every segment. Without a container every point is inside, at
+ * +inf. */
+bool container_query(int segments, const ContainerIndexInfo ix, __global const int* index, float px, float py,
+                     bool nearest, __global const float* ax, __global const float* ay, __global const float* bx,
+                     __global const float* by, float* distance2, float* qx, float* qy) {
   *distance2 = INFINITY;
   *qx = 0.0f;
   *qy = 0.0f;
   if (segments == 0) return true;
   bool inside = false;
-  for (int i = 0; i < segments; ++i)
-    if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;
+  if (ix.nx > 0) {
+    const int j = container_index_axis(py, ix.y0, ix.cell, ix.ny);
+    for (int k = index[j]; k < index[j + 1]; ++k) {
+      const int i = index[ix.band_segments + k];
+      if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;
+    }
+  } else {
+    for (int i = 0; i < segments; ++i)
+      if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;
+  }
   *qx = px;
   *qy = py;
   if (inside && !nearest) return true;
 
-  for (int i = 0; i < segments; ++i) {
-    float cx, cy;
-    const float d2 = closest_point_on_segment(px, py, ax[i], ay[i], bx[i], by[i], &cx, &cy);
-    if (d2 < *distance2) {
-      *distance2 = d2;
-      *qx = cx;
-      *qy = cy;
-    }
+  const float fx = floor((px - ix.x0) / ix.cell), fy = floor((py - ix.y0) / ix.cell);
+  if (ix.nx > 0 && fx >= 0.0f && fy >= 0.0f && fx < (float)ix.nx && fy < (float)ix.ny) {
+    const int c = (int)fy * ix.nx + (int)fx;
+    for (int k = index[ix.cell_start + c]; k < index[ix.cell_start + c + 1]; ++k)
+      container_try_segment(index[ix.cell_segments + k], px, py, ax, ay, bx, by, distance2, qx, qy);
+  } else {
+    for (int i = 0; i < segments; ++i) container_try_segment(i, px, py, ax, ay, bx, by, distance2, qx, qy);
   }
   return inside;
 }
@@ -54,13 +86,17 @@ void boundary_force(const ForceParams p, bool inside, float distance2, float qx,
 __kernel void containment(const WorldInfo world,
                           __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
                           __global const float* seg_bx, __global const float* seg_by, /* input */
+                          const ContainerIndexInfo container_index,                   /* the container's index */
+                          __global const int* index,                                  /* input: its lists */
                           __global float* x, __global float* y,    /* input/output: positions */
                           __global float* vx, __global float* vy) { /* input/output: velocities */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v];
   float d2, qx, qy;
-  if (container_query(world.segments, px, py, false, seg_ax, seg_ay, seg_bx, seg_by, &d2, &qx, &qy)) return;
+  if (container_query(world.segments, container_index, index, px, py, false, seg_ax, seg_ay, seg_bx, seg_by, &d2, &qx,
+                      &qy))
+    return;
   const float dx = qx - px, dy = qy - py;
   const float e2 = dx * dx + dy * dy;
   if (!(e2 > 0.0f)) return;

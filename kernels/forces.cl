@@ -28,6 +28,8 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
                           __global const float* target_x, __global const float* target_y, __global const float* target_t, /* input */
                           __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
                           __global const float* seg_bx, __global const float* seg_by, /* input */
+                          const ContainerIndexInfo container_index,                   /* the container's index */
+                          __global const int* container_lists,                        /* input: its lists */
                           __global const float* slice_cx, __global const float* slice_cy, /* input: slice centroids */
                           __global float* fx, __global float* fy, __global float* ft, /* output: Eq. 7 per vertex */
                           __global float* closest,            /* output: distance to the nearest element or wall */
@@ -43,7 +45,8 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   const float rpl_x = boundary ? rpl_x_in[v] : 0.0f, rpl_y = boundary ? rpl_y_in[v] : 0.0f,
               rpl_t = boundary ? rpl_t_in[v] : 0.0f, dist = boundary ? rpl_closest[v] : INFINITY;
   float wall2, wall_qx, wall_qy;
-  const bool in_container = container_query(world.segments, px, py, boundary, seg_ax, seg_ay, seg_bx, seg_by, &wall2,
+  const bool in_container = container_query(world.segments, container_index, container_lists, px, py, boundary, seg_ax,
+                                            seg_ay, seg_bx, seg_by, &wall2,
                                             &wall_qx, &wall_qy);
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);

@@ -60,6 +60,15 @@ typedef struct {
   ap_float cell, cell_t;       /* cell edge in x and y, in t */
 } OverlapGridInfo;
 
+/* The container query's index (ContainerIndex in include/animpak/state.hpp without its list array, which
+ * is passed as one int buffer: band_start at 0, the band lists from band_segments, cell_start from
+ * cell_start, the cell lists from cell_segments). nx == 0: no index, every query tries every segment. */
+typedef struct {
+  ap_float x0, y0, cell;
+  ap_int nx, ny;
+  ap_int band_segments, cell_start, cell_segments;
+} ContainerIndexInfo;
+
 /* Every Params constant a kernel uses, converted once to float by the host exactly as the reference
  * converts it (static_cast<float>, products formed in double first). */
 typedef struct {

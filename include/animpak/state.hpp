@@ -32,11 +32,41 @@ enum ContactBit : std::uint8_t {
   contact_yield = 16,   ///< overlaps an element no larger than its own slice there (growth shrinks; else pauses)
 };
 
+/// The container query's index over the segments (docs/architecture.md, "The container query"): an
+/// nx × ny cell grid over the segments' bounding box. Row j of the grid is a band of y: its segments are
+/// those whose y range meets the band, the only ones the even–odd ray at a y in the band can cross.
+/// Cell (i, j) lists every segment that can be nearest to some point of the cell (its distance to the
+/// cell is at most the smallest largest-distance of any segment to the cell). Lists ascend by segment
+/// index. All lists live in `data`: band_start (ny + 1 entries) at 0, then the band lists from
+/// `band_segments`, cell_start (nx · ny + 1) from `cell_start`, the cell lists from `cell_segments`.
+/// nx = 0: no index, every query tries every segment.
+struct ContainerIndex {
+  float x0 = 0.0f, y0 = 0.0f, cell = 0.0f;
+  std::int32_t nx = 0, ny = 0;
+  std::int32_t band_segments = 0, cell_start = 0, cell_segments = 0;
+  std::vector<std::int32_t> data;
+};
+
 /// The container extruded over t: line segments of the outline and of every hole.
 struct ContainerGeometry {
   std::vector<float> ax, ay, bx, by;  ///< segment i runs from (ax[i], ay[i]) to (bx[i], by[i])
   std::vector<std::int32_t> ring_begin;  ///< ring r is segments [ring_begin[r], ring_begin[r+1]); ring 0 the outline
+  ContainerIndex index;                  ///< built by index_container; empty: every query tries every segment
 };
+
+/// Row or column of the index grid holding coordinate c: clamp(floor((c − origin) / cell), 0, n − 1) in
+/// float, NaN to 0 (kernels/boundary.cl has the same function).
+inline std::int32_t container_index_axis(float c, float origin, float cell, std::int32_t n) {
+  float f = std::floor((c - origin) / cell);
+  if (!(f >= 0.0f)) f = 0.0f;
+  const float last = static_cast<float>(n - 1);
+  if (f > last) f = last;
+  return static_cast<std::int32_t>(f);
+}
+
+/// Builds box.index for `cells` cells along the longer side of the segments' bounding box (square cells;
+/// a container without segments gets none). src/scene/container_index.cpp.
+void index_container(ContainerGeometry& box, std::int32_t cells = 32);
 
 /// Everything that does not move during a simulation. Vertex ids are global (all elements).
 struct Topology {

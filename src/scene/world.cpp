@@ -119,6 +119,7 @@ void container_segments(Topology& topo, const Container& c) {
   add_ring(c.outline);
   for (const auto& h : c.holes) add_ring(h);
   topo.container.ring_begin.push_back(static_cast<std::int32_t>(topo.container.ax.size()));
+  index_container(topo.container);
 }
 
 }  // namespace

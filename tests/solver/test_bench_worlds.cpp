@@ -31,7 +31,10 @@ TEST_CASE("Bench worlds: neighbour visits per vertex stay within 1.5x at constan
   INFO("constant density: " << constant[0] << ", " << constant[1] << ", " << constant[2]);
   INFO("dense: " << dense[0] << ", " << dense[1] << ", " << dense[2]);
   const auto [lo, hi] = std::minmax_element(constant.begin(), constant.end());
-  CHECK(*lo > 10.0);  // the copies have neighbours in reach at every size
+  // The copies have neighbours in reach at every size. A visit is a near triangle or a far cell
+  // aggregate (far_cells, docs/parameters.md "Far field"): about 6 per vertex in these worlds of small
+  // stars, against about 120 when every far triangle counted.
+  CHECK(*lo > 3.0);
   CHECK(*hi < 1.5 * *lo);
   CHECK(dense[2] > 5.0 * std::max(dense[0], 1.0));
   CHECK(dense[2] > 3.0 * constant[2]);

@@ -2,7 +2,11 @@
 // of §5.3, a slice at the wall stops growing, and a vertex that a step leaves outside is put back.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "animpak/run.hpp"
 #include "animpak/scene.hpp"
@@ -90,4 +94,73 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
   for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v)
     outside += !w.container.contains({r.last_good.x[v], r.last_good.y[v]});
   CHECK(outside == 0);
+}
+
+namespace {
+
+// A ring of `n` points on an ellipse about (cx, cy), wobbling in radius so the segments differ in length.
+test::Ring wobbly_ring(float cx, float cy, float rx, float ry, int n, float wobble, bool reverse) {
+  test::Ring r;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * 3.14159265358979 * k / n;
+    const double s = 1.0 + wobble * std::sin(5.0 * a);
+    r.push_back({static_cast<float>(cx + rx * s * std::cos(a)), static_cast<float>(cy + ry * s * std::sin(a))});
+  }
+  if (reverse) std::reverse(r.begin(), r.end());
+  return r;
+}
+
+bool same_float(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+TEST_CASE("containment: the container index answers every query exactly as trying every segment does") {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<float> coord(-0.3f, 1.3f);
+  const std::vector<std::vector<test::Ring>> containers = {
+      {wobbly_ring(0.5f, 0.5f, 0.45f, 0.4f, 300, 0.05f, false), wobbly_ring(0.5f, 0.5f, 0.15f, 0.12f, 120, 0.1f, true)},
+      {wobbly_ring(0.5f, 0.5f, 0.48f, 0.48f, 64, 0.0f, false)},  // a circle: its middle is near every segment
+      {test::square(0.5f, 0.5f, 0.5f), test::square(0.3f, 0.3f, 0.05f), test::square(0.7f, 0.6f, 0.1f)},
+  };
+  for (std::size_t c = 0; c < containers.size(); ++c) {
+    WorldBuilder b;
+    b.set_container(containers[c]);
+    const test::World w = b.build();
+    const ContainerGeometry& indexed = w.topo.container;
+    REQUIRE(indexed.index.nx > 0);
+    ContainerGeometry plain = indexed;
+    plain.index = ContainerIndex{};
+    // Random points, the segments' end points and middles, points on cell borders, outside the grid, NaN.
+    std::vector<std::array<float, 2>> points;
+    for (int k = 0; k < 4000; ++k) points.push_back({coord(rng), coord(rng)});
+    for (std::size_t i = 0; i < indexed.ax.size(); ++i) {
+      points.push_back({indexed.ax[i], indexed.ay[i]});
+      points.push_back({0.5f * (indexed.ax[i] + indexed.bx[i]), 0.5f * (indexed.ay[i] + indexed.by[i])});
+    }
+    for (int k = 0; k <= indexed.index.nx; ++k)
+      points.push_back({indexed.index.x0 + static_cast<float>(k) * indexed.index.cell, coord(rng)});
+    for (int k = 0; k <= indexed.index.ny; ++k)
+      points.push_back({coord(rng), indexed.index.y0 + static_cast<float>(k) * indexed.index.cell});
+    points.push_back({std::nanf(""), 0.5f});
+    points.push_back({0.5f, std::nanf("")});
+    std::size_t inside = 0, listed = 0;
+    for (const auto& p : points) {
+      for (const bool nearest : {false, true}) {
+        const ContainerQuery a = container_query(indexed, p[0], p[1], nearest);
+        const ContainerQuery e = container_query(plain, p[0], p[1], nearest);
+        INFO("container " << c << " point " << p[0] << ", " << p[1] << " nearest " << nearest);
+        CHECK(a.inside == e.inside);
+        CHECK(same_float(a.distance2, e.distance2));
+        CHECK(same_float(a.qx, e.qx));
+        CHECK(same_float(a.qy, e.qy));
+        inside += a.inside ? 1 : 0;
+      }
+    }
+    CHECK(inside > points.size() / 4);  // the points test both sides of the wall
+    // The index must actually narrow the search: fewer segments per cell than the container has.
+    const ContainerIndex& ix = indexed.index;
+    for (std::int32_t cell = 0; cell < ix.nx * ix.ny; ++cell)
+      listed += static_cast<std::size_t>(ix.data[ix.cell_start + cell + 1] - ix.data[ix.cell_start + cell]);
+    CHECK(listed < static_cast<std::size_t>(ix.nx * ix.ny) * indexed.ax.size() / 2);
+  }
 }

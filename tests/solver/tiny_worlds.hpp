@@ -133,6 +133,7 @@ class WorldBuilder {
       }
     }
     c.ring_begin.push_back(static_cast<std::int32_t>(c.ax.size()));
+    index_container(c);  // as a scene's world does, so every test world queries through the index
     topo_.container = c;
   }
 

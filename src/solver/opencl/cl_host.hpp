@@ -47,4 +47,7 @@ ForceParams force_params(const Params& params);
 /// The grid description for `triangles` envelope triangles (cells per axis as reference::grid_cells_per_axis).
 GridInfo grid_info(const Params& params, std::int32_t triangles);
 
+/// The container index's sizes and offsets for the kernels (its lists go in one int buffer).
+ContainerIndexInfo container_index_info(const ContainerIndex& index);
+
 }  // namespace animpak::opencl

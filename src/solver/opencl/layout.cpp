@@ -10,6 +10,8 @@ namespace animpak::opencl {
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
 static_assert(sizeof(GridInfo) == 20 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12 &&
               offsetof(GridInfo, far_cells) == 16);
+static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, nx) == 12 &&
+              offsetof(ContainerIndexInfo, cell_segments) == 28);
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
@@ -53,6 +55,11 @@ ForceParams force_params(const Params& params) {
   p.k_target_angle = static_cast<float>(params.k_target_angle);
   p.wall_range2 = static_cast<float>(params.wall_range * params.wall_range);
   return p;
+}
+
+ContainerIndexInfo container_index_info(const ContainerIndex& index) {
+  return {index.x0, index.y0, index.cell, index.nx, index.ny, index.band_segments, index.cell_start,
+          index.cell_segments};
 }
 
 GridInfo grid_info(const Params& params, std::int32_t triangles) {

@@ -56,7 +56,7 @@ struct TopologyBuffers {
   cl::Buffer slice_begin, slice_boundary, slice_element, element_slice_begin;
   cl::Buffer env_a, env_b, env_c, env_element;
   cl::Buffer target_x, target_y, target_t;
-  cl::Buffer seg_ax, seg_ay, seg_bx, seg_by;
+  cl::Buffer seg_ax, seg_ay, seg_bx, seg_by, container_index;
   cl::Buffer loop_end, loop_start;
   cl::Buffer rest_copy_x, rest_copy_y, rest_copy_t, rest_copy_cx, rest_copy_cy;
 };
@@ -295,6 +295,7 @@ class DeviceBackend final : public OpenclBackend {
     b.target_t = in(topo_.target_t, "target_t");
     b.seg_ax = in(topo_.container.ax, "container.ax"), b.seg_ay = in(topo_.container.ay, "container.ay");
     b.seg_bx = in(topo_.container.bx, "container.bx"), b.seg_by = in(topo_.container.by, "container.by");
+    b.container_index = in(topo_.container.index.data, "container.index");
     b.loop_end = in(topo_.loop_end, "loop_end"), b.loop_start = in(topo_.loop_start, "loop_start");
     b.rest_copy_x = in(topo_.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo_.rest_copy_y, "rest_copy_y");
     b.rest_copy_t = in(topo_.rest_copy_t, "rest_copy_t");
@@ -384,7 +385,8 @@ class DeviceBackend final : public OpenclBackend {
         forces_.bind(world_, p, x_, y_, t_, b.slice, b.flags, b.rest_t, b.rest_dir_x, b.rest_dir_y, b.target,
                      b.spring_begin, b.spring_other, b.spring_class, rest_, b.tri_a, b.tri_b, b.tri_c, b.tri_begin,
                      b.tri_list, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y,
-                     b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, w.slice_cx,
+                     b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
+                     opencl::container_index_info(topo_.container.index), b.container_index, w.slice_cx,
                      w.slice_cy, fx_, fy_, ft_, closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
@@ -394,7 +396,8 @@ class DeviceBackend final : public OpenclBackend {
     loop_ = Kernel(program, "loop_constraint");
     loop_.bind(world_, b.loop_end, b.loop_start, x_, y_);
     containment_ = Kernel(program, "containment");
-    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, x_, y_, vx_, vy_);
+    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, opencl::container_index_info(topo_.container.index),
+                      b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, b.slice_begin, contact_, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");

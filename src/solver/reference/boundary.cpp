@@ -21,16 +21,27 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
   ContainerQuery q;
   const std::size_t segments = box.ax.size();
   if (segments == 0) return q;
+  const ContainerIndex& ix = box.index;
   bool inside = false;
-  for (std::size_t i = 0; i < segments; ++i)
-    if (ray_crosses_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i])) inside = !inside;
+  if (ix.nx > 0) {
+    // Only segments whose y range holds py can cross the ray; the band lists them in index order.
+    const std::int32_t j = container_index_axis(py, ix.y0, ix.cell, ix.ny);
+    for (std::int32_t k = ix.data[j]; k < ix.data[j + 1]; ++k) {
+      const std::int32_t i = ix.data[ix.band_segments + k];
+      if (ray_crosses_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i])) inside = !inside;
+    }
+  } else {
+    for (std::size_t i = 0; i < segments; ++i)
+      if (ray_crosses_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i])) inside = !inside;
+  }
   q.inside = inside;
   q.qx = px;
   q.qy = py;
   if (inside && !nearest) return q;
 
-  // Closest point over all segments; the first segment reaching the minimum wins.
-  for (std::size_t i = 0; i < segments; ++i) {
+  // Closest point; the first segment (by index) reaching the minimum wins. Inside the index's grid, the
+  // cell's list holds every segment that can be nearest there, in index order; elsewhere every segment.
+  const auto try_segment = [&](std::int32_t i) {
     float cx, cy;
     const float d2 = closest_point_on_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i], cx, cy);
     if (d2 < q.distance2) {
@@ -38,6 +49,14 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
       q.qx = cx;
       q.qy = cy;
     }
+  };
+  const float fx = std::floor((px - ix.x0) / ix.cell), fy = std::floor((py - ix.y0) / ix.cell);
+  if (ix.nx > 0 && fx >= 0.0f && fy >= 0.0f && fx < static_cast<float>(ix.nx) && fy < static_cast<float>(ix.ny)) {
+    const std::int32_t c = static_cast<std::int32_t>(fy) * ix.nx + static_cast<std::int32_t>(fx);
+    for (std::int32_t k = ix.data[ix.cell_start + c]; k < ix.data[ix.cell_start + c + 1]; ++k)
+      try_segment(ix.data[ix.cell_segments + k]);
+  } else {
+    for (std::size_t i = 0; i < segments; ++i) try_segment(static_cast<std::int32_t>(i));
   }
   return q;
 }
