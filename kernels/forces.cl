@@ -46,8 +46,7 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
               rpl_t = boundary ? rpl_t_in[v] : 0.0f, dist = boundary ? rpl_closest[v] : INFINITY;
   float wall2, wall_qx, wall_qy;
   const bool in_container = container_query(world.segments, container_index, container_lists, px, py, boundary, seg_ax,
-                                            seg_ay, seg_bx, seg_by, &wall2,
-                                            &wall_qx, &wall_qy);
+                                            seg_ay, seg_bx, seg_by, &wall2, &wall_qx, &wall_qy);
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
   float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;

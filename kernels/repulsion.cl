@@ -1,7 +1,7 @@
 /* Repulsion, paper Eq. 1 (src/solver/reference/repulsion.cpp): k_rpl Σ u/|u| · 1/(ε + |u|²) over the
  * exact closest points on the near envelope triangles of other elements, then the centroids of the
- * far ones (or their cells' aggregates, grid_runs), in the grid's visiting order (cells by dz, dy, dx ascending, sorted order within a cell),
- * and the overlap test of Eq. 3 (overlap.cl). */
+ * far ones (or their cells' aggregates, grid_runs), in the grid's visiting order (cells by dz, dy, dx
+ * ascending, sorted order within a cell), and the overlap test of Eq. 3 (overlap.cl). */
 
 /** One term of Eq. 1, `count` times (a far-field run stands for count triangles; 1 is exact); a point
  * exactly at x has no direction and adds nothing. */

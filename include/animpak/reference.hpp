@@ -52,8 +52,8 @@ Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_
 
 CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params);
 
-/// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct) and sets far_cells; build_collision_grid
-/// calls it when params.far_cells is 1, and a device backend's read-back grid calls it too.
+/// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct) and sets far_cells;
+/// build_collision_grid calls it when params.far_cells is 1, and a device backend's read-back grid too.
 void build_far_runs(const Topology& topo, CollisionGrid& grid);
 
 /// Envelope triangles of elements other than `own_element` whose centroids lie in the 3×3×3 block of
@@ -94,8 +94,9 @@ struct RepulsionResult {
 
 /// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
 /// `near` triangles, then over the `far` slots (far_slots): a triangle's centroid, or with
-/// grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when `overlapping` (Eq. 3
-/// takes over) or v is not a boundary vertex; `closest` is computed for every boundary vertex.
+/// grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when
+/// `overlapping` (Eq. 3 takes over) or v is not a boundary vertex; `closest` is computed for every
+/// boundary vertex.
 /// repulsion.cpp.
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
                                 const CollisionGrid& grid, std::int32_t v,

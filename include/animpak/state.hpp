@@ -32,9 +32,10 @@ enum ContactBit : std::uint8_t {
   contact_yield = 16,   ///< overlaps an element no larger than its own slice there (growth shrinks; else pauses)
 };
 
-/// The container query's index over the segments (docs/architecture.md, "The container query"): an
-/// nx × ny cell grid over the segments' bounding box. Row j of the grid is a band of y: its segments are
-/// those whose y range meets the band, the only ones the even–odd ray at a y in the band can cross.
+/// The container query's index over the segments (docs/architecture.md, "The far field and the
+/// container query"): an nx × ny cell grid over the segments' bounding box. Row j of the grid is a band
+/// of y: its segments are those whose y range meets the band, the only ones the even–odd ray at a y in
+/// the band can cross.
 /// Cell (i, j) lists every segment that can be nearest to some point of the cell (its distance to the
 /// cell is at most the smallest largest-distance of any segment to the cell). Lists ascend by segment
 /// index. All lists live in `data`: band_start (ny + 1 entries) at 0, then the band lists from

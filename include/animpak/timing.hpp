@@ -21,7 +21,8 @@ struct StepTiming {
 StepTiming time_steps(Backend& backend, const Params& params, int warmup, int steps);
 
 /// Envelope triangles (near block) and far-field slots (far shell: triangles, or cell aggregates with
-/// far_cells) the repulsion queries of one step visit, summed over boundary vertices: the work the force phase does, which grows with local density, not with size.
+/// far_cells) the repulsion queries of one step visit, summed over boundary vertices: the work the force
+/// phase does, which grows with local density, not with size.
 std::int64_t neighbour_visits(const Topology& topology, const SimState& state, const Params& params);
 
 }  // namespace animpak

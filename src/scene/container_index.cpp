@@ -1,6 +1,6 @@
 // The container query's index (include/animpak/state.hpp, ContainerIndex; docs/architecture.md, "The
-// container query"), built once with the world: per row of a cell grid the segments the even–odd ray can
-// cross, per cell the segments that can be nearest to a point in it. The bounds are computed in double
+// far field and the container query"), built once with the world: per row of a cell grid the segments
+// the even–odd ray can cross, per cell the segments that can be nearest to a point in it. The bounds are computed in double
 // and grown by a margin, so the lists are supersets and a query answers exactly as brute force does.
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,8 @@ bool segments_cross(double ax, double ay, double bx, double by, double cx, doubl
   };
   const double o1 = orient(ax, ay, bx, by, cx, cy), o2 = orient(ax, ay, bx, by, dx, dy);
   const double o3 = orient(cx, cy, dx, dy, ax, ay), o4 = orient(cx, cy, dx, dy, bx, by);
-  return ((o1 <= 0.0 && o2 >= 0.0) || (o1 >= 0.0 && o2 <= 0.0)) && ((o3 <= 0.0 && o4 >= 0.0) || (o3 >= 0.0 && o4 <= 0.0));
+  const auto opposite = [](double a, double b) { return (a <= 0.0 && b >= 0.0) || (a >= 0.0 && b <= 0.0); };
+  return opposite(o1, o2) && opposite(o3, o4);
 }
 
 // Distance from a segment to a box [x0, x1] × [y0, y1] (0 when they meet), in double.

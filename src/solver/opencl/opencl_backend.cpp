@@ -376,8 +376,9 @@ class DeviceBackend final : public OpenclBackend {
     overlap_grid_arg_ =
         repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
                         cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
-                        w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
-                        growth_, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
+                        w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
+                        b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, w.rpl_x, w.rpl_y, w.rpl_t,
+                        w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
     forces_ = Kernel(program, "step_forces");
@@ -396,8 +397,8 @@ class DeviceBackend final : public OpenclBackend {
     loop_ = Kernel(program, "loop_constraint");
     loop_.bind(world_, b.loop_end, b.loop_start, x_, y_);
     containment_ = Kernel(program, "containment");
-    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by, opencl::container_index_info(topo_.container.index),
-                      b.container_index, x_, y_, vx_, vy_);
+    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
+                      opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, b.slice_begin, contact_, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");
@@ -572,8 +573,8 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_, constraints_, loop_,
-      containment_, propose_growth_, grow_, rest_lengths_, statistics_;
+      grid_order_, grid_gather_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_,
+      constraints_, loop_, containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
   reference::SliceBoxes boxes_;

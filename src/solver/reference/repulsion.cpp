@@ -1,8 +1,9 @@
 // Repulsion force, paper Eq. 1: F_rpl = k_rpl Σ_i u/|u| · 1/(ε + |u|²), u = x − x_i, on vertices of
 // slice boundaries. The x_i are, in this order, the exact closest points on the near envelope
 // triangles of other elements, then the centroids of the far ones (§5.1), or with far_cells one mean
-// centroid per far cell and element, weighted by its triangle count (docs/parameters.md, "Far field"). All terms are summed, as
-// the authors' code does, in the grid's visiting order; k_rpl multiplies the sum once at the end.
+// centroid per far cell and element, weighted by its triangle count (docs/parameters.md, "Far
+// field"). All terms are summed, as the authors' code does, in the grid's visiting order; k_rpl
+// multiplies the sum once at the end.
 #include <cmath>
 
 #include "animpak/reference.hpp"
