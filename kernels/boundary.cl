@@ -2,15 +2,6 @@
  * k_bdr (p_b − x) in x, y for a vertex outside the container (even-odd over every ring, so inside a
  * hole is outside); a vertex still outside after a step moves onto the boundary. */
 
-/** Row or column of the container index holding c (container_index_axis in state.hpp). */
-int container_index_axis(float c, float origin, float cell, int n) {
-  float f = floor((c - origin) / cell);
-  if (!(f >= 0.0f)) f = 0.0f;
-  const float last = (float)(n - 1);
-  if (f > last) f = last;
-  return (int)f;
-}
-
 /** One segment's turn at the nearest point: the first segment (by index) reaching the minimum wins. */
 void container_try_segment(int i, float px, float py, __global const float* ax, __global const float* ay,
                            __global const float* bx, __global const float* by, float* distance2, float* qx,
@@ -39,7 +30,7 @@ bool container_query(int segments, const ContainerIndexInfo ix, __global const i
   if (segments == 0) return true;
   bool inside = false;
   if (ix.nx > 0) {
-    const int j = container_index_axis(py, ix.y0, ix.cell, ix.ny);
+    const int j = grid_axis_cell(py - ix.y0, ix.cell, ix.ny);  /* grid.cl */
     for (int k = index[j]; k < index[j + 1]; ++k) {
       const int i = index[ix.band_segments + k];
       if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;

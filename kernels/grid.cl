@@ -2,7 +2,7 @@
  * counting sort (or its host twin in opencl_backend.cpp), the per-slot copies the force kernels read,
  * and the row ranges they walk. */
 
-/** Cell of one coordinate: clamp(floor(c / cell), 0, n - 1) in float, NaN to 0 (grid.cpp). */
+/** Cell of one coordinate: clamp(floor(c / cell), 0, n - 1) in float, NaN to 0 (state.hpp). */
 int grid_axis_cell(float c, float cell, int n) {
   float f = floor(c / cell);
   if (!(f >= 0.0f)) f = 0.0f;

@@ -44,8 +44,8 @@ struct CollisionGrid {
 /// std::invalid_argument unless 0 < cell_size ≤ 1.
 std::int32_t grid_cells_per_axis(double cell_size);
 
-/// Cell index of one coordinate: clamp(floor(c / cell), 0, n − 1); NaN goes to cell 0.
-std::int32_t grid_axis_cell(float c, float cell, std::int32_t n);
+/// Cell index of one coordinate: clamp(floor(c / cell), 0, n − 1); NaN goes to cell 0 (state.hpp).
+using animpak::grid_axis_cell;
 
 /// Centroid (a + b + c) / 3 of envelope triangle i, summed left to right.
 Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_t i);

@@ -55,16 +55,19 @@ struct ContainerGeometry {
   ContainerIndex index;                  ///< built by index_container; empty: every query tries every segment
 };
 
-/// Row or column of the index grid holding coordinate c: clamp(floor((c − origin) / cell), 0, n − 1) in
-/// float, NaN to 0 (kernels/boundary.cl has the same function).
-inline std::int32_t container_index_axis(float c, float origin, float cell, std::int32_t n) {
-  float f = std::floor((c - origin) / cell);
+/// Cell of one coordinate on a uniform grid of n cells of edge `cell` from 0: clamp(floor(c / cell), 0,
+/// n − 1) in float, NaN to 0. Every grid of the solver uses it (the collision grid, the overlap test's
+/// broadphase and the container index, each with c measured from its corner), as does grid.cl: the
+/// clamp happens in float so the conversion never sees an out-of-range value, and the function never
+/// decreases as c grows, which is what lets an index list a segment or box in every cell a query can
+/// land in.
+inline std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
+  float f = std::floor(c / cell);
   if (!(f >= 0.0f)) f = 0.0f;
   const float last = static_cast<float>(n - 1);
   if (f > last) f = last;
   return static_cast<std::int32_t>(f);
 }
-
 /// Builds box.index for `cells` cells along the longer side of the segments' bounding box (square cells;
 /// a container without segments gets none). src/scene/container_index.cpp.
 void index_container(ContainerGeometry& box, std::int32_t cells = 32);

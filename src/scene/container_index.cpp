@@ -55,10 +55,10 @@ void index_container(ContainerGeometry& box, std::int32_t cells) {
   const std::size_t segments = box.ax.size();
   if (segments == 0 || cells < 1) return;
   float lo_x = box.ax[0], hi_x = box.ax[0], lo_y = box.ay[0], hi_y = box.ay[0];
-  for (std::size_t i = 0; i < segments; ++i)
-    for (const float x : {box.ax[i], box.bx[i]}) lo_x = std::min(lo_x, x), hi_x = std::max(hi_x, x);
-  for (std::size_t i = 0; i < segments; ++i)
-    for (const float y : {box.ay[i], box.by[i]}) lo_y = std::min(lo_y, y), hi_y = std::max(hi_y, y);
+  for (std::size_t i = 0; i < segments; ++i) {
+    lo_x = std::min({lo_x, box.ax[i], box.bx[i]}), hi_x = std::max({hi_x, box.ax[i], box.bx[i]});
+    lo_y = std::min({lo_y, box.ay[i], box.by[i]}), hi_y = std::max({hi_y, box.ay[i], box.by[i]});
+  }
   const float extent = std::max(hi_x - lo_x, hi_y - lo_y);
   if (!(extent > 0.0f) || !std::isfinite(extent)) return;
   ix.x0 = lo_x, ix.y0 = lo_y;
@@ -71,8 +71,8 @@ void index_container(ContainerGeometry& box, std::int32_t cells) {
   // so a y inside a segment's range always finds it (floor of a monotone expression is monotone).
   std::vector<std::vector<std::int32_t>> band(ix.ny);
   for (std::size_t i = 0; i < segments; ++i) {
-    const std::int32_t j0 = container_index_axis(std::min(box.ay[i], box.by[i]), ix.y0, ix.cell, ix.ny);
-    const std::int32_t j1 = container_index_axis(std::max(box.ay[i], box.by[i]), ix.y0, ix.cell, ix.ny);
+    const std::int32_t j0 = grid_axis_cell(std::min(box.ay[i], box.by[i]) - ix.y0, ix.cell, ix.ny);
+    const std::int32_t j1 = grid_axis_cell(std::max(box.ay[i], box.by[i]) - ix.y0, ix.cell, ix.ny);
     for (std::int32_t j = j0; j <= j1; ++j) band[j].push_back(static_cast<std::int32_t>(i));
   }
   d.assign(ix.ny + 1, 0);

@@ -25,7 +25,7 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
   bool inside = false;
   if (ix.nx > 0) {
     // Only segments whose y range holds py can cross the ray; the band lists them in index order.
-    const std::int32_t j = container_index_axis(py, ix.y0, ix.cell, ix.ny);
+    const std::int32_t j = grid_axis_cell(py - ix.y0, ix.cell, ix.ny);
     for (std::int32_t k = ix.data[j]; k < ix.data[j + 1]; ++k) {
       const std::int32_t i = ix.data[ix.band_segments + k];
       if (ray_crosses_segment(px, py, box.ax[i], box.ay[i], box.bx[i], box.by[i])) inside = !inside;

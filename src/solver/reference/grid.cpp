@@ -19,16 +19,6 @@ std::int32_t grid_cells_per_axis(double cell_size) {
   return static_cast<std::int32_t>(std::ceil(1.0 / cell_size - 1e-9));
 }
 
-std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
-  float f = std::floor(c / cell);
-  // Clamp in float before converting: points outside the cube (and NaN) land in border cells, and
-  // the float-to-int conversion never sees an out-of-range value.
-  if (!(f >= 0.0f)) f = 0.0f;
-  const float last = static_cast<float>(n - 1);
-  if (f > last) f = last;
-  return static_cast<std::int32_t>(f);
-}
-
 Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_t i) {
   const std::int32_t a = topo.env_a[i], b = topo.env_b[i], c = topo.env_c[i];
   return {(state.x[a] + state.x[b] + state.x[c]) / 3.0f, (state.y[a] + state.y[b] + state.y[c]) / 3.0f,
@@ -90,11 +80,10 @@ void build_far_runs(const Topology& topo, CollisionGrid& g) {
 
 namespace {
 
-// Visits the cells of the (2r+1)³ block around q's cell whose Chebyshev distance from it is at least
-// `min_ring`, in dz, dy, dx ascending order, and collects their triangles of other elements.
-void collect(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
-             std::int32_t r, std::int32_t min_ring, std::vector<std::int32_t>& out) {
-  out.clear();
+// Calls visit(c) for each cell c of the (2r+1)³ block around q's cell whose Chebyshev distance from it
+// is at least `min_ring`, in dz, dy, dx ascending order; cells outside the grid are skipped.
+template <class Visit>
+void for_block_cells(const CollisionGrid& grid, Vec3f q, std::int32_t r, std::int32_t min_ring, Visit visit) {
   const std::int32_t qx = grid_axis_cell(q.x, grid.cell, grid.n);
   const std::int32_t qy = grid_axis_cell(q.y, grid.cell, grid.n);
   const std::int32_t qt = grid_axis_cell(q.t, grid.cell, grid.n);
@@ -105,14 +94,22 @@ void collect(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int3
         if (ring < min_ring) continue;
         const std::int32_t cx = qx + dx, cy = qy + dy, ct = qt + dz;
         if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
-        const std::int32_t c = (ct * grid.n + cy) * grid.n + cx;
-        for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
-          const std::int32_t tri = grid.sorted_triangles[k];
-          if (topo.env_element[tri] != own_element) out.push_back(tri);
-        }
+        visit((ct * grid.n + cy) * grid.n + cx);
       }
     }
   }
+}
+
+// The triangles of other elements in those cells, in sorted order within a cell.
+void collect(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+             std::int32_t r, std::int32_t min_ring, std::vector<std::int32_t>& out) {
+  out.clear();
+  for_block_cells(grid, q, r, min_ring, [&](std::int32_t c) {
+    for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
+      const std::int32_t tri = grid.sorted_triangles[k];
+      if (topo.env_element[tri] != own_element) out.push_back(tri);
+    }
+  });
 }
 
 }  // namespace
@@ -130,24 +127,13 @@ void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std
 void far_slots(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
                std::vector<std::int32_t>& out) {
   out.clear();
-  const std::int32_t qx = grid_axis_cell(q.x, grid.cell, grid.n);
-  const std::int32_t qy = grid_axis_cell(q.y, grid.cell, grid.n);
-  const std::int32_t qt = grid_axis_cell(q.t, grid.cell, grid.n);
-  for (std::int32_t dz = -2; dz <= 2; ++dz) {
-    for (std::int32_t dy = -2; dy <= 2; ++dy) {
-      for (std::int32_t dx = -2; dx <= 2; ++dx) {
-        if (std::max(std::abs(dz), std::max(std::abs(dy), std::abs(dx))) < 2) continue;
-        const std::int32_t cx = qx + dx, cy = qy + dy, ct = qt + dz;
-        if (cx < 0 || cy < 0 || ct < 0 || cx >= grid.n || cy >= grid.n || ct >= grid.n) continue;
-        const std::int32_t c = (ct * grid.n + cy) * grid.n + cx;
-        for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {
-          const std::int32_t next = grid.far_cells ? grid.run_next[k] : k + 1;
-          if (topo.env_element[grid.sorted_triangles[k]] != own_element) out.push_back(k);
-          k = next;
-        }
-      }
+  for_block_cells(grid, q, 2, 2, [&](std::int32_t c) {
+    for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {
+      const std::int32_t next = grid.far_cells ? grid.run_next[k] : k + 1;
+      if (topo.env_element[grid.sorted_triangles[k]] != own_element) out.push_back(k);
+      k = next;
     }
-  }
+  });
 }
 
 }  // namespace animpak::reference
