@@ -1,5 +1,5 @@
 /* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and the
- * middles of the slice intervals next to it, against every other element's boundary polygon interpolated
+ * points of the slice intervals next to it (ForceParams.interval_points), against every other element's boundary polygon interpolated
  * at their t, at any depth, with the boundary edge tested for crossings on the same walk; the force adds
  * a pull along the way out of the other element. The elements tried are the broadphase's candidates
  * (OverlapGridInfo, built on the host by reference::build_overlap_grid; docs/architecture.md, "The
@@ -158,10 +158,10 @@ void overlap_fold(uchar found, float near2, float qx, float qy, float px, float 
   *out_y = qy - py;
 }
 
-/** The overlap test of boundary vertex v (reference overlap_test): v, then the middles of the slice
- * intervals after and before it. Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with the way out
- * (*out_x, *out_y) of the deepest point inside another element. */
-uchar overlap_test(int v, int elements, __global const int* element, __global const int* slice,
+/** The overlap test of boundary vertex v (reference overlap_test): v, then the interval_points times
+ * of each slice interval next to v that lie in the half nearer to v. Returns AP_CONTACT_OVERLAP, plus
+ * AP_CONTACT_INSIDE with the way out (*out_x, *out_y) of the deepest point inside another element. */
+uchar overlap_test(int v, int interval_points, int elements, __global const int* element, __global const int* slice,
                    __global const int* element_slice_begin, __global const int* slice_begin,
                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
@@ -183,17 +183,23 @@ uchar overlap_test(int v, int elements, __global const int* element, __global co
                               element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y,
                               t, growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
+  const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? 1 : -1;
     if (own_index + step < 0 || own_index + step >= own_slices) continue;
     const int w = v + step * per_slice, wn = next + step * per_slice;
-    const float mx = (x[v] + x[w]) * 0.5f, my = (y[v] + y[w]) * 0.5f;
-    const float mt = (t[v] + t[w]) * 0.5f;
-    const float nx = (x[next] + x[wn]) * 0.5f, ny = (y[next] + y[wn]) * 0.5f;
-    found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
-                          element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
-                          growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
-    overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
+    for (int j = 1; 2 * j <= interval_points + 1; ++j) {
+      const float f = (float)j / denominator;
+      const float mx = x[v] + (x[w] - x[v]) * f;
+      const float my = y[v] + (y[w] - y[v]) * f;
+      const float mt = t[v] + (t[w] - t[v]) * f;
+      const float nx = x[next] + (x[wn] - x[next]) * f;
+      const float ny = y[next] + (y[wn] - y[next]) * f;
+      found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
+                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
+                            growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
+      overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
+    }
   }
   return bits;
 }

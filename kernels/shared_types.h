@@ -87,6 +87,7 @@ typedef struct {
   ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
   ap_float wall_range2;                 /* wall_range * wall_range */
   ap_float settle_shrink_step;          /* settle_shrink_rate * dt */
+  ap_int interval_points;               /* times the overlap test checks inside each slice interval */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -46,6 +46,8 @@ struct Params {
   int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
   int far_cells = 1;                ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
                                     ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
+  int interval_points = 3;          ///< the overlap test also checks this many evenly spaced times inside
+                                    ///< every slice interval (1: the middle only; docs/parameters.md)
 
   // §5.3 growth and stopping
   double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice

@@ -137,8 +137,8 @@ void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex
 
 /// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
 struct OverlapResult {
-  bool overlap = false;  ///< v or a middle next to it lies inside another element, or its edge crosses one
-  bool inside = false;   ///< v or a middle next to it lies inside another element
+  bool overlap = false;  ///< v or a point between slices next to it lies inside another element, or its edge crosses one
+  bool inside = false;   ///< v or a point between slices next to it lies inside another element
   float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
   bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g)
 };
@@ -146,15 +146,17 @@ struct OverlapResult {
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
 /// vertex of its slice) against every other element's boundary polygon interpolated linearly at v's t,
 /// skipping elements whose slice boxes miss the edge (only the broadphase's candidates, `grid`, are
-/// tried, in increasing element order); then the same for the middle of each slice interval
-/// next to v (v and its edge interpolated halfway to the neighbouring slice, at the middle time), where
-/// the paper's discrete test cannot see (§6, §8). Interior vertices and elements with fewer than two
-/// slices never overlap. overlap.cpp.
+/// tried, in increasing element order); then the same between slices, where the paper's discrete test
+/// cannot see (§6, §8): each slice interval holds `interval_points` evenly spaced times, at fractions
+/// j / (interval_points + 1), and v tests those of the two intervals next to it that lie in the half
+/// nearer to v (v and its edge interpolated towards the neighbouring slice, at that time; the middle is
+/// tested from both ends). Interior vertices and elements with fewer than two slices never overlap.
+/// overlap.cpp.
 OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t v);
+                           const OverlapGrid& grid, std::int32_t v, std::int32_t interval_points);
 
-/// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a middle
-/// next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so the push grows
+/// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a point
+/// between slices next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so the push grows
 /// with depth (docs/parameters.md). overlap.cpp.
 Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
                     const OverlapResult& overlap);

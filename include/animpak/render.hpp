@@ -193,8 +193,13 @@ FrameMetrics measure_frame(const World& world, const SimState& state, double tf)
 /// The same for art frame_art has replayed at tf.
 FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf);
 
-/// The middle of every slice interval, t = (s + 0.5) / (n_s − 1) for s = 0 … n_s − 2: the times
-/// farthest from any slice, where interpolated elements can overlap unseen by the slices (paper §6).
+/// Times audited inside every slice interval: its quarter points.
+inline constexpr int between_slice_points = 3;
+
+/// The quarter points of every slice interval, t = (s + q / 4) / (n_s − 1) for s = 0 … n_s − 2 and
+/// q = 1, 2, 3, in increasing order: the times away from every slice, where interpolated elements can
+/// overlap unseen by the slices (paper §6). The middle alone misses a tip that passes a neighbour
+/// between it and a slice (docs/quality.md).
 std::vector<double> between_slice_times(int slices);
 
 /// The metrics of the rendered frames and of the times between slices.

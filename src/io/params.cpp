@@ -10,7 +10,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 41> table{{
+const std::array<ParamInfo, 42> table{{
     {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
     {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
     {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
@@ -40,6 +40,8 @@ const std::array<ParamInfo, 41> table{{
     {"cell_size", &Params::cell_size, 0.005, 1.0, "collision grid cell edge (§5.1)"},
     {"grid_rebuild_interval", &Params::grid_rebuild_interval, 1, 1000, "rebuild the grid every k steps"},
     {"far_cells", &Params::far_cells, 0, 1, "1: far shell of Eq. 1 by cell aggregates; 0: by every centroid (§5.1)"},
+    {"interval_points", &Params::interval_points, 1, 15,
+     "times the overlap test checks inside each slice interval, evenly spaced (paper §8)"},
     {"growth_rate", &Params::growth_rate, 0.0, inf, "g += growth_rate · Δt_sim per free step (§5.3)"},
     {"shrink_rate", &Params::shrink_rate, 0.0, inf, "g -= shrink_rate · Δt_sim per step while overlapping"},
     {"growth_ratio", &Params::growth_ratio, 1.0, inf, "largest g of an element ≤ growth_ratio × its smallest"},

@@ -46,7 +46,9 @@ FrameMetrics measure_frame(const World& world, const SimState& state, double tf)
 
 std::vector<double> between_slice_times(int slices) {
   std::vector<double> t;
-  for (int s = 0; s + 1 < slices; ++s) t.push_back((s + 0.5) / (slices - 1));
+  for (int s = 0; s + 1 < slices; ++s)
+    for (int q = 1; q < between_slice_points + 1; ++q)
+      t.push_back((s + static_cast<double>(q) / (between_slice_points + 1)) / (slices - 1));
   return t;
 }
 

@@ -166,9 +166,11 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["elements_outside"].empty());
     CHECK(f["overlaps"].empty());
   }
-  // Five slices: the middles of the four intervals.
-  REQUIRE(stats["between_slices"].size() == 4);
-  CHECK(stats["between_slices"][0]["t"].get<double>() == Approx(0.125));
+  // Five slices: the quarter points of the four intervals.
+  REQUIRE(stats["between_slices"].size() == 12);
+  CHECK(stats["between_slices"][0]["t"].get<double>() == Approx(0.0625));
+  CHECK(stats["between_slices"][1]["t"].get<double>() == Approx(0.125));
+  CHECK(stats["between_slices"][11]["t"].get<double>() == Approx(0.9375));
   for (const char* times : {"frames", "between_slices"}) {
     INFO(times);
     const auto& q = stats["quality"][times];
@@ -179,7 +181,7 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(q["coverage"]["mean"].get<double>() <= q["coverage"]["max"].get<double>());
   }
   CHECK_THAT(r.out, Contains("quality: 0 of 12 element-frames outside") &&
-                        Contains("between slices: 0 of 12 element-frames outside"));
+                        Contains("between slices: 0 of 36 element-frames outside"));
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {

@@ -35,16 +35,16 @@ FrameOutput small_output(const std::filesystem::path& dir, std::vector<FrameForm
 
 }  // namespace
 
-TEST_CASE("write_frames: png and svg write exactly N frames named frame_0000 on, one metric each and one between slices") {
+TEST_CASE("write_frames: png and svg write exactly N frames named frame_0000 on, one metric each and three per slice interval") {
   const World world = tiny_star_world();
   const animpak::test::TempDir temp("animpak-frames-");
   const auto dir = temp / "png-svg";
   const auto quality = write_frames(world, world.state, small_output(dir, {FrameFormat::png, FrameFormat::svg}));
   REQUIRE(quality.frames.size() == 3);
   CHECK(quality.frames[1].t == Approx(1.0 / 3));  // the tiny world loops: frames at i / 3
-  // Four slices: the middles of the three intervals.
-  REQUIRE(quality.between_slices.size() == 3);
-  for (int s = 0; s < 3; ++s) CHECK(quality.between_slices[s].t == Approx((s + 0.5) / 3));
+  // Four slices: the quarter points of the three intervals, in time order.
+  REQUIRE(quality.between_slices.size() == 9);
+  for (int i = 0; i < 9; ++i) CHECK(quality.between_slices[i].t == Approx((i / 3 + (i % 3 + 1) * 0.25) / 3));
   CHECK(sorted_names(dir / "frames") == std::vector<std::string>{"frame_0000.png", "frame_0000.svg", "frame_0001.png",
                                                                  "frame_0001.svg", "frame_0002.png", "frame_0002.svg"});
   CHECK(sorted_names(dir) == std::vector<std::string>{"frames"});

@@ -142,12 +142,12 @@ TEST_CASE("repulsion: interior vertices get none") {
 
 namespace {
 
-OverlapResult overlap_at(const test::World& w, std::int32_t v) {
+OverlapResult overlap_at(const test::World& w, std::int32_t v, std::int32_t interval_points = Params{}.interval_points) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
   OverlapGrid grid;
   build_overlap_grid(w.topo, boxes, grid);
-  return overlap_test(w.topo, w.state, boxes, grid, v);
+  return overlap_test(w.topo, w.state, boxes, grid, v, interval_points);
 }
 
 // Two thin bars crossing like a plus sign over 26 slices: element 0 horizontal, element 1 vertical.
@@ -296,6 +296,34 @@ TEST_CASE("overlap: elements that cross only between two slices are found at the
   still.add_element(moving(0.6f, 0.6f, 0.05f));
   const test::World s = still.build();
   for (std::int32_t v = 0; v < s.topo.vertex_count(); ++v) CHECK_FALSE(overlap_at(s, v).overlap);
+}
+
+TEST_CASE("overlap: a pass between the middle and a slice is found at the quarter point, which the middle alone misses") {
+  // A (half-size 0.04) moves from x 0.4 to 0.6, B (0.05) from 0.8 to 0.5: their centres are
+  // 0.4 - 0.5 t apart, so they overlap only for 0.62 < t < 0.98. The slices (t 0 and 1) and the
+  // middle (0.5) are clear; the quarter point 0.75 is 0.065 deep in the pass. The default packs showed
+  // such a pass (two star tips, 0.3 % of the smaller) in frames between a middle and a slice.
+  const auto moving = [](float x0, float x1, float h) {
+    return std::vector<test::TinySlice>{{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
+  };
+  WorldBuilder b;
+  b.add_element(moving(0.4f, 0.6f, 0.04f));
+  b.add_element(moving(0.8f, 0.5f, 0.05f));
+  const test::World w = b.build();
+  REQUIRE(Params{}.interval_points == 3);
+  // Quarter points: the vertices at t = 1 test 0.75 (and 0.5), those at t = 0 test 0.25 and 0.5. At
+  // 0.75 A spans x 0.51-0.59 and B 0.525-0.625 (y 0.46-0.54 and 0.45-0.55): A's right corners (5, 6) lie
+  // inside B, the edges from 4 and 6 cross B's left edge, and B's left edge (from 15) crosses A's.
+  const std::vector<std::int32_t> found{4, 5, 6, 15};
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    INFO("vertex " << v);
+    CHECK_FALSE(overlap_at(w, v, 1).overlap);  // the middle only
+    CHECK(overlap_at(w, v, 3).overlap == (std::find(found.begin(), found.end(), v) != found.end()));
+  }
+  // A's corner (0.59, 0.46) at t = 0.75 lies 0.01 inside B's bottom edge: the way out.
+  const OverlapResult r = overlap_at(w, 5, 3);
+  CHECK(r.inside);
+  CHECK(std::hypot(r.out_x, r.out_y) == Approx(0.01).epsilon(1e-3));
 }
 
 TEST_CASE("overlap: the other element's boundary is interpolated linearly between its slices") {

@@ -15,10 +15,10 @@ static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, n
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
-static_assert(sizeof(ForceParams) == 25 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+static_assert(sizeof(ForceParams) == 26 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
               offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92 &&
-              offsetof(ForceParams, settle_shrink_step) == 96);
+              offsetof(ForceParams, settle_shrink_step) == 96 && offsetof(ForceParams, interval_points) == 100);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
@@ -54,6 +54,7 @@ ForceParams force_params(const Params& params) {
   p.stop_gap = static_cast<float>(params.stop_gap);
   p.k_target_angle = static_cast<float>(params.k_target_angle);
   p.wall_range2 = static_cast<float>(params.wall_range * params.wall_range);
+  p.interval_points = params.interval_points;
   return p;
 }
 

@@ -51,7 +51,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
       near_triangles(grid, topo, q, topo.element[v], near);
       far_slots(grid, topo, q, topo.element[v], far);
     }
-    const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v);
+    const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v, params.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f edg = spring_force(topo, state, params, v);
@@ -66,7 +66,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     r.total.y[v] = rpl.force.y + edg.y + tgt.y + bdr.y + ovr.y + tor.y + tmp.y;
     r.total.t[v] = rpl.force.t + edg.t + tgt.t + bdr.t + ovr.t + tor.t + tmp.t;
     // The wall is a neighbour too (§5.3's slice gap): a lone element stops at the container. A vertex
-    // that overlaps touches, whatever the nearest triangle's distance (a middle of a slice interval
+    // that overlaps touches, whatever the nearest triangle's distance (a point of a slice interval
     // may overlap where v itself is clear).
     std::uint8_t contact = wall.inside ? 0 : contact_outside;
     if (boundary) {

@@ -4,7 +4,7 @@
 // outline with neither end inside (thin parts: tails, legs). Here every boundary vertex is tested against
 // every other element whose boundary polygon, interpolated linearly at the vertex's t, can reach it (a
 // box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk;
-// so are the middles of the slice intervals on either side of it.
+// so are interval_points times inside the slice intervals on either side of it.
 // Which elements the box test can accept comes from a broadphase rebuilt every step (OverlapGrid,
 // docs/architecture.md, "The overlap test"): an (x, y, t) cell grid over the slice pairs' boxes, so a
 // query tries only the elements listed in the cells its edge's box meets, in increasing element order
@@ -284,7 +284,7 @@ void fold(const PointOverlap& found, float px, float py, OverlapResult& r, float
 }  // namespace
 
 OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t v) {
+                           const OverlapGrid& grid, std::int32_t v, std::int32_t interval_points) {
   OverlapResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
@@ -298,17 +298,26 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   fold(point_overlap(topo, state, boxes, grid, own, own_g, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
                      state.y[next]),
        state.x[v], state.y[v], r, depth2);
-  // Between slices (the paper's §6 and §8: overlaps can hide there): the middles of the two slice
-  // intervals next to v, the point and its edge interpolated halfway to the same vertices of the
-  // neighbouring slice, are tested like v.
+  // Between slices (the paper's §6 and §8: overlaps can hide there): interval_points evenly spaced
+  // times inside each slice interval, at fractions j / (interval_points + 1) of it. v tests those of the
+  // two intervals next to it that lie in the half nearer to v (the middle from both ends), the point and
+  // its edge interpolated towards the same vertices of the neighbouring slice; the vertex at the other
+  // end tests the other half. docs/parameters.md, "Between slices".
+  const float denominator = static_cast<float>(interval_points + 1);
   for (const std::int32_t step : {1, -1}) {
     if (own_index + step < 0 || own_index + step >= own_slices) continue;
     const std::int32_t w = v + step * per_slice, wn = next + step * per_slice;
-    const float mx = (state.x[v] + state.x[w]) * 0.5f, my = (state.y[v] + state.y[w]) * 0.5f;
-    const float mt = (state.t[v] + state.t[w]) * 0.5f;
-    const float nx = (state.x[next] + state.x[wn]) * 0.5f, ny = (state.y[next] + state.y[wn]) * 0.5f;
-    fold(point_overlap(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny), mx, my, r,
-         depth2);
+    for (std::int32_t j = 1; 2 * j <= interval_points + 1; ++j) {
+      const float f = static_cast<float>(j) / denominator;
+      const float mx = state.x[v] + (state.x[w] - state.x[v]) * f;
+      const float my = state.y[v] + (state.y[w] - state.y[v]) * f;
+      const float mt = state.t[v] + (state.t[w] - state.t[v]) * f;
+      const float nx = state.x[next] + (state.x[wn] - state.x[next]) * f;
+      const float ny = state.y[next] + (state.y[wn] - state.y[next]) * f;
+      fold(point_overlap(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx,
+                         ny),
+           mx, my, r, depth2);
+    }
   }
   return r;
 }
