@@ -13,14 +13,25 @@ bundle="$(cd "$1" && pwd)"
 out="$(mkdir -p "$2" && cd "$2" && pwd)"
 sizes="${3:-10000,50000,100000,200000}"
 export LD_LIBRARY_PATH="$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$(mktemp -d)}"
+# Scratch folders (a PoCL cache unless one is given, the reference pack, the vendor list) go when the
+# script ends, however it ends.
+temporary=()
+# scratch_dir NAME: a new folder in $NAME, removed at exit (not "$(...)": a subshell would lose the list).
+scratch_dir() { local d; d="$(mktemp -d)"; temporary+=("$d"); printf -v "$1" '%s' "$d"; }
+cleanup() {
+  if [ -n "${reference_pack:-}" ]; then kill "$reference_pack" 2>/dev/null; wait "$reference_pack" 2>/dev/null; fi
+  if [ ${#temporary[@]} -gt 0 ]; then rm -rf "${temporary[@]}"; fi
+}
+trap cleanup EXIT
+if [ -z "${POCL_CACHE_DIR:-}" ]; then scratch_dir POCL_CACHE_DIR; fi
+export POCL_CACHE_DIR
 solve="$bundle/bin/animpak-solve"
 status=0
-scratch="$(mktemp -d)"
+scratch_dir scratch
 note() { printf '\n== %s\n' "$*"; }
 
 # The ICD loader reads one folder of vendor files; make one with the system's vendors plus NVIDIA's.
-vendors="$(mktemp -d)"
+scratch_dir vendors
 cp /etc/OpenCL/vendors/*.icd "$vendors/" 2>/dev/null || true
 nvidia_lib="$(ldconfig -p | awk '/libnvidia-opencl\.so\.1/ {print $NF; exit}')"
 if [ -n "$nvidia_lib" ] && ! grep -qs nvidia-opencl "$vendors"/*.icd; then echo "$nvidia_lib" >"$vendors/nvidia.icd"; fi
