@@ -1,6 +1,6 @@
 /* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
- * (shrink while outside or while overlapping an element no larger there, faster while settling; pause
- * while overlapping only larger ones or at the wall; grow otherwise), then every slice is limited to
+ * (shrink while outside or while overlapping an element no larger there; while settling, shrink faster
+ * and whenever it overlaps; pause while overlapping only larger ones or at the wall; grow otherwise), then every slice is limited to
  * growth_ratio × the smallest proposal of its element, and the springs touching a changed slice take
  * their rest length from the scaled rest copy. */
 
@@ -17,8 +17,8 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
   for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) bits |= contact[v];
   const float g = growth[s];
   float next = g;
-  if ((bits & AP_CONTACT_OUTSIDE) != 0 ||
-      (bits & (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) == (AP_CONTACT_OVERLAP | AP_CONTACT_YIELD)) {
+  const bool yields = (bits & AP_CONTACT_OVERLAP) != 0 && (growing == 0 || (bits & AP_CONTACT_YIELD) != 0);
+  if ((bits & AP_CONTACT_OUTSIDE) != 0 || yields) {
     next = g - (growing != 0 ? p.shrink_step : p.settle_shrink_step);
     if (next < 1.0f) next = 1.0f;
   } else if (growing != 0 && (bits & (AP_CONTACT_WALL | AP_CONTACT_OVERLAP)) == 0 && g < p.max_growth) {

@@ -257,12 +257,14 @@ void apply_containment(const Topology& topo, SimState& state);
 /// test counts it as touching).
 enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
-/// One growth step (docs/parameters.md, "Growth"): a slice with a vertex that overlaps another element or
-/// lies outside the container shrinks by shrink_rate · Δt_sim (not below 1); one with a boundary vertex
-/// nearer the wall than stop_gap, or at max_growth, keeps its g; any other grows by growth_rate · Δt_sim.
-/// Then every slice is limited to growth_ratio × the smallest proposal of its element and to
-/// neighbour_growth_ratio × the proposal of each time neighbour. Without `growing` (the
-/// settling phase) no slice grows. `changed` marks what moved; returns how many slices grew.
+/// One growth step (docs/parameters.md, "Growth"): a slice with a vertex outside the container, or one
+/// that overlaps an element no larger there (contact_yield), shrinks by shrink_rate · Δt_sim (not below
+/// 1); one that overlaps only larger elements, has a boundary vertex nearer the wall than stop_gap, or is
+/// at max_growth keeps its g; any other grows by growth_rate · Δt_sim. Then every slice is limited to
+/// growth_ratio × the smallest proposal of its element and to neighbour_growth_ratio × the proposal of
+/// each time neighbour. Without `growing` (the settling phase) no slice grows, and every overlapping or
+/// spilling slice shrinks by settle_shrink_rate · Δt_sim. `changed` marks what moved; returns how many
+/// slices grew.
 std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
                          bool growing, SimState& state, std::vector<std::uint8_t>& changed);
 

@@ -83,7 +83,7 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
   CHECK(state.spring_rest == before.spring_rest);
 }
 
-TEST_CASE("grow_slices: while settling, nothing grows and overlapping slices shrink at settle_shrink_rate") {
+TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side too") {
   const World w = tiny_world();
   const Topology& topo = w.topology;
   Params params = w.params;
@@ -96,13 +96,27 @@ TEST_CASE("grow_slices: while settling, nothing grows and overlapping slices shr
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
   contact[topo.slice_begin[2]] = contact_overlap | contact_yield;
   contact[topo.slice_begin[5]] = contact_outside;
-  contact[topo.slice_begin[7]] = contact_overlap;  // overlaps a larger element: pauses
+  // Overlaps a larger element: growing, it would pause and leave the shrinking to the other side, but
+  // that side may not see the overlap (its slice times differ a little), so settling shrinks it too.
+  contact[topo.slice_begin[7]] = contact_overlap;
+  contact[topo.slice_begin[8]] = contact_wall;  // at the wall: holds
+  const SimState start = state;
   std::vector<std::uint8_t> changed;
   CHECK(reference::grow_slices(topo, contact, params, false, state, changed) == 0);
   const float settle = static_cast<float>(params.settle_shrink_rate * params.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
-    CHECK(same_float(state.growth[s], s == 2 || s == 5 ? 1.5f - settle : 1.5f));
+    CHECK(same_float(state.growth[s], s == 2 || s == 5 || s == 7 ? 1.5f - settle : 1.5f));
+  }
+  // Growing, the smaller side of an overlap pauses and the wall holds; the rest grows.
+  state = start;
+  reference::grow_slices(topo, contact, params, true, state, changed);
+  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
+  const float step = static_cast<float>(params.growth_rate * params.dt);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    const float expected = s == 2 || s == 5 ? 1.5f - shrink : s == 7 || s == 8 ? 1.5f : 1.5f + step;
+    CHECK(same_float(state.growth[s], expected));
   }
 }
 

@@ -1,6 +1,7 @@
 // Growth of §5.3 with the containment and steadiness rules of docs/parameters.md ("Growth"): the paper
 // pauses a slice that overlaps; here a spilling slice, and an overlapping slice that is the larger of
-// the two there, shrink back, while a smaller overlapping slice and a slice touching the wall pause;
+// the two there, shrink back (while settling, every overlapping slice does), while a smaller overlapping
+// slice and a slice touching the wall pause;
 // and no slice outgrows growth_ratio × the smallest slice of its element nor neighbour_growth_ratio ×
 // either time neighbour, so an element's size changes smoothly over the loop.
 #include "animpak/reference.hpp"
@@ -24,7 +25,10 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) bits |= contact[v];
     const float g = state.growth[s];
     float next = g;
-    if ((bits & contact_outside) != 0 || (bits & (contact_overlap | contact_yield)) == (contact_overlap | contact_yield)) {
+    // Growing, the larger of two overlapping slices yields; settling, both do, so that an overlap one side
+    // alone sees (their slices' times differ a little) still clears.
+    const bool yields = (bits & contact_overlap) != 0 && (!growing || (bits & contact_yield) != 0);
+    if ((bits & contact_outside) != 0 || yields) {
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
     } else if (growing && (bits & (contact_wall | contact_overlap)) == 0 && g < cap) {
