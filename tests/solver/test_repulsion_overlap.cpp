@@ -142,6 +142,11 @@ TEST_CASE("repulsion: interior vertices get none") {
 
 namespace {
 
+// A square of half-size h at y 0.5 with two slices: at x0 at t 0, at x1 at t 1.
+std::vector<test::TinySlice> moving_square(float x0, float x1, float h) {
+  return {{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
+}
+
 OverlapResult overlap_at(const test::World& w, std::int32_t v, std::int32_t interval_points = Params{}.interval_points) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
@@ -274,12 +279,9 @@ TEST_CASE("overlap: the larger of two overlapping elements yields, the smaller d
 TEST_CASE("overlap: elements that cross only between two slices are found at the middle of the interval") {
   // A (half-size 0.04) moves right and B (0.05) left through the same place: at the slice times 0 and 1
   // they are 0.11 apart, at t = 0.5 A lies inside B. Only the middle of the slice interval sees it.
-  const auto moving = [](float x0, float x1, float h) {
-    return std::vector<test::TinySlice>{{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
-  };
   WorldBuilder b;
-  b.add_element(moving(0.4f, 0.6f, 0.04f));
-  b.add_element(moving(0.6f, 0.4f, 0.05f));
+  b.add_element(moving_square(0.4f, 0.6f, 0.04f));
+  b.add_element(moving_square(0.6f, 0.4f, 0.05f));
   const test::World w = b.build();
   for (std::int32_t v = 0; v < 8; ++v) {
     INFO("vertex " << v);
@@ -292,8 +294,8 @@ TEST_CASE("overlap: elements that cross only between two slices are found at the
 
   // The same two squares without the motion never meet.
   WorldBuilder still;
-  still.add_element(moving(0.4f, 0.4f, 0.04f));
-  still.add_element(moving(0.6f, 0.6f, 0.05f));
+  still.add_element(moving_square(0.4f, 0.4f, 0.04f));
+  still.add_element(moving_square(0.6f, 0.6f, 0.05f));
   const test::World s = still.build();
   for (std::int32_t v = 0; v < s.topo.vertex_count(); ++v) CHECK_FALSE(overlap_at(s, v).overlap);
 }
@@ -303,12 +305,9 @@ TEST_CASE("overlap: a pass between the middle and a slice is found at the quarte
   // 0.4 - 0.5 t apart, so they overlap only for 0.62 < t < 0.98. The slices (t 0 and 1) and the
   // middle (0.5) are clear; the quarter point 0.75 is 0.065 deep in the pass. The default packs showed
   // such a pass (two star tips, 0.3 % of the smaller) in frames between a middle and a slice.
-  const auto moving = [](float x0, float x1, float h) {
-    return std::vector<test::TinySlice>{{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
-  };
   WorldBuilder b;
-  b.add_element(moving(0.4f, 0.6f, 0.04f));
-  b.add_element(moving(0.8f, 0.5f, 0.05f));
+  b.add_element(moving_square(0.4f, 0.6f, 0.04f));
+  b.add_element(moving_square(0.8f, 0.5f, 0.05f));
   const test::World w = b.build();
   REQUIRE(Params{}.interval_points == 3);
   // Quarter points: the vertices at t = 1 test 0.75 (and 0.5), those at t = 0 test 0.25 and 0.5. At
