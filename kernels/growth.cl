@@ -1,8 +1,8 @@
 /* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
  * (shrink while outside or while overlapping an element no larger there; while settling, shrink faster
- * and whenever it overlaps; pause while overlapping only larger ones or at the wall; grow otherwise), then every slice is limited to
- * growth_ratio × the smallest proposal of its element, and the springs touching a changed slice take
- * their rest length from the scaled rest copy. */
+ * and whenever it overlaps; pause while overlapping only larger ones or at the wall; grow otherwise),
+ * then every slice is limited to growth_ratio × the smallest proposal of its element, and the springs
+ * touching a changed slice take their rest length from the scaled rest copy. */
 
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world, const ForceParams p,

@@ -1,10 +1,11 @@
-/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and the
- * points of the slice intervals next to it (ForceParams.interval_points), against every other element's boundary polygon interpolated
- * at their t, at any depth, with the boundary edge tested for crossings on the same walk; the force adds
- * a pull along the way out of the other element. The elements tried are the broadphase's candidates
- * (OverlapGridInfo, built on the host by reference::build_overlap_grid; docs/architecture.md, "The
- * overlap test"): the merged lists of the cells the query edge's box meets, in increasing element
- * order, exactly as reference::overlap_candidates. */
+/* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and
+ * points of the slice intervals next to it (ForceParams.interval_points), against every other
+ * element's boundary polygon interpolated at their t, at any depth, with the boundary edge tested for
+ * crossings on the same walk; the force adds a pull along the way out of the other element. The
+ * elements tried are the broadphase's candidates (OverlapGridInfo, built on the host by
+ * reference::build_overlap_grid; docs/architecture.md, "The overlap test"): the merged lists of the
+ * cells the query edge's box meets, in increasing element order, exactly as
+ * reference::overlap_candidates. */
 
 /** Half-open ray-crossing step of the even-odd test (boundary.cpp: ray_crosses_segment). */
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {

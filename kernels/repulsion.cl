@@ -90,9 +90,9 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
   const float px = x[v], py = y[v], pt = t[v];
   const int own = element[v];
   float way_out_x, way_out_y;
-  const uchar bits = overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                                  box_x0, box_y0, box_x1, box_y1, x, y, t, growth, overlap_grid, overlap_start,
-                                  overlap_elements, &way_out_x, &way_out_y);
+  const uchar bits = overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin,
+                                  slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, growth, overlap_grid,
+                                  overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx = 0.0f, sy = 0.0f, st = 0.0f;

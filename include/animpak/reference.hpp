@@ -137,7 +137,8 @@ void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex
 
 /// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
 struct OverlapResult {
-  bool overlap = false;  ///< v or a point between slices next to it lies inside another element, or its edge crosses one
+  bool overlap = false;  ///< v or a point between slices next to it lies inside another element, or
+                         ///< its edge crosses one
   bool inside = false;   ///< v or a point between slices next to it lies inside another element
   float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
   bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g)
@@ -156,8 +157,8 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
                            const OverlapGrid& grid, std::int32_t v, std::int32_t interval_points);
 
 /// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a point
-/// between slices next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so the push grows
-/// with depth (docs/parameters.md). overlap.cpp.
+/// between slices next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so
+/// the push grows with depth (docs/parameters.md). overlap.cpp.
 Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
                     const OverlapResult& overlap);
 

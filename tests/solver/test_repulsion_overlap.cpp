@@ -147,7 +147,8 @@ std::vector<test::TinySlice> moving_square(float x0, float x1, float h) {
   return {{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
 }
 
-OverlapResult overlap_at(const test::World& w, std::int32_t v, std::int32_t interval_points = Params{}.interval_points) {
+OverlapResult overlap_at(const test::World& w, std::int32_t v,
+                         std::int32_t interval_points = Params{}.interval_points) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
   OverlapGrid grid;
