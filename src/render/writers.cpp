@@ -168,8 +168,10 @@ std::string animation_file_name(FrameFormat format) {
 PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out) {
   auto wants = [&](FrameFormat f) { return std::find(out.formats.begin(), out.formats.end(), f) != out.formats.end(); };
   const std::filesystem::path frames = out.dir / "frames";
-  std::filesystem::create_directories(frames);
   const bool raster = wants(FrameFormat::png) || wants(FrameFormat::gif) || wants(FrameFormat::mp4);
+  // frames/ holds the PNG and SVG frames; the animated vector formats alone leave no empty folder.
+  if (raster || wants(FrameFormat::svg)) std::filesystem::create_directories(frames);
+  else std::filesystem::create_directories(out.dir);
   const std::vector<std::string> ids = frame_writers::element_ids(world);
   std::optional<frame_writers::GeometryLog> log;
   if (wants(FrameFormat::lottie) || wants(FrameFormat::svg_anim)) log.emplace(world, out.dir / "animation.geometry.tmp");
