@@ -47,7 +47,7 @@ FrameMetrics measure_frame(const World& world, const SimState& state, double tf)
 std::vector<double> between_slice_times(int slices) {
   std::vector<double> t;
   for (int s = 0; s + 1 < slices; ++s)
-    for (int q = 1; q < between_slice_points + 1; ++q)
+    for (int q = 1; q <= between_slice_points; ++q)
       t.push_back((s + static_cast<double>(q) / (between_slice_points + 1)) / (slices - 1));
   return t;
 }

@@ -170,8 +170,7 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   const std::filesystem::path frames = out.dir / "frames";
   const bool raster = wants(FrameFormat::png) || wants(FrameFormat::gif) || wants(FrameFormat::mp4);
   // frames/ holds the PNG and SVG frames; the animated vector formats alone leave no empty folder.
-  if (raster || wants(FrameFormat::svg)) std::filesystem::create_directories(frames);
-  else std::filesystem::create_directories(out.dir);
+  std::filesystem::create_directories(raster || wants(FrameFormat::svg) ? frames : out.dir);
   const std::vector<std::string> ids = frame_writers::element_ids(world);
   std::optional<frame_writers::GeometryLog> log;
   if (wants(FrameFormat::lottie) || wants(FrameFormat::svg_anim)) log.emplace(world, out.dir / "animation.geometry.tmp");

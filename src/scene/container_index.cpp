@@ -1,7 +1,8 @@
 // The container query's index (include/animpak/state.hpp, ContainerIndex; docs/architecture.md, "The
 // far field and the container query"), built once with the world: per row of a cell grid the segments
-// the even–odd ray can cross, per cell the segments that can be nearest to a point in it. The bounds are computed in double
-// and grown by a margin, so the lists are supersets and a query answers exactly as brute force does.
+// the even–odd ray can cross, per cell the segments that can be nearest to a point in it. The bounds
+// are computed in double and grown by a margin, so the lists are supersets and a query answers exactly
+// as brute force does.
 #include <algorithm>
 #include <cmath>
 #include <limits>
