@@ -131,6 +131,32 @@ nlohmann::json summary_json(const World& w, const QualitySummary& q) {
           {"channel_cv", {{"mean", q.channel_cv_mean}, {"max", q.channel_cv_max}}}};
 }
 
+// The per-frame and per-quarter-point metrics and their summaries (docs/quality.md, "stats.json").
+void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& quality) {
+  stats["frames"] = metrics_json(w, quality.frames);
+  stats["between_slices"] = metrics_json(w, quality.between_slices);
+  stats["quality"] = {{"share_threshold", quality_share_threshold},
+                      {"frames", summary_json(w, summarize(quality.frames))},
+                      {"between_slices", summary_json(w, summarize(quality.between_slices))}};
+}
+
+// Through a temporary file and a rename, so that a failed write never loses the statistics already there.
+void write_json(const std::filesystem::path& file, const nlohmann::json& value) {
+  std::filesystem::path temporary = file;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << value.dump(2) << "\n";
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw InputError(file.string() + ": cannot write the statistics; check the folder");
+    }
+  }
+  std::filesystem::rename(temporary, file);
+}
+
 }  // namespace
 
 std::string quality_lines(const PackingQuality& quality) {
@@ -170,16 +196,32 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       {"stop_reason", r.checkpoint.stop_reason},
       {"seconds", seconds},
       {"final_growth", growth},
-      {"frames", metrics_json(w, r.quality.frames)},
-      {"between_slices", metrics_json(w, r.quality.between_slices)},
-      {"quality",
-       {{"share_threshold", quality_share_threshold},
-        {"frames", summary_json(w, summarize(r.quality.frames))},
-        {"between_slices", summary_json(w, summarize(r.quality.between_slices))}}},
   };
-  std::ofstream out(file);
-  out << stats.dump(2) << "\n";
-  if (!out) throw InputError(file.string() + ": cannot write the statistics; check the folder");
+  set_quality(stats, w, r.quality);
+  write_json(file, stats);
+}
+
+bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
+                          const PackingQuality& quality) {
+  nlohmann::json stats;
+  if (std::filesystem::exists(file)) {
+    std::ifstream in(file);
+    stats = nlohmann::json::parse(in, nullptr, false);
+    if (stats.is_discarded() || !stats.is_object()) return false;
+  } else {
+    // A folder without stats.json (copied without it): what the checkpoint itself knows.
+    stats = {{"animpak", "0.1.0"},
+             {"scene", checkpoint.scene_file.string()},
+             {"seed", checkpoint.seed},
+             {"elements", world.elements.size()},
+             {"vertices", world.topology.vertex_count()},
+             {"iterations", checkpoint.state.iteration},
+             {"stop_reason", checkpoint.stop_reason}};
+  }
+  set_quality(stats, world, quality);
+  stats["rendered_by"] = ANIMPAK_COMMIT;
+  write_json(file, stats);
+  return true;
 }
 
 }  // namespace animpak::cli

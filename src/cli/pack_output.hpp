@@ -31,6 +31,12 @@ struct PackReport {
 
 void write_stats(const std::filesystem::path& file, const PackReport& report);
 
+/// After `render`: replaces the frame metrics and quality summaries in `file` (stats.json) with those of
+/// the frames just rendered, keeping the rest of what `pack` wrote, or writes what the checkpoint knows
+/// when there is no file. Returns false, leaving the file as it is, when it is not a JSON object.
+bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
+                          const PackingQuality& quality);
+
 /// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
 struct QualitySummary {
   int times = 0;

@@ -137,6 +137,11 @@ int render(const RenderOptions& options) {
   LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
   const PackingQuality quality = render_frames(loaded.world, options.dir, options.frames);
   std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
+  const std::filesystem::path stats = options.dir / "stats.json";
+  if (!quality.frames.empty() && !update_stats_quality(stats, checkpoint, loaded.world, quality))
+    std::cerr << "animpak: warning: " << stats.string()
+              << " is not a JSON object; left as it is, without these frames' metrics (delete it to have a new "
+                 "one written)\n";
   std::cout << quality_lines(quality);
   return 0;
 }

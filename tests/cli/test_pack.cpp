@@ -199,6 +199,41 @@ TEST_CASE("animpak render: a packed folder moved together with its scene still r
   CHECK_THAT(r.out, Contains("quality: ") && Contains("between slices: "));
 }
 
+TEST_CASE("animpak render: stats.json gets the metrics of the frames just rendered and keeps the run's own fields") {
+  const Sandbox box("restats");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render").code == 0);
+  const nlohmann::json packed = nlohmann::json::parse(read_text(out + "/stats.json"));
+  CHECK(packed["frames"].empty());  // nothing rendered yet, as animpak-solve writes it
+
+  CommandResult r = run_animpak("render " + out + " --frames 3 --size 16 --format svg");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  nlohmann::json stats = nlohmann::json::parse(read_text(out + "/stats.json"));
+  CHECK(stats["frames"].size() == 3);
+  CHECK(stats["between_slices"].size() == 12);
+  CHECK(stats["quality"]["frames"]["element_frames"] == 9);
+  CHECK(stats["iterations"] == 10);
+  CHECK(stats["seconds"] == packed["seconds"]);
+  CHECK(stats["final_growth"] == packed["final_growth"]);
+  CHECK_FALSE(fs::exists(out + "/stats.json.tmp"));
+
+  // Without stats.json, render writes what the state knows.
+  fs::remove(out + "/stats.json");
+  REQUIRE(run_animpak("render " + out + " --frames 2 --size 16 --format svg").code == 0);
+  stats = nlohmann::json::parse(read_text(out + "/stats.json"));
+  CHECK(stats["frames"].size() == 2);
+  CHECK(stats["iterations"] == 10);
+  CHECK(stats["stop_reason"] == "max_iterations");
+
+  // A stats.json that is not JSON is left as it is, with a warning.
+  write_bytes(out + "/stats.json", "{ not json");
+  r = run_animpak("render " + out + " --frames 2 --size 16 --format svg");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Contains("stats.json is not a JSON object; left as it is"));
+  CHECK(bytes_of(out + "/stats.json") == "{ not json");
+}
+
 TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and animation.svg with their sizes printed, no PNG") {
   const Sandbox box("animated");
   const CommandResult packed = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
