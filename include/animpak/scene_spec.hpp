@@ -59,6 +59,10 @@ struct LibraryElementSpec {
   AnimationSpec animation;
   std::optional<int> count;  ///< exact number of unguided copies; otherwise drawn by weight
   double weight = 1.0;
+  /// When each unguided copy's animation starts, as a share of the loop: every copy at `phase`, or with
+  /// `random_phase` each at its own slice drawn from the seed (docs/scene-format.md, "Phase").
+  double phase = 0.0;
+  bool random_phase = false;
 };
 
 struct TargetSpec {

@@ -79,7 +79,7 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
   if (n == 0) field.fail("expected at least one element");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField item = field.item(i);
-    item.check_keys({"name", "art", "animation", "count", "weight"});
+    item.check_keys({"name", "art", "animation", "count", "weight", "phase"});
     LibraryElementSpec e;
     e.art = resolve_art(item.required("art"), base_dir);
     const std::optional<JsonField> name = item.optional("name");
@@ -94,6 +94,14 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
     if (auto f = item.optional("weight")) {
       if (e.count) f->fail("give either `count` or `weight`, not both");
       e.weight = f->positive_number();
+    }
+    if (auto f = item.optional("phase")) {
+      if (f->json().is_string()) {
+        if (f->string() != "random") f->fail("expected a number in [0, 1] or \"random\", got " + f->shown());
+        e.random_phase = true;
+      } else {
+        e.phase = f->number_in(0.0, 1.0);
+      }
     }
     elements.push_back(std::move(e));
   }
@@ -320,6 +328,12 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
   scene.container = read_container(root.required("container"), base_dir);
   scene.elements = read_elements(root.required("elements"), base_dir);
   if (auto f = root.optional("loop")) scene.loop = f->boolean();
+  // A phase shifts the copy's slices round the loop, so the t = 1 slice must meet the t = 0 one.
+  for (std::size_t i = 0; i < scene.elements.size() && !scene.loop; ++i)
+    if (scene.elements[i].random_phase || scene.elements[i].phase != 0.0)
+      root.required("elements").item(i).required("phase").fail(
+          "a phase needs a looping scene (`loop`: true): shifting the animation would cut it where t = 1 "
+          "meets t = 0; remove the phase or let the scene loop");
   if (auto f = root.optional("guided")) scene.guided = read_guided(*f, scene.elements, scene.loop);
   if (auto f = root.optional("orientation")) scene.orientation = read_orientation(*f);
   if (auto f = root.optional("count")) read_count(*f, scene);

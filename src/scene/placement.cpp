@@ -90,6 +90,12 @@ Vec2 apply(const Placement& p, int slice, Vec2 q) {
   return p.offset[slice] + p.scale[slice] * rotate(q - p.pivot, p.angle[slice]);
 }
 
+Vec2 placed(const Placement& p, const SpacetimeElement& e, int s, int v) {
+  const int period = e.slice_count - 1;
+  const int source = p.phase == 0 || period < 1 ? s : (s + p.phase) % period;
+  return apply(p, s, e.position(source, v));
+}
+
 Vec2 rest_centroid(const SpacetimeElement& e) {
   std::vector<Vec2> ring(e.slice.vertices.begin(), e.slice.vertices.begin() + e.slice.boundary_count);
   const double a = signed_area(ring);

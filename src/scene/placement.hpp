@@ -26,9 +26,14 @@ struct Placement {
   };
   std::vector<Key> keys;  ///< one per target, in slice order (guided only)
   int loop_partner = -1;       ///< instance whose first slice this one's last slice meets
+  int phase = 0;  ///< slices by which its animation is ahead round the loop (unguided only)
 };
 
 Vec2 apply(const Placement& p, int slice, Vec2 q);
+
+/// Slice vertex v of instance p at slice s: its library element's animated vertex `phase` slices on
+/// round the loop (slice n - 1 is slice 0 again), placed by `apply`.
+Vec2 placed(const Placement& p, const SpacetimeElement& e, int s, int v);
 
 /// Area centroid of the boundary ring of the rest slice.
 Vec2 rest_centroid(const SpacetimeElement& e);

@@ -114,6 +114,8 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
 
   std::vector<Placement> out;
   std::vector<int> per_library(library.size(), 0);
+  // Phases come from their own stream, so that a phase leaves the seeds and orientations as they were.
+  Rng phases(scene.seed ^ 0x70686173652d7267ull);
   for (std::size_t k = 0; k < seeds.size(); ++k) {
     const SpacetimeElement& e = library[picks[k]];
     Placement p;
@@ -124,6 +126,12 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     p.offset.assign(e.slice_count, seeds[k]);
     p.scale.assign(e.slice_count, scene.params.initial_scale);
     p.angle.assign(e.slice_count, angle);
+    const LibraryElementSpec& spec = scene.elements[picks[k]];
+    const int period = e.slice_count - 1;
+    if (spec.random_phase)
+      p.phase = static_cast<int>(phases.below(static_cast<std::uint64_t>(period)));
+    else
+      p.phase = static_cast<int>(std::lround(spec.phase * period)) % period;
     out.push_back(std::move(p));
   }
   notes.push_back("seeded " + std::to_string(out.size()) + " unguided element(s) at spacing " +
@@ -146,7 +154,7 @@ void check_placements(const Container& container, const std::vector<SpacetimeEle
     for (int s = 0; s < e.slice_count; ++s) {
       std::vector<Vec2> ring;
       for (int v = 0; v < e.slice.boundary_count; ++v) {
-        const Vec2 p = apply(placements[i], s, e.position(s, v));
+        const Vec2 p = placed(placements[i], e, s, v);
         if (must_fit[s] && !container.contains(p))
           throw InputError("element " + placements[i].name + " lies outside the container at slice " +
                            std::to_string(s) + " after shrinking; move its seed or targets inward");

@@ -22,7 +22,7 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
     topo.slice_element.push_back(index);
     const float t = static_cast<float>(s) / static_cast<float>(n - 1);
     for (int v = 0; v < P; ++v) {
-      const Vec2 q = scene_detail::apply(p, s, e.position(s, v));
+      const Vec2 q = scene_detail::placed(p, e, s, v);
       std::uint8_t flags = v < B ? vertex_boundary : 0;
       std::int32_t target = -1;
       if (keyed && key->hold_angle) flags |= vertex_hold_angle;

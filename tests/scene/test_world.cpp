@@ -2,6 +2,7 @@
 // rest copy centroids and rest lengths, containment, the set-up errors, determinism and orientation.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -252,6 +253,69 @@ TEST_CASE("build_world: the same scene and seed give identical bytes, another se
     moved = moved || a.elements[i].position.x != other.elements[i].position.x ||
             a.elements[i].position.y != other.elements[i].position.y;
   CHECK(moved);
+}
+
+namespace {
+
+// Mean distance of slice s's rest vertices from their centroid: the pulse's size at that slice.
+std::vector<double> slice_sizes(const World& w, int element) {
+  const Topology& topo = w.topology;
+  std::vector<double> sizes;
+  for (std::int32_t s = topo.element_slice_begin[element]; s < topo.element_slice_begin[element + 1]; ++s) {
+    double sum = 0.0;
+    const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
+    for (std::int32_t v = lo; v < hi; ++v)
+      sum += std::hypot(topo.rest_copy_x[v] - topo.slice_rest_copy_cx[s], topo.rest_copy_y[v] - topo.slice_rest_copy_cy[s]);
+    sizes.push_back(sum / (hi - lo));
+  }
+  return sizes;
+}
+
+std::string pulsing(const std::string& phase) {
+  return R"({"preset": "pulse", "amplitude": 0.3, "count": 1})" + (phase.empty() ? "" : R"(, "phase": )" + phase);
+}
+
+}  // namespace
+
+TEST_CASE("build_world: a phase starts each copy's animation that many slices on round the loop") {
+  constexpr int slices = 9;  // 8 slice intervals round the loop
+  const World plain = world_of(star_scene(3, slices, 5, {}, pulsing("")));
+  const World ahead = world_of(star_scene(3, slices, 5, {}, pulsing("0.25")));
+  REQUIRE(ahead.elements.size() == plain.elements.size());
+  for (std::size_t i = 0; i < plain.elements.size(); ++i) {
+    INFO("element " << i);
+    // Seeds and orientations are drawn as before.
+    CHECK(ahead.elements[i].position.x == plain.elements[i].position.x);
+    CHECK(ahead.elements[i].angle == plain.elements[i].angle);
+    const std::vector<double> a = slice_sizes(ahead, int(i)), p = slice_sizes(plain, int(i));
+    for (int s = 0; s < slices; ++s) CHECK(a[s] == Approx(p[(s + 2) % 8]).epsilon(1e-12));
+    // The loop is not cut: the last slice is the first one again.
+    CHECK(a[slices - 1] == a[0]);
+    CHECK(a[2] != Approx(a[0]).epsilon(1e-3));  // the pulse does change the size
+  }
+  // The slices keep their times: a phase moves the animation, not the time axis.
+  CHECK(same_bytes(ahead.topology.rest_t, plain.topology.rest_t));
+  CHECK(same_bytes(ahead.state.t, plain.state.t));
+
+  // "random": each copy its own phase, the same for the same seed.
+  const World random = world_of(star_scene(6, slices, 5, {}, pulsing(R"("random")")));
+  const World again = world_of(star_scene(6, slices, 5, {}, pulsing(R"("random")")));
+  CHECK(same_bytes(random.topology.rest_copy_x, again.topology.rest_copy_x));
+  std::set<int> largest;  // the slice where each copy is largest
+  for (std::size_t i = 0; i < random.elements.size(); ++i) {
+    const std::vector<double> a = slice_sizes(random, int(i));
+    largest.insert(int(std::max_element(a.begin(), a.end() - 1) - a.begin()));
+  }
+  CHECK(largest.size() > 1);
+}
+
+TEST_CASE("parse_scene: phase is a number in [0, 1] or \"random\", and needs a looping scene") {
+  CHECK_THAT(error_of(star_scene(2, kSlices, 1, {}, pulsing("1.5"))),
+             Contains("elements[0].phase: expected a number in [0, 1]"));
+  CHECK_THAT(error_of(star_scene(2, kSlices, 1, {}, pulsing(R"("sometimes")"))),
+             Contains(R"(elements[0].phase: expected a number in [0, 1] or "random", got "sometimes")"));
+  CHECK_THAT(error_of(star_scene(2, kSlices, 1, {R"(, "loop": false)", ""}, pulsing("0.5"))),
+             Contains("elements[0].phase: a phase needs a looping scene"));
 }
 
 TEST_CASE("build_world: fixed orientation turns every unguided element alike, tangential follows the field") {
