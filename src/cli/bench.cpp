@@ -9,6 +9,7 @@
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
 #include "bench_report.hpp"
+#include "pack_output.hpp"
 #include "commands.hpp"
 
 namespace animpak::cli {
@@ -59,7 +60,8 @@ std::vector<BenchTarget> bench_targets(const BenchOptions& options) {
 
 // The synthetic series to time: with --scene given, none unless --series asks for them.
 std::vector<std::string> bench_series(const BenchOptions& options) {
-  const std::string series = options.series.value_or(options.scenes.empty() ? "constant" : "");
+  const std::string series =
+      options.series.value_or(options.scenes.empty() && options.states.empty() ? "constant" : "");
   if (series.empty()) return {};
   if (series == "both") return {"constant", "dense"};
   return {series};
@@ -76,6 +78,14 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
     World w = make_world(load_scene(file));
     const int elements = static_cast<int>(w.elements.size());
     worlds.push_back({file.string(), "scene", elements, std::move(w)});
+    print_notes(worlds.back());
+  }
+  // Packed states: the world rebuilt from the scene inside the checkpoint, at its packed state.
+  for (const std::filesystem::path& given : options.states) {
+    const std::filesystem::path file = std::filesystem::is_directory(given) ? given / "state.bin" : given;
+    LoadedWorld loaded = world_from_checkpoint(read_checkpoint(file), true);
+    const int elements = static_cast<int>(loaded.world.elements.size());
+    worlds.push_back({given.string(), "state", elements, std::move(loaded.world)});
     print_notes(worlds.back());
   }
   const std::vector<std::string> series = bench_series(options);
@@ -97,7 +107,7 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
       worlds.push_back({scene, name, s.elements, std::move(s.world)});
       print_notes(worlds.back());
     }
-  if (options.example_scenes && options.scenes.empty())
+  if (options.example_scenes && options.scenes.empty() && options.states.empty())
     for (const char* name : {"default", "aquarium", "annulus"}) {
       World w = make_world(load_scene(options.examples / name / "scene.json"));
       const int elements = static_cast<int>(w.elements.size());

@@ -81,11 +81,13 @@ struct BenchOptions {
   int steps = 20;                                 ///< timed steps per world
   int warmup = 3;                                 ///< untimed steps first (caches, allocations)
   int slices = 20;                                ///< n_s of the synthetic worlds
-  /// constant, dense or both (docs/benchmark.md); unset: constant, or none when `scenes` is given
+  /// constant, dense or both (docs/benchmark.md); unset: constant, or none when `scenes` or `states` is given
   std::optional<std::string> series;
   std::vector<std::filesystem::path> scenes;      ///< the user's own scene files, timed by name
+  /// packed folders (or their state.bin): timed from the packed state, where the neighbours are close
+  std::vector<std::filesystem::path> states;
   std::filesystem::path examples = "examples";    ///< the element art and the example scenes
-  bool example_scenes = true;                     ///< also time examples/{default,aquarium,annulus} (not with `scenes`)
+  bool example_scenes = true;  ///< also time examples/{default,aquarium,annulus} (not with `scenes` or `states`)
   std::optional<std::filesystem::path> json;
   std::string grid_sort = "auto";  ///< auto, host, device, or both: each OpenCL device timed with each sort
 };

@@ -76,6 +76,9 @@ int run(int argc, char** argv) {
   bench_cmd->add_option("--scene", bench_options.scenes,
                         "time this scene file too (repeatable); without --series, instead of the synthetic worlds "
                         "and the example scenes");
+  bench_cmd->add_option("--state", bench_options.states,
+                        "time steps from this packed state: a folder written by pack, or its state.bin "
+                        "(repeatable); without --series, instead of the synthetic worlds and the example scenes");
   bench_cmd->add_option("--sizes", bench_options.sizes, "target vertex counts of the synthetic worlds")
       ->delimiter(',')
       ->check(CLI::Range(100, 10000000));

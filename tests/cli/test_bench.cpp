@@ -2,8 +2,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+
 #include "bench_report.hpp"
 #include "run_animpak.hpp"
+#include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -137,6 +140,32 @@ TEST_CASE("animpak bench --scene: times the given scene by its path, alone or be
   std::vector<std::string> scenes;
   for (const auto& row : j.at("results")) scenes.push_back(row.at("scene").get<std::string>());
   CHECK(scenes == std::vector<std::string>{scene, "dense-2000"});
+}
+
+TEST_CASE("animpak bench --state: times steps from a packed state, a folder or its state.bin") {
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const std::string scene = (scratch / "scene.json").string(), packed = (scratch / "packed").string();
+  std::ofstream(scene) << animpak::test::star_scene(3, 5, 2);
+  REQUIRE(run_animpak("pack " + scene + " --out " + packed + " --max-iterations 30 --no-render").code == 0);
+  const auto json_file = scratch / "bench-state.json";
+  CommandResult r = run_animpak("bench --state " + packed + " --state " + packed + "/state.bin --steps 1 --warmup 0 "
+                                "--examples " + examples() + " --json " + json_file.string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  nlohmann::json j = nlohmann::json::parse(read_text(json_file));
+  // The two states and nothing else.
+  REQUIRE(j.at("results").size() == 2);
+  CHECK(j.at("results")[0].at("scene") == packed);
+  CHECK(j.at("results")[1].at("scene") == packed + "/state.bin");
+  for (const auto& row : j.at("results")) {
+    CHECK(row.at("series") == "state");
+    CHECK(row.at("elements") == 3);
+    CHECK(row.at("vertices").get<int>() > 0);
+  }
+  // A folder without a state is bad input naming the file.
+  r = run_animpak("bench --state " + scratch.path().string() + " --steps 1 --examples " + examples());
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Catch::Matchers::Contains((scratch / "state.bin").string()));
 }
 
 TEST_CASE("animpak bench --scene with a missing file is bad input naming the file") {
