@@ -54,6 +54,33 @@ bool container_query(int segments, const ContainerIndexInfo ix, __global const i
   return inside;
 }
 
+/** Whether the boundary edge p → n properly crosses a container segment (reference
+ * edge_crosses_container): with the index, only the segments of the bands from the edge's lower end to
+ * its upper end, which hold every segment that can cross it. */
+bool edge_crosses_container(int segments, const ContainerIndexInfo ix, __global const int* index, float px, float py,
+                            float nx, float ny, __global const float* ax, __global const float* ay,
+                            __global const float* bx, __global const float* by) {
+  if (ix.nx > 0) {
+    const int j0 = grid_axis_cell((ny < py ? ny : py) - ix.y0, ix.cell, ix.ny); /* std::min, std::max */
+    const int j1 = grid_axis_cell((py < ny ? ny : py) - ix.y0, ix.cell, ix.ny);
+    for (int j = j0; j <= j1; ++j)
+      for (int k = index[j]; k < index[j + 1]; ++k) {
+        const int i = index[ix.band_segments + k];
+        if (overlap_opposite(overlap_orient(ax[i], ay[i], bx[i], by[i], px, py),
+                             overlap_orient(ax[i], ay[i], bx[i], by[i], nx, ny)) &&
+            overlap_opposite(overlap_orient(px, py, nx, ny, ax[i], ay[i]), overlap_orient(px, py, nx, ny, bx[i], by[i])))
+          return true;
+      }
+    return false;
+  }
+  for (int i = 0; i < segments; ++i)
+    if (overlap_opposite(overlap_orient(ax[i], ay[i], bx[i], by[i], px, py),
+                         overlap_orient(ax[i], ay[i], bx[i], by[i], nx, ny)) &&
+        overlap_opposite(overlap_orient(px, py, nx, ny, ax[i], ay[i]), overlap_orient(px, py, nx, ny, bx[i], by[i])))
+      return true;
+  return false;
+}
+
 /** The container's force from the query of (px, py) (reference boundary_force): Eq. 4 outside; inside,
  * for a boundary vertex within wall_range of the wall, the wall's Eq. 1-shaped repulsion from its
  * nearest point. */

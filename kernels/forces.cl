@@ -8,6 +8,8 @@
 __kernel void step_forces(const WorldInfo world, const ForceParams p,
                           __global const float* x, __global const float* y, __global const float* t, /* input: positions */
                           __global const int* slice,          /* input: per vertex */
+                          __global const int* slice_begin,    /* input: slices + 1 */
+                          __global const int* slice_boundary, /* input: boundary vertices per slice */
                           __global const uchar* flags,        /* input: VertexFlag bits per vertex */
                           __global const float* rest_t,       /* input: per vertex */
                           __global const float* rest_dir_x,   /* input: per vertex */
@@ -74,7 +76,19 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   uchar bits = in_container ? 0 : AP_CONTACT_OUTSIDE;
   float gap = dist;
   if (boundary) {
-    const float wall_gap = in_container ? sqrt(wall2) : 0.0f;
+    float wall_gap = in_container ? sqrt(wall2) : 0.0f;
+    /* Both ends inside, the edge to the next boundary vertex may still leave around a reflex corner. */
+    if (in_container) {
+      const int lo = slice_begin[s];
+      const int next = v - lo + 1 == slice_boundary[s] ? lo : v + 1;
+      const float ex = x[next] - px, ey = y[next] - py;
+      if (wall2 < ex * ex + ey * ey &&
+          edge_crosses_container(world.segments, container_index, container_lists, px, py, x[next], y[next], seg_ax,
+                                 seg_ay, seg_bx, seg_by)) {
+        bits = AP_CONTACT_OUTSIDE;
+        wall_gap = 0.0f;
+      }
+    }
     gap = overlapping ? 0.0f : (wall_gap < dist ? wall_gap : dist);
     if (wall_gap < p.stop_gap) bits |= AP_CONTACT_WALL;
   }

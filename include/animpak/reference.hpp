@@ -183,6 +183,11 @@ struct ContainerQuery {
 /// A world without a container has every point inside. boundary.cpp.
 ContainerQuery container_query(const ContainerGeometry& box, float px, float py, bool nearest);
 
+/// Whether the boundary edge p → n properly crosses a segment of the container's boundary (touching does
+/// not count). Both ends may be inside: a reflex corner of the container, such as the heart's notch,
+/// then pokes into the element between them (docs/parameters.md, "Containment"). boundary.cpp.
+bool edge_crosses_container(const ContainerGeometry& box, float px, float py, float nx, float ny);
+
 /// The container's force on a point, from its query: outside, Eq. 4, k_bdr (p_b − x) in x, y; inside, for
 /// a boundary vertex (`boundary`), the wall repels like a neighbour, wall_repulsion · k_rpl · u/|u| ·
 /// 1/(ε + |u|²) with u = x − p_b (Eq. 1's form; docs/parameters.md, "Containment"). boundary.cpp.

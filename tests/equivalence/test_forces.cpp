@@ -196,6 +196,16 @@ TEST_CASE("forces: elements touching the container and a hole", "[equivalence][o
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
 }
 
+TEST_CASE("forces: boundary edges across a reflex corner of the container, both ends inside", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.set_container({{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.7f}, {0.0f, 1.0f}}});
+  b.add_element(square_tube(0.5f, 0.65f, 0.1f, {0.0f, 0.5f, 1.0f}));   // straddles the notch
+  b.add_element(square_tube(0.2f, 0.3f, 0.05f, {0.0f, 0.5f, 1.0f}));   // clear of it
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "notch");
+}
+
 TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;

@@ -75,6 +75,49 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   CHECK(changed[8] == growth_grew);
 }
 
+TEST_CASE("containment: a boundary edge across a reflex corner of the container counts as outside") {
+  // A square container with a notch: its top edge dips to a reflex corner at (0.5, 0.7).
+  const Params p = test::paper_params();
+  const test::Ring notched{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.7f}, {0.0f, 1.0f}};
+  std::vector<float> times{0.0f, 0.5f, 1.0f};
+  for (const bool indexed : {true, false}) {
+    INFO((indexed ? "with" : "without") << " the container index");
+    WorldBuilder b;
+    b.set_container({notched});
+    // Slice 1 straddles the notch: its four corners are inside, its top edge (vertex 2 to 3, y = 0.75)
+    // passes above the corner. Slices 0 and 2 sit lower, clear of it.
+    std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.1f, times);
+    slices[1].ring = test::square(0.5f, 0.65f, 0.1f);
+    b.add_element(slices);
+    test::World w = b.build();
+    if (!indexed) w.topo.container.index = {};
+    for (int v = 4; v < 8; ++v) REQUIRE(container_query(w.topo.container, w.state.x[v], w.state.y[v], false).inside);
+    CHECK(edge_crosses_container(w.topo.container, 0.6f, 0.75f, 0.4f, 0.75f));
+    CHECK_FALSE(edge_crosses_container(w.topo.container, 0.6f, 0.55f, 0.4f, 0.55f));
+    CHECK_FALSE(edge_crosses_container(w.topo.container, 0.6f, 0.75f, 0.6f, 0.55f));
+    // An edge that leaves through the outline with one end outside crosses too.
+    CHECK(edge_crosses_container(w.topo.container, 0.9f, 0.5f, 1.1f, 0.5f));
+
+    const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
+    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    for (int v = 0; v < 12; ++v) {
+      INFO("vertex " << v);
+      CHECK(((f.contact[v] & contact_outside) != 0) == (v == 6));
+    }
+    CHECK(f.closest[6] == 0.0f);
+    // The slice shrinks back, as a spilling slice does; its neighbours may grow.
+    SimState state = w.state;
+    for (float& g_s : state.growth) g_s = 2.0f;
+    Params grow = p;
+    grow.growth_ratio = 100.0;
+    grow.neighbour_growth_ratio = 100.0;
+    std::vector<std::uint8_t> changed;
+    grow_slices(w.topo, f.contact, grow, true, state, changed);
+    CHECK((changed[1] & growth_shrank) != 0);
+    CHECK(state.growth[1] < 2.0f);
+  }
+}
+
 TEST_CASE("containment: a lone element in a large container stops at the wall, inside it") {
   // One star in the heart. Without the wall as a neighbour its slice gap stays infinite, the stop test
   // never passes and it grows to max_growth, far past the heart.

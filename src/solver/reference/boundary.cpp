@@ -4,6 +4,7 @@
 // container is the same in every t, so the test and the force are in x, y only. Holes count: the
 // even–odd rule over the segments of all rings puts a vertex inside a hole outside the container, and
 // p_b is searched on every ring.
+#include <algorithm>
 #include <cmath>
 
 #include "animpak/reference.hpp"
@@ -59,6 +60,41 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
     for (std::size_t i = 0; i < segments; ++i) try_segment(static_cast<std::int32_t>(i));
   }
   return q;
+}
+
+namespace {
+
+float orient(float ax, float ay, float bx, float by, float cx, float cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+bool opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
+
+bool edges_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by) {
+  return opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
+         opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by));
+}
+
+}  // namespace
+
+bool edge_crosses_container(const ContainerGeometry& box, float px, float py, float nx, float ny) {
+  const std::size_t segments = box.ax.size();
+  const ContainerIndex& ix = box.index;
+  if (ix.nx > 0) {
+    // A segment crossing the edge meets it at a y inside the edge's y range, so it is listed in that
+    // y's band: the bands from the lower end's to the upper end's hold every candidate.
+    const std::int32_t j0 = grid_axis_cell(std::min(py, ny) - ix.y0, ix.cell, ix.ny);
+    const std::int32_t j1 = grid_axis_cell(std::max(py, ny) - ix.y0, ix.cell, ix.ny);
+    for (std::int32_t j = j0; j <= j1; ++j)
+      for (std::int32_t k = ix.data[j]; k < ix.data[j + 1]; ++k) {
+        const std::int32_t i = ix.data[ix.band_segments + k];
+        if (edges_cross(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
+      }
+    return false;
+  }
+  for (std::size_t i = 0; i < segments; ++i)
+    if (edges_cross(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
+  return false;
 }
 
 Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, float py, bool boundary) {

@@ -70,7 +70,20 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     // may overlap where v itself is clear).
     std::uint8_t contact = wall.inside ? 0 : contact_outside;
     if (boundary) {
-      const float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
+      float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
+      // Both ends inside, the boundary edge to the next vertex may still leave the container around a
+      // reflex corner. Only when the wall is nearer than the edge is long can it cross (the crossing point
+      // is on the wall): that edge counts as outside, and its vertex touches.
+      if (wall.inside) {
+        const std::int32_t lo = topo.slice_begin[s];
+        const std::int32_t next = v - lo + 1 == topo.slice_boundary[s] ? lo : v + 1;
+        const float ex = state.x[next] - px, ey = state.y[next] - py;
+        if (wall.distance2 < ex * ex + ey * ey &&
+            edge_crosses_container(topo.container, px, py, state.x[next], state.y[next])) {
+          contact = contact_outside;
+          wall_gap = 0.0f;
+        }
+      }
       r.closest[v] = overlap.overlap ? 0.0f : (wall_gap < rpl.closest ? wall_gap : rpl.closest);
       if (wall_gap < stop_gap) contact |= contact_wall;
     }
