@@ -66,18 +66,12 @@ bool edge_crosses_container(int segments, const ContainerIndexInfo ix, __global 
     for (int j = j0; j <= j1; ++j)
       for (int k = index[j]; k < index[j + 1]; ++k) {
         const int i = index[ix.band_segments + k];
-        if (overlap_opposite(overlap_orient(ax[i], ay[i], bx[i], by[i], px, py),
-                             overlap_orient(ax[i], ay[i], bx[i], by[i], nx, ny)) &&
-            overlap_opposite(overlap_orient(px, py, nx, ny, ax[i], ay[i]), overlap_orient(px, py, nx, ny, bx[i], by[i])))
-          return true;
+        if (segments_cross(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
       }
     return false;
   }
   for (int i = 0; i < segments; ++i)
-    if (overlap_opposite(overlap_orient(ax[i], ay[i], bx[i], by[i], px, py),
-                         overlap_orient(ax[i], ay[i], bx[i], by[i], nx, ny)) &&
-        overlap_opposite(overlap_orient(px, py, nx, ny, ax[i], ay[i]), overlap_orient(px, py, nx, ny, bx[i], by[i])))
-      return true;
+    if (segments_cross(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
   return false;
 }
 

@@ -24,6 +24,12 @@ float overlap_orient(float ax, float ay, float bx, float by, float cx, float cy)
 
 bool overlap_opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
 
+/** Proper crossing of segments p → n and a → b (boundary.cpp: segments_cross). */
+bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by) {
+  return overlap_opposite(overlap_orient(ax, ay, bx, by, px, py), overlap_orient(ax, ay, bx, by, nx, ny)) &&
+         overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by));
+}
+
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
  * slice. */
 __kernel void slice_boxes(const WorldInfo world,
@@ -124,9 +130,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
       const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
       const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      if (overlap_opposite(overlap_orient(ax, ay, bx, by, px, py), overlap_orient(ax, ay, bx, by, nx, ny)) &&
-          overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by)))
-        crosses = true;
+      if (segments_cross(px, py, nx, ny, ax, ay, bx, by)) crosses = true;
       float cx, cy;
       const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;

@@ -85,6 +85,10 @@ float closest_point_on_segment(float px, float py, float ax, float ay, float bx,
 /// towards +x crosses segment (ax, ay)–(bx, by). Toggle "inside" on every true. boundary.cpp.
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by);
 
+/// Whether segments p → n and a → b cross properly: each one's ends strictly on opposite sides of the
+/// other's line (touching or collinear does not count). boundary.cpp.
+bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by);
+
 // ---- forces (§5); each returns the force on vertex v only ---------------------------------------------
 
 struct RepulsionResult {

@@ -26,12 +26,6 @@ namespace {
 // vertices at one t after every step).
 float slice_t(const Topology& topo, const SimState& state, std::int32_t s) { return state.t[topo.slice_begin[s]]; }
 
-float orient(float ax, float ay, float bx, float by, float cx, float cy) {
-  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-bool opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
-
 }  // namespace
 
 void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
@@ -246,9 +240,7 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
       const float by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
       // A proper crossing of the query's boundary edge with this edge (touching does not count).
-      if (opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
-          opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by)))
-        crosses = true;
+      if (segments_cross(px, py, nx, ny, ax, ay, bx, by)) crosses = true;
       float cx, cy;
       const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
       if (d2 < near2) near2 = d2, qx = cx, qy = cy;
