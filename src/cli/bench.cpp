@@ -9,8 +9,8 @@
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
 #include "bench_report.hpp"
-#include "pack_output.hpp"
 #include "commands.hpp"
+#include "pack_output.hpp"
 
 namespace animpak::cli {
 namespace {
