@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # The whole test suite, from a clean clone: installs what is missing, builds the release and the
 # sanitizer (ASan + UBSan) builds, and runs every test in both. README quick start, command 2.
+# Unity builds (CMAKE_UNITY_BUILD: each target's sources compiled a few at a time in one translation
+# unit) take a build from scratch in about half the time; `-DCMAKE_UNITY_BUILD=OFF` on a later configure
+# goes back to one object per source for incremental work.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 for preset in release debug; do
-  cmake --preset "$preset" >/dev/null
+  start=$SECONDS
+  cmake --preset "$preset" -DCMAKE_UNITY_BUILD=ON >/dev/null
   cmake --build --preset "$preset"
+  built=$SECONDS
   ctest --preset "$preset"
+  echo "test.sh: $preset: built in $((built - start)) s, tested in $((SECONDS - built)) s"
 done

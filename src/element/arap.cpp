@@ -26,11 +26,6 @@ namespace {
 // the ≈0.5–1.7 of well-shaped triangles and only matters for edges that would otherwise be ≤ 0.
 constexpr double min_weight = 1e-2;
 
-struct Neighbor {
-  int vertex;
-  double weight;
-};
-
 double cotangent(Vec2 apex, Vec2 a, Vec2 b) {
   const Vec2 u = a - apex, v = b - apex;
   const double area2 = std::fabs(cross(u, v));
@@ -41,6 +36,12 @@ double cotangent(Vec2 apex, Vec2 a, Vec2 b) {
 }  // namespace
 
 struct ArapSolver::Impl {
+  // Nested rather than file-local: a member type from an anonymous namespace trips -Wsubobject-linkage
+  // when the file is compiled inside a unity build (scripts/test.sh).
+  struct Neighbor {
+    int vertex;
+    double weight;
+  };
   std::vector<Vec2> rest;
   std::vector<std::vector<Neighbor>> neighbors;
   std::vector<int> handles;
@@ -121,7 +122,7 @@ ArapSolver::ArapSolver(const SliceMesh& mesh, std::vector<int> handle_vertices) 
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (const Neighbor& nb : m.neighbors[v])
+    for (const Impl::Neighbor& nb : m.neighbors[v])
       if (!reached[nb.vertex]) {
         reached[nb.vertex] = 1;
         stack.push_back(nb.vertex);
@@ -145,7 +146,7 @@ ArapSolver::ArapSolver(const SliceMesh& mesh, std::vector<int> handle_vertices) 
     const int row = m.free_index[v];
     if (row < 0) continue;
     double diagonal = 0.0;
-    for (const Neighbor& nb : m.neighbors[v]) {
+    for (const Impl::Neighbor& nb : m.neighbors[v]) {
       diagonal += nb.weight;
       const int col = m.free_index[nb.vertex];
       if (col >= 0) ff.emplace_back(row, col, -nb.weight);
@@ -200,7 +201,7 @@ std::vector<Vec2> ArapSolver::solve(const std::vector<Vec2>& handles, const std:
       const int row = m.free_index[v];
       if (row < 0) continue;
       double bx = 0.0, by = 0.0;
-      for (const Neighbor& nb : m.neighbors[v]) {
+      for (const Impl::Neighbor& nb : m.neighbors[v]) {
         // ½ (R_i + R_j)(r_i − r_j), with R = [[c, −s], [s, c]].
         const double c = 0.5 * (rotation[v][0] + rotation[nb.vertex][0]);
         const double s = 0.5 * (rotation[v][1] + rotation[nb.vertex][1]);
@@ -228,7 +229,7 @@ double ArapSolver::energy(const std::vector<Vec2>& positions) const {
   double e = 0.0;
   for (int v = 0; v < static_cast<int>(m.rest.size()); ++v) {
     const auto [c, s] = m.best_rotation(v, positions);
-    for (const Neighbor& nb : m.neighbors[v]) {
+    for (const Impl::Neighbor& nb : m.neighbors[v]) {
       const Vec2 d = positions[v] - positions[nb.vertex], r = m.rest[v] - m.rest[nb.vertex];
       const Vec2 residual = d - Vec2{c * r.x - s * r.y, s * r.x + c * r.y};
       e += nb.weight * dot(residual, residual);

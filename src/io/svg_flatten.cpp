@@ -11,7 +11,7 @@ namespace animpak::svg {
 namespace {
 
 // Deeper subdivision than this cannot matter at any sane tolerance and guards against NaN input.
-constexpr int kMaxDepth = 18;
+constexpr int kMaxFlattenDepth = 18;
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
@@ -139,7 +139,7 @@ void PathFlattener::cubic_art(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, int depth) {
   // The curve lies in the hull of its control points, so when both inner points are within the
   // tolerance of the chord the whole curve is.
   const double flat = std::max(distance_to_segment(p1, p0, p3), distance_to_segment(p2, p0, p3));
-  if (!(flat > tol_) || depth >= kMaxDepth) {
+  if (!(flat > tol_) || depth >= kMaxFlattenDepth) {
     emit(p3, false);
     return;
   }

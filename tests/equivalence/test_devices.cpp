@@ -113,6 +113,11 @@ TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and
         "temporal.cl:3:1: error: x\n");
   // Compilers that honour #line already name the file; their logs pass through unchanged.
   CHECK(opencl::annotate_build_log("temporal.cl:5:1: error: x\n", source) == "temporal.cl:5:1: error: x\n");
+  // Another file whose name ends in "input.cl", a name without a number after it, and a number no int
+  // holds pass through too; a location at the very end of the log is still translated.
+  CHECK(opencl::annotate_build_log("myinput.cl:3:1: x\n<source>: y\n<kernel>:99999999999:1: z\n", source) ==
+        "myinput.cl:3:1: x\n<source>: y\n<kernel>:99999999999:1: z\n");
+  CHECK(opencl::annotate_build_log("see <source>:" + std::to_string(third), source) == "see temporal.cl:3");
 }
 
 }  // namespace animpak::test

@@ -28,7 +28,7 @@ const std::string kHeader = "1\nforeground_color_rgb 0 -1,-1,-1\nbackground_colo
 const std::string kTriangle = "0 1 0 0 0 10 0 0 10\n";
 
 /// The InputError message for `text`, or a marker that no error was thrown.
-std::string error_of(const std::string& text) {
+std::string path_error_of(const std::string& text) {
   try {
     parse_path_text(text, "bad.path");
   } catch (const InputError& e) {
@@ -132,88 +132,88 @@ TEST_CASE("parse_path_text: tolerates CRLF, runs of spaces and blank trailing li
 }
 
 TEST_CASE("parse_path_text: the minimal valid file parses") {
-  CHECK(error_of(kHeader + kTriangle) == "(no error)");
+  CHECK(path_error_of(kHeader + kTriangle) == "(no error)");
 }
 
 TEST_CASE("parse_path_text: empty file") {
-  CHECK_THAT(error_of(""), StartsWith("bad.path:1: the file is empty;"));
-  CHECK_THAT(error_of("\n  \n"), StartsWith("bad.path:1: the file is empty;"));
+  CHECK_THAT(path_error_of(""), StartsWith("bad.path:1: the file is empty;"));
+  CHECK_THAT(path_error_of("\n  \n"), StartsWith("bad.path:1: the file is empty;"));
 }
 
 TEST_CASE("parse_path_text: garbled region count") {
-  CHECK_THAT(error_of("one\n" + kHeader.substr(2) + kTriangle),
+  CHECK_THAT(path_error_of("one\n" + kHeader.substr(2) + kTriangle),
              StartsWith("bad.path:1: expected the region count (one integer), got `one`;"));
-  CHECK_THAT(error_of("2\n" + kHeader.substr(2) + kTriangle), Contains("bad.path:1: the file has 2 regions"));
+  CHECK_THAT(path_error_of("2\n" + kHeader.substr(2) + kTriangle), Contains("bad.path:1: the file has 2 regions"));
 }
 
 TEST_CASE("parse_path_text: missing colour lines") {
-  CHECK_THAT(error_of("1\n"), StartsWith("bad.path:2: missing the foreground_color_rgb line;"));
-  CHECK_THAT(error_of("1\nforeground_color_rgb 0 -1,-1,-1\n"),
+  CHECK_THAT(path_error_of("1\n"), StartsWith("bad.path:2: missing the foreground_color_rgb line;"));
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 0 -1,-1,-1\n"),
              StartsWith("bad.path:3: missing the background_color_rgb line;"));
 }
 
 TEST_CASE("parse_path_text: garbled colour header keyword") {
-  CHECK_THAT(error_of("1\nforeground 0 -1,-1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
+  CHECK_THAT(path_error_of("1\nforeground 0 -1,-1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
              StartsWith("bad.path:2: expected `foreground_color_rgb`, got `foreground`;"));
-  CHECK_THAT(error_of("1\nforeground_color_rgb 0 -1,-1,-1\nforeground_color_rgb 0 10,20,30\n" + kTriangle),
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 0 -1,-1,-1\nforeground_color_rgb 0 10,20,30\n" + kTriangle),
              StartsWith("bad.path:3: expected `background_color_rgb`, got `foreground_color_rgb`;"));
 }
 
 TEST_CASE("parse_path_text: garbled colour") {
-  CHECK_THAT(error_of("1\nforeground_color_rgb 0 -1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 0 -1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
              StartsWith("bad.path:2: expected a colour `r,g,b`, got `-1,-1`;"));
-  CHECK_THAT(error_of("1\nforeground_color_rgb 0 -1,-1,-1\nbackground_color_rgb 0 10,20,300\n" + kTriangle),
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 0 -1,-1,-1\nbackground_color_rgb 0 10,20,300\n" + kTriangle),
              StartsWith("bad.path:3: colour `10,20,300` has a channel outside 0-255;"));
 }
 
 TEST_CASE("parse_path_text: colour count differs from path count") {
-  CHECK_THAT(error_of(kHeader + kTriangle + kTriangle),
+  CHECK_THAT(path_error_of(kHeader + kTriangle + kTriangle),
              StartsWith("bad.path:2: 1 colours for 2 paths; give exactly one r,g,b colour"));
-  CHECK_THAT(error_of("1\nforeground_color_rgb 0 -1,-1,-1\nbackground_color_rgb 0 1,1,1 2,2,2\n" + kTriangle),
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 0 -1,-1,-1\nbackground_color_rgb 0 1,1,1 2,2,2\n" + kTriangle),
              StartsWith("bad.path:3: 2 colours for 1 paths;"));
 }
 
 TEST_CASE("parse_path_text: header without path lines") {
-  CHECK_THAT(error_of(kHeader), StartsWith("bad.path:4: the file has no path lines;"));
+  CHECK_THAT(path_error_of(kHeader), StartsWith("bad.path:4: the file has no path lines;"));
 }
 
 TEST_CASE("parse_path_text: odd coordinate count") {
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 10 0 0 10 5\n"),
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 10 0 0 10 5\n"),
              StartsWith("bad.path:4: path 0 has an odd number of coordinates (7);"));
 }
 
 TEST_CASE("parse_path_text: non-numeric coordinate") {
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 10 0 0 1O\n"),
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 10 0 0 1O\n"),
              StartsWith("bad.path:4: path 0, token 9: `1O` is not a number;"));
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 10 0 0 -\n"), Contains("token 9: `-` is not a number"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 10 0 0 -\n"), Contains("token 9: `-` is not a number"));
 }
 
 TEST_CASE("parse_path_text: NaN and infinite coordinates") {
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 nan 0 0 10\n"),
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 nan 0 0 10\n"),
              StartsWith("bad.path:4: path 0, token 6: `nan` is not a finite number;"));
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 10 0 0 -inf\n"), Contains("`-inf` is not a finite number"));
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 1e999 0 0 10\n"), Contains("`1e999` is not a finite number"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 10 0 0 -inf\n"), Contains("`-inf` is not a finite number"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 1e999 0 0 10\n"), Contains("`1e999` is not a finite number"));
 }
 
 TEST_CASE("parse_path_text: path with fewer than 3 distinct points") {
-  CHECK_THAT(error_of(kHeader + "0 1 0 0 0 10 0 0 0 10 0\n"),
+  CHECK_THAT(path_error_of(kHeader + "0 1 0 0 0 10 0 0 0 10 0\n"),
              StartsWith("bad.path:4: path 0 has 2 distinct points, fewer than 3;"));
-  CHECK_THAT(error_of(kHeader + "0 1 0\n"), Contains("path 0 has 0 distinct points"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 0\n"), Contains("path 0 has 0 distinct points"));
 }
 
 TEST_CASE("parse_path_text: unknown pathType") {
-  CHECK_THAT(error_of(kHeader + "0 1 8 0 0 10 0 0 10\n"), StartsWith("bad.path:4: path 0: unknown pathType `8`;"));
-  CHECK_THAT(error_of(kHeader + "0 1 x 0 0 10 0 0 10\n"), Contains("unknown pathType `x`"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 8 0 0 10 0 0 10\n"), StartsWith("bad.path:4: path 0: unknown pathType `8`;"));
+  CHECK_THAT(path_error_of(kHeader + "0 1 x 0 0 10 0 0 10\n"), Contains("unknown pathType `x`"));
 }
 
 TEST_CASE("parse_path_text: bad isClosed flag and short path prefix") {
-  CHECK_THAT(error_of(kHeader + "0 2 0 0 0 10 0 0 10\n"), StartsWith("bad.path:4: path 0: expected isClosed 0 or 1, got `2`;"));
-  CHECK_THAT(error_of(kHeader + "0 1\n"), StartsWith("bad.path:4: path 0 has no `<region> <isClosed> <pathType>` prefix;"));
+  CHECK_THAT(path_error_of(kHeader + "0 2 0 0 0 10 0 0 10\n"), StartsWith("bad.path:4: path 0: expected isClosed 0 or 1, got `2`;"));
+  CHECK_THAT(path_error_of(kHeader + "0 1\n"), StartsWith("bad.path:4: path 0 has no `<region> <isClosed> <pathType>` prefix;"));
 }
 
 TEST_CASE("parse_path_text: region other than 0") {
-  CHECK_THAT(error_of(kHeader + "1 1 0 0 0 10 0 0 10\n"), StartsWith("bad.path:4: region 1 is not supported;"));
-  CHECK_THAT(error_of("1\nforeground_color_rgb 3 -1,-1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
+  CHECK_THAT(path_error_of(kHeader + "1 1 0 0 0 10 0 0 10\n"), StartsWith("bad.path:4: region 1 is not supported;"));
+  CHECK_THAT(path_error_of("1\nforeground_color_rgb 3 -1,-1,-1\nbackground_color_rgb 0 10,20,30\n" + kTriangle),
              StartsWith("bad.path:2: region 3 is not supported;"));
 }
 

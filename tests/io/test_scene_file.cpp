@@ -17,12 +17,12 @@ namespace {
 
 const std::filesystem::path kShapes = std::filesystem::path(ANIMPAK_SOURCE_DIR) / "examples" / "shapes";
 
-SceneSpec parse(const std::string& text) { return parse_scene(text, "scene.json", kShapes); }
+SceneSpec parse_scene_text(const std::string& text) { return parse_scene(text, "scene.json", kShapes); }
 
 /// The InputError message for `text`, or a marker that no error was thrown.
-std::string error_of(const std::string& text) {
+std::string scene_error_of(const std::string& text) {
   try {
-    parse(text);
+    parse_scene_text(text);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -47,7 +47,7 @@ std::string guided(const std::string& entries, const std::string& loop = "") {
 }  // namespace
 
 TEST_CASE("parse_scene: a full scene fills every field") {
-  const SceneSpec s = parse(R"({
+  const SceneSpec s = parse_scene_text(R"({
     "container": {"art": "heart-container.path", "outline": 0, "holes": [1, 2]},
     "elements": [
       {"name": "spinner", "art": "bird.path", "count": 3,
@@ -112,7 +112,7 @@ TEST_CASE("parse_scene: a full scene fills every field") {
 }
 
 TEST_CASE("parse_scene: a minimal scene takes every default") {
-  const SceneSpec s = parse(scene(kBird));
+  const SceneSpec s = parse_scene_text(scene(kBird));
   REQUIRE(s.elements.size() == 1);
   CHECK(s.elements[0].name == "bird");
   CHECK(s.elements[0].weight == 1.0);
@@ -129,8 +129,8 @@ TEST_CASE("parse_scene: a minimal scene takes every default") {
 }
 
 TEST_CASE("parse_scene: fixed and constant-field orientations, count fill") {
-  CHECK(parse(scene(kBird, R"(, "orientation": {"mode": "fixed", "angle": 45}, "count": "fill")")).orientation.angle == 45);
-  const SceneSpec s = parse(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "constant", "angle": 30}})"));
+  CHECK(parse_scene_text(scene(kBird, R"(, "orientation": {"mode": "fixed", "angle": 45}, "count": "fill")")).orientation.angle == 45);
+  const SceneSpec s = parse_scene_text(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "constant", "angle": 30}})"));
   CHECK(s.orientation.field == FieldKind::constant);
   CHECK(s.orientation.angle == 30);
 }
@@ -152,178 +152,178 @@ TEST_CASE("load_scene: a missing scene file") {
 }
 
 TEST_CASE("parse_scene: malformed JSON gives line and column") {
-  CHECK_THAT(error_of("{\n  \"container\": \"heart-container.path\",\n  \"elements\": [}\n"),
+  CHECK_THAT(scene_error_of("{\n  \"container\": \"heart-container.path\",\n  \"elements\": [}\n"),
              StartsWith("scene.json: malformed JSON at line 3, column 16:"));
 }
 
 TEST_CASE("parse_scene: a key given twice in one object") {
-  CHECK_THAT(error_of(scene(kBird, R"(, "seed": 1, "seed": 2)")),
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "seed": 1, "seed": 2)")),
              Contains("scene.json: key `seed` appears twice in one object"));
 }
 
 TEST_CASE("parse_scene: unknown top-level field suggests the close one") {
-  CHECK(error_of(R"({"container": "heart-container.path", "elemnts": []})") ==
+  CHECK(scene_error_of(R"({"container": "heart-container.path", "elemnts": []})") ==
         "scene.json: elemnts: unknown field; did you mean `elements`?");
-  CHECK_THAT(error_of(scene(kBird, R"(, "zzz": 1)")), StartsWith("scene.json: zzz: unknown field; expected one of `container`"));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "zzz": 1)")), StartsWith("scene.json: zzz: unknown field; expected one of `container`"));
 }
 
 TEST_CASE("parse_scene: unknown nested field and a prefix suggestion") {
-  CHECK(error_of(scene(R"([{"art": "bird.path", "anim": {}}])")) ==
+  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "anim": {}}])")) ==
         "scene.json: elements[0].anim: unknown field; did you mean `animation`?");
 }
 
 TEST_CASE("parse_scene: missing required fields") {
-  CHECK(error_of(R"({"elements": []})") == "scene.json: top level: missing required field `container`");
-  CHECK(error_of(R"({"container": "heart-container.path"})") == "scene.json: top level: missing required field `elements`");
-  CHECK_THAT(error_of(scene("[]")), StartsWith("scene.json: elements: expected at least one element"));
+  CHECK(scene_error_of(R"({"elements": []})") == "scene.json: top level: missing required field `container`");
+  CHECK(scene_error_of(R"({"container": "heart-container.path"})") == "scene.json: top level: missing required field `elements`");
+  CHECK_THAT(scene_error_of(scene("[]")), StartsWith("scene.json: elements: expected at least one element"));
 }
 
 TEST_CASE("parse_scene: type errors name the field and the value") {
-  CHECK_THAT(error_of(scene(kBird, R"(, "seed": "abc")")), StartsWith("scene.json: seed: expected an integer in [0, "));
-  CHECK(error_of(scene(kBird, R"(, "loop": 1)")) == "scene.json: loop: expected true or false, got 1");
-  CHECK(error_of(scene(R"({"art": "bird.path"})")) == "scene.json: elements: expected an array, got {\"art\":\"bird.path\"}");
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "seed": "abc")")), StartsWith("scene.json: seed: expected an integer in [0, "));
+  CHECK(scene_error_of(scene(kBird, R"(, "loop": 1)")) == "scene.json: loop: expected true or false, got 1");
+  CHECK(scene_error_of(scene(R"({"art": "bird.path"})")) == "scene.json: elements: expected an array, got {\"art\":\"bird.path\"}");
 }
 
 TEST_CASE("parse_scene: key time out of range") {
-  CHECK(error_of(animated_bird(R"({"keys": [{"t": 1.5}]})")) ==
+  CHECK(scene_error_of(animated_bird(R"({"keys": [{"t": 1.5}]})")) ==
         "scene.json: elements[0].animation.keys[0].t: expected a number in [0, 1], got 1.5");
 }
 
 TEST_CASE("parse_scene: keys out of order or with duplicate t") {
-  CHECK_THAT(error_of(animated_bird(R"({"keys": [{"t": 0.5}, {"t": 0.25}]})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"keys": [{"t": 0.5}, {"t": 0.25}]})")),
              StartsWith("scene.json: elements[0].animation.keys[1].t: keys out of order: t 0.25 comes after t 0.5"));
-  CHECK_THAT(error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0.5, "position": [0, 0]}, {"t": 0.5, "position": [1, 1]}]}]})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0.5, "position": [0, 0]}, {"t": 0.5, "position": [1, 1]}]}]})")),
              StartsWith("scene.json: elements[0].animation.handles[0].keys[1].t: duplicate t 0.5"));
 }
 
 TEST_CASE("parse_scene: a looping animation whose t = 1 key differs from t = 0") {
-  CHECK_THAT(error_of(animated_bird(R"({"keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")),
              StartsWith("scene.json: elements[0].animation.keys[1]: the key at t = 1 differs from the key at t = 0 "
                         "(translate [0, 0] vs [0, 0], rotate 90 vs 0, scale 1 vs 1) in a looping animation"));
-  CHECK_THAT(error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0, "position": [1, 2]}, {"t": 1, "position": [3, 2]}]}]})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0, "position": [1, 2]}, {"t": 1, "position": [3, 2]}]}]})")),
              StartsWith("scene.json: elements[0].animation.handles[0].keys[1]: the key at t = 1 (position [3, 2]) differs"));
-  CHECK(error_of(animated_bird(R"({"loop": false, "keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")) == "(no error)");
+  CHECK(scene_error_of(animated_bird(R"({"loop": false, "keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")) == "(no error)");
 }
 
 TEST_CASE("parse_scene: preset mistakes") {
-  CHECK(error_of(animated_bird(R"({"preset": "rotat"})")) ==
+  CHECK(scene_error_of(animated_bird(R"({"preset": "rotat"})")) ==
         "scene.json: elements[0].animation.preset: expected one of `none`, `rotate`, `pulse`, `swim`, got \"rotat\"; did you mean `rotate`?");
-  CHECK_THAT(error_of(animated_bird(R"({"preset": "pulse", "turns": 2})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"preset": "pulse", "turns": 2})")),
              StartsWith("scene.json: elements[0].animation.turns: does not apply to preset `pulse`"));
-  CHECK_THAT(error_of(animated_bird(R"({"amplitude": 0.1})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"amplitude": 0.1})")),
              StartsWith("scene.json: elements[0].animation.amplitude: needs a `preset`"));
-  CHECK_THAT(error_of(animated_bird(R"({"preset": "rotate", "keys": [{"t": 0}]})")),
+  CHECK_THAT(scene_error_of(animated_bird(R"({"preset": "rotate", "keys": [{"t": 0}]})")),
              StartsWith("scene.json: elements[0].animation.keys: a preset is a complete animation"));
-  CHECK(error_of(animated_bird(R"({"preset": "pulse", "amplitude": 0.95})")) ==
+  CHECK(scene_error_of(animated_bird(R"({"preset": "pulse", "amplitude": 0.95})")) ==
         "scene.json: elements[0].animation.amplitude: expected a number in [0, 0.9], got 0.95");
 }
 
 TEST_CASE("parse_scene: duplicate element names") {
-  CHECK_THAT(error_of(scene(R"([{"name": "x", "art": "bird.path"}, {"name": "x", "art": "cat.path"}])")),
+  CHECK_THAT(scene_error_of(scene(R"([{"name": "x", "art": "bird.path"}, {"name": "x", "art": "cat.path"}])")),
              StartsWith("scene.json: elements[1].name: name `x` is already used by elements[0]"));
-  CHECK_THAT(error_of(scene(R"([{"art": "bird.path"}, {"art": "bird.path"}])")),
+  CHECK_THAT(scene_error_of(scene(R"([{"art": "bird.path"}, {"art": "bird.path"}])")),
              StartsWith("scene.json: elements[1]: name `bird` (the art file's stem) is already used by elements[0]"));
 }
 
 TEST_CASE("parse_scene: count and weight together") {
-  CHECK(error_of(scene(R"([{"art": "bird.path", "count": 2, "weight": 3}])")) ==
+  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 2, "weight": 3}])")) ==
         "scene.json: elements[0].weight: give either `count` or `weight`, not both");
 }
 
 TEST_CASE("parse_scene: art file missing or not art") {
   const std::string absolute = (kShapes / "x.svg").string();
-  CHECK(error_of(scene(R"([{"art": "x.svg"}])")) ==
+  CHECK(scene_error_of(scene(R"([{"art": "x.svg"}])")) ==
         "scene.json: elements[0].art: cannot read \"x.svg\" (resolved to " + absolute +
             "); relative paths start at the scene file's folder");
-  CHECK_THAT(error_of(R"({"container": "heart.png", "elements": [{"art": "bird.path"}]})"),
+  CHECK_THAT(scene_error_of(R"({"container": "heart.png", "elements": [{"art": "bird.path"}]})"),
              StartsWith("scene.json: container: \"heart.png\" is not an art file; expected a .svg or .path file"));
 }
 
 TEST_CASE("parse_scene: container holes listed twice or naming the outline") {
-  CHECK(error_of(R"({"container": {"art": "heart-container.path", "holes": [1, 1]}, "elements": [{"art": "bird.path"}]})") ==
+  CHECK(scene_error_of(R"({"container": {"art": "heart-container.path", "holes": [1, 1]}, "elements": [{"art": "bird.path"}]})") ==
         "scene.json: container.holes[1]: path 1 is listed twice");
-  CHECK(error_of(R"({"container": {"art": "heart-container.path", "outline": 2, "holes": [2]}, "elements": [{"art": "bird.path"}]})") ==
+  CHECK(scene_error_of(R"({"container": {"art": "heart-container.path", "outline": 2, "holes": [2]}, "elements": [{"art": "bird.path"}]})") ==
         "scene.json: container.holes[0]: path 2 is the outline and cannot be a hole");
 }
 
 TEST_CASE("parse_scene: guided element naming an unknown library element") {
-  CHECK(error_of(guided(R"([{"name": "g", "element": "brid", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
+  CHECK(scene_error_of(guided(R"([{"name": "g", "element": "brid", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
         "scene.json: guided[0].element: no element in `elements` is named `brid`; did you mean `bird`?");
 }
 
 TEST_CASE("parse_scene: guided targets must start at t = 0, end at t = 1 and increase") {
-  CHECK_THAT(error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0.1}, {"x": 1, "y": 1, "t": 1}]}])")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0.1}, {"x": 1, "y": 1, "t": 1}]}])")),
              StartsWith("scene.json: guided[0].targets[0].t: the first target must have t = 0, got 0.1"));
-  CHECK_THAT(error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.9}]}])")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.9}]}])")),
              StartsWith("scene.json: guided[0].targets[1].t: the last target must have t = 1, got 0.9"));
-  CHECK_THAT(error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.6}, {"x": 1, "y": 1, "t": 0.4}, {"x": 1, "y": 1, "t": 1}]}])")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.6}, {"x": 1, "y": 1, "t": 0.4}, {"x": 1, "y": 1, "t": 1}]}])")),
              StartsWith("scene.json: guided[0].targets[2].t: targets out of order: t 0.4 comes after t 0.6"));
 }
 
 TEST_CASE("parse_scene: loop_to naming an unknown guided element") {
-  CHECK(error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "h", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
+  CHECK(scene_error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "h", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
         "scene.json: guided[0].loop_to: no guided element is named `h`; did you mean `g`?");
 }
 
 TEST_CASE("parse_scene: loops that are not a permutation") {
   const std::string t = R"("targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}])";
-  CHECK_THAT(error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "b", "element": "bird", "loop_to": "a", )" + t + "}]")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "b", "element": "bird", "loop_to": "a", )" + t + "}]")),
              StartsWith("scene.json: guided[1].loop_to: `a` is already looped into by guided[0] (`a`, which has no `loop_to` and loops into itself)"));
 }
 
 TEST_CASE("parse_scene: loop_to without looping") {
-  CHECK_THAT(error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "g", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])",
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "g", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])",
                              R"(, "loop": false)")),
              StartsWith("scene.json: guided[0].loop_to: needs `loop: true` at the top level"));
 }
 
 TEST_CASE("parse_scene: guided paths that do not meet where they loop") {
-  CHECK_THAT(error_of(guided(R"([{"name": "a", "element": "bird", "loop_to": "b", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 3, "y": 4, "t": 1}]},
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", "loop_to": "b", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 3, "y": 4, "t": 1}]},
                                 {"name": "b", "element": "bird", "loop_to": "a", "targets": [{"x": 3, "y": 0, "t": 0}, {"x": 0, "y": 0, "t": 1}]}])")),
              StartsWith("scene.json: guided[0].targets[1]: the last target (3, 4) must meet the first target of `b` "
                         "(guided[1].targets[0]), its `loop_to` at (3, 0) within 1e-06 art units, but is 4 away"));
-  CHECK_THAT(error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 1e-5, "t": 1}]}])")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 1e-5, "t": 1}]}])")),
              Contains("must meet its own first target (it has no `loop_to`, so it loops into itself)"));
-  CHECK(error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 5e-7, "t": 1}]}])")) == "(no error)");
-  CHECK(error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 1}]}])", R"(, "loop": false)")) == "(no error)");
+  CHECK(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 5e-7, "t": 1}]}])")) == "(no error)");
+  CHECK(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 1}]}])", R"(, "loop": false)")) == "(no error)");
 }
 
 TEST_CASE("parse_scene: duplicate guided names") {
   const std::string t = R"("targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}])";
-  CHECK_THAT(error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "a", "element": "bird", )" + t + "}]")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "a", "element": "bird", )" + t + "}]")),
              StartsWith("scene.json: guided[1].name: name `a` is already used by guided[0]"));
 }
 
 TEST_CASE("parse_scene: params overrides are checked by name, type and range") {
-  CHECK(error_of(scene(kBird, R"(, "params": {"k_edeg": 1})")) ==
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"k_edeg": 1})")) ==
         "scene.json: params.k_edeg: unknown parameter; did you mean `k_edge`?");
-  CHECK(error_of(scene(kBird, R"(, "params": {"dt": 0})")) == "scene.json: params.dt: expected a number in [1e-06, 1], got 0");
-  CHECK(error_of(scene(kBird, R"(, "params": {"k_edge": -1})")) == "scene.json: params.k_edge: expected a number >= 0, got -1");
-  CHECK(error_of(scene(kBird, R"(, "params": {"check_interval": 2.5})")) ==
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"dt": 0})")) == "scene.json: params.dt: expected a number in [1e-06, 1], got 0");
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"k_edge": -1})")) == "scene.json: params.k_edge: expected a number >= 0, got -1");
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"check_interval": 2.5})")) ==
         "scene.json: params.check_interval: expected an integer in [1, 100000], got 2.5");
 }
 
 TEST_CASE("parse_scene: slices out of range or given twice") {
-  CHECK(error_of(scene(kBird, R"(, "slices": 1)")) == "scene.json: slices: expected an integer in [2, 1000], got 1");
-  CHECK(error_of(scene(kBird, R"(, "slices": 20, "params": {"slices": 30})")) ==
+  CHECK(scene_error_of(scene(kBird, R"(, "slices": 1)")) == "scene.json: slices: expected an integer in [2, 1000], got 1");
+  CHECK(scene_error_of(scene(kBird, R"(, "slices": 20, "params": {"slices": 30})")) ==
         "scene.json: slices: given twice, here and as params.slices; keep one");
 }
 
 TEST_CASE("parse_scene: orientation fields that do not apply to the mode") {
-  CHECK_THAT(error_of(scene(kBird, R"(, "orientation": {"angle": 10})")),
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "orientation": {"angle": 10})")),
              StartsWith("scene.json: orientation.angle: applies only to mode `fixed`"));
-  CHECK_THAT(error_of(scene(kBird, R"(, "orientation": {"mode": "field"})")),
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "orientation": {"mode": "field"})")),
              StartsWith("scene.json: orientation: mode `field` needs a `field` object"));
-  CHECK_THAT(error_of(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "radial", "angle": 3}})")),
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "radial", "angle": 3}})")),
              StartsWith("scene.json: orientation.field.angle: applies only to kind `constant`"));
 }
 
 TEST_CASE("parse_scene: total count disagreeing with the element counts") {
-  CHECK(error_of(scene(R"([{"art": "bird.path", "count": 4}])", R"(, "count": 6)")) ==
+  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 4}])", R"(, "count": 6)")) ==
         "scene.json: count: 6 unguided elements, but the elements' `count`s add up to 4 and no element is drawn by weight; "
         "make them agree or use \"fill\"");
-  CHECK(error_of(scene(R"([{"art": "bird.path", "count": 4}, {"art": "cat.path"}])", R"(, "count": 6)")) == "(no error)");
-  CHECK(error_of(scene(kBird, R"(, "count": "all")")) == "scene.json: count: expected an integer or \"fill\", got \"all\"");
+  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 4}, {"art": "cat.path"}])", R"(, "count": 6)")) == "(no error)");
+  CHECK(scene_error_of(scene(kBird, R"(, "count": "all")")) == "scene.json: count: expected an integer or \"fill\", got \"all\"");
 }
 
 TEST_CASE("parse_scene: the example in docs/scene-format.md is valid") {

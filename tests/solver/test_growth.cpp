@@ -16,16 +16,16 @@ using namespace animpak;
 
 namespace {
 
-World tiny_world() {
+World growth_world() {
   return make_world(parse_scene(animpak::test::star_scene(2, 5, 6), "tiny.json", "/"));
 }
 
-bool same_float(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
 TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the others grow, capped") {
-  const World w = tiny_world();
+  const World w = growth_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
   Params params = w.params;
@@ -62,19 +62,19 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
     INFO("slice " << s);
     if (s == overlapping || s == outside) {
       CHECK(changed[s] == reference::growth_shrank);
-      CHECK(same_float(state.growth[s], before.growth[s] - shrink));
+      CHECK(same_bits(state.growth[s], before.growth[s] - shrink));
     } else if (s == at_floor) {
       CHECK(changed[s] == reference::growth_shrank);
       CHECK(state.growth[s] == 1.0f);
     } else if (s == at_wall || s == full || s == smaller) {
       CHECK(changed[s] == reference::growth_kept);
-      CHECK(same_float(state.growth[s], before.growth[s]));
+      CHECK(same_bits(state.growth[s], before.growth[s]));
     } else if (s == nearly_full) {
       CHECK(changed[s] == reference::growth_grew);
       CHECK(state.growth[s] == 2.0f);
     } else {
       CHECK(changed[s] == reference::growth_grew);
-      CHECK(same_float(state.growth[s], before.growth[s] + step));
+      CHECK(same_bits(state.growth[s], before.growth[s] + step));
     }
   }
 
@@ -84,7 +84,7 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
 }
 
 TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side too") {
-  const World w = tiny_world();
+  const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
   params.growth_ratio = 100.0;
@@ -106,7 +106,7 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   const float settle = static_cast<float>(params.settle_shrink_rate * params.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
-    CHECK(same_float(state.growth[s], s == 2 || s == 5 || s == 7 ? 1.5f - settle : 1.5f));
+    CHECK(same_bits(state.growth[s], s == 2 || s == 5 || s == 7 ? 1.5f - settle : 1.5f));
   }
   // Growing, the smaller side of an overlap pauses and the wall holds; the rest grows.
   state = start;
@@ -116,12 +116,12 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     const float expected = s == 2 || s == 5 ? 1.5f - shrink : s == 7 || s == 8 ? 1.5f : 1.5f + step;
-    CHECK(same_float(state.growth[s], expected));
+    CHECK(same_bits(state.growth[s], expected));
   }
 }
 
 TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of its element") {
-  const World w = tiny_world();
+  const World w = growth_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.element_count() == 2);
   Params params = w.params;
@@ -159,7 +159,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
 }
 
 TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice change, to their g references") {
-  const World w = tiny_world();
+  const World w = growth_world();
   const Topology& topo = w.topology;
   SimState state = w.state;
   std::vector<std::uint8_t> grew(topo.slice_count(), 0);
@@ -177,10 +177,10 @@ TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice chang
     for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k) {
       if (grew[topo.slice[v]] || grew[topo.slice[topo.spring_other[k]]]) {
         ++touching;
-        wrong += !same_float(state.spring_rest[k], rest_copy_length(topo, state.growth, v, k));
-        unchanged_touching += same_float(state.spring_rest[k], before[k]);
+        wrong += !same_bits(state.spring_rest[k], rest_copy_length(topo, state.growth, v, k));
+        unchanged_touching += same_bits(state.spring_rest[k], before[k]);
       } else {
-        changed_elsewhere += !same_float(state.spring_rest[k], before[k]);
+        changed_elsewhere += !same_bits(state.spring_rest[k], before[k]);
       }
     }
   CHECK(touching > 0);
@@ -190,7 +190,7 @@ TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice chang
 }
 
 TEST_CASE("grow_slices: no slice outgrows either time neighbour by more than neighbour_growth_ratio") {
-  const World w = tiny_world();
+  const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
   params.neighbour_growth_ratio = 1.03;

@@ -14,7 +14,7 @@ using animpak::test::WorldBuilder;
 
 namespace {
 
-std::vector<float> times26() {
+std::vector<float> step_times26() {
   std::vector<float> t;
   for (int k = 0; k <= 25; ++k) t.push_back(static_cast<float>(k) / 25.0f);
   return t;
@@ -24,8 +24,8 @@ std::vector<float> times26() {
 // (x1, 0.5). Positions are jittered by up to 0.004; element 0 has a target point.
 test::World two_tubes(float x1, float h1, std::uint32_t seed) {
   WorldBuilder b;
-  b.add_element(test::square_tube(0.4f, 0.5f, 0.05f, times26()));
-  b.add_element(test::square_tube(x1, 0.5f, h1, times26()));
+  b.add_element(test::square_tube(0.4f, 0.5f, 0.05f, step_times26()));
+  b.add_element(test::square_tube(x1, 0.5f, h1, step_times26()));
   b.add_target(13 * 4 + 2, 0.45f, 0.55f, 0.5f);
   test::World w = b.build();
   std::mt19937 rng(seed);
