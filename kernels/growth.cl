@@ -1,13 +1,18 @@
 /* Growth of §5.3 (src/solver/reference/growth.cpp): each slice proposes its next g from its contacts
  * (shrink while outside or while overlapping an element no larger there; while settling, shrink faster
- * and whenever it overlaps; pause while overlapping only larger ones or at the wall; grow otherwise),
+ * and whenever it overlaps; pause while overlapping only larger ones or at the wall; grow otherwise;
+ * overlaps count only with elements that do not give way, AP_CONTACT_BLOCK; a secondary element keeps
+ * its size while hold_secondary is set),
  * then every slice is limited to growth_ratio × the smallest proposal of its element, and the springs
  * touching a changed slice take their rest length from the scaled rest copy. */
 
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world, const ForceParams p,
                              const int growing,               /* input: 0 in the settling phase */
+                             const int hold_secondary,        /* input: 1 while secondary elements wait */
                              __global const int* slice_begin, /* input: slices + 1 */
+                             __global const int* slice_element,         /* input: per slice */
+                             __global const uchar* element_secondary,   /* input: per element */
                              __global const uchar* contact,   /* input: AP_CONTACT_* per vertex, from step_forces */
                              __global const float* growth,    /* input: g per slice */
                              __global float* proposed) {      /* output: proposed g per slice */
@@ -17,11 +22,12 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
   for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) bits |= contact[v];
   const float g = growth[s];
   float next = g;
-  const bool yields = (bits & AP_CONTACT_OVERLAP) != 0 && (growing == 0 || (bits & AP_CONTACT_YIELD) != 0);
+  const bool yields = (bits & AP_CONTACT_BLOCK) != 0 && (growing == 0 || (bits & AP_CONTACT_YIELD) != 0);
+  const bool held = hold_secondary != 0 && element_secondary[slice_element[s]] != 0;
   if ((bits & AP_CONTACT_OUTSIDE) != 0 || yields) {
     next = g - (growing != 0 ? p.shrink_step : p.settle_shrink_step);
     if (next < 1.0f) next = 1.0f;
-  } else if (growing != 0 && (bits & (AP_CONTACT_WALL | AP_CONTACT_OVERLAP)) == 0 && g < p.max_growth) {
+  } else if (growing != 0 && !held && (bits & (AP_CONTACT_WALL | AP_CONTACT_BLOCK)) == 0 && g < p.max_growth) {
     next = g + p.growth_step;
     if (next > p.max_growth) next = p.max_growth;
   }

@@ -61,16 +61,20 @@ __kernel void slice_boxes(const WorldInfo world,
  * `own` that the broadphase lists, in increasing order, each one's slice pair around pt searched from
  * slice index `start` (reference point_overlap and overlap_candidates).
  * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy),
- * plus AP_CONTACT_YIELD when an element it overlaps is no larger (g at pt) than own_g. */
+ * plus AP_CONTACT_BLOCK when an element it overlaps does not give way to `own` (any, except a secondary
+ * one when `own` is primary), and AP_CONTACT_YIELD when such an element is no larger (g at pt) than
+ * own_g or is primary while `own` is secondary. */
 uchar overlap_point(int own, float own_g, int start, float px, float py, float pt, float nx, float ny, int elements,
                     __global const int* element_slice_begin, __global const int* slice_begin,
                     __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                     __global const float* box_x1, __global const float* box_y1, __global const float* x,
                     __global const float* y, __global const float* t, __global const float* growth,
-                    const OverlapGridInfo grid, __global const int* grid_start, __global const int* grid_elements,
-                    float* near2_out, float* qx_out, float* qy_out) {
+                    __global const uchar* element_secondary, const OverlapGridInfo grid,
+                    __global const int* grid_start, __global const int* grid_elements, float* near2_out,
+                    float* qx_out, float* qy_out) {
+  const bool own_secondary = element_secondary[own] != 0;
   const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
-  bool overlap = false, found_inside = false, yield = false;
+  bool overlap = false, found_inside = false, yield = false, block = false;
   *near2_out = 0.0f;
   *qx_out = 0.0f;
   *qy_out = 0.0f;
@@ -136,7 +140,12 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
     if (crosses) overlap = true;
-    if ((crosses || inside) && !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g)) yield = true;
+    const bool other_secondary = element_secondary[e] != 0;
+    if ((crosses || inside) && !(other_secondary && !own_secondary)) {
+      block = true;
+      if ((own_secondary && !other_secondary) || !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g))
+        yield = true;
+    }
     if (inside && (!found_inside || near2 < *near2_out)) {
       overlap = true;
       found_inside = true;
@@ -148,6 +157,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
   uchar bits = overlap ? AP_CONTACT_OVERLAP : 0;
   if (found_inside) bits |= AP_CONTACT_INSIDE;
   if (yield) bits |= AP_CONTACT_YIELD;
+  if (block) bits |= AP_CONTACT_BLOCK;
   return bits;
 }
 
@@ -156,6 +166,7 @@ void overlap_fold(uchar found, float near2, float qx, float qy, float px, float 
                   float* out_x, float* out_y) {
   if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;
   if ((found & AP_CONTACT_YIELD) != 0) *bits |= AP_CONTACT_YIELD;
+  if ((found & AP_CONTACT_BLOCK) != 0) *bits |= AP_CONTACT_BLOCK;
   if ((found & AP_CONTACT_INSIDE) == 0 || ((*bits & AP_CONTACT_INSIDE) != 0 && !(near2 > *depth2))) return;
   *bits |= AP_CONTACT_INSIDE;
   *depth2 = near2;
@@ -171,8 +182,8 @@ uchar overlap_test(int v, int interval_points, int elements, __global const int*
                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
                    __global const float* y, __global const float* t, __global const float* growth,
-                   const OverlapGridInfo grid, __global const int* grid_start, __global const int* grid_elements,
-                   float* out_x, float* out_y) {
+                   __global const uchar* element_secondary, const OverlapGridInfo grid,
+                   __global const int* grid_start, __global const int* grid_elements, float* out_x, float* out_y) {
   const int own = element[v], own_slice = slice[v];
   const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
   const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
@@ -186,7 +197,7 @@ uchar overlap_test(int v, int interval_points, int elements, __global const int*
   const float own_g = growth[own_slice];
   uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements,
                               element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y,
-                              t, growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
+                              t, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
@@ -202,7 +213,7 @@ uchar overlap_test(int v, int interval_points, int elements, __global const int*
       const float ny = y[next] + (y[wn] - y[next]) * f;
       found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
                             element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
-                            growth, grid, grid_start, grid_elements, &near2, &qx, &qy);
+                            growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
       overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
     }
   }

@@ -77,9 +77,10 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global const float* box_x0, __global const float* box_y0, /* input: slice_boxes */
                         __global const float* box_x1, __global const float* box_y1, /* input */
                         __global const float* growth,            /* input: g per slice */
+                        __global const uchar* element_secondary, /* input: per element, 1 if secondary */
                         __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
                         __global float* closest,                 /* output: per vertex */
-                        __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD */
+                        __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
                         __global float* depth_x, __global float* depth_y, /* output: the way out when inside */
                         const OverlapGridInfo overlap_grid,      /* the overlap test's broadphase */
                         __global const int* overlap_start,       /* input: its cells + 1 */
@@ -91,8 +92,8 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
   const int own = element[v];
   float way_out_x, way_out_y;
   const uchar bits = overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin,
-                                  slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, growth, overlap_grid,
-                                  overlap_start, overlap_elements, &way_out_x, &way_out_y);
+                                  slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, growth, element_secondary,
+                                  overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx = 0.0f, sy = 0.0f, st = 0.0f;

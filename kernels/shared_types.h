@@ -25,6 +25,7 @@ typedef float ap_float;
 #define AP_CONTACT_WALL 4
 #define AP_CONTACT_INSIDE 8
 #define AP_CONTACT_YIELD 16
+#define AP_CONTACT_BLOCK 32
 
 /* GrowthChange values (reference.hpp): what grow_slices did to a slice's g. */
 #define AP_GROWTH_GREW 1

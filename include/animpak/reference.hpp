@@ -145,7 +145,10 @@ struct OverlapResult {
                          ///< its edge crosses one
   bool inside = false;   ///< v or a point between slices next to it lies inside another element
   float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
-  bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g)
+  bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g),
+                         ///< or is primary while v's element is secondary
+  bool block = false;    ///< one of the elements it overlaps does not give way to v's element: any,
+                         ///< except a secondary one when v's element is primary
 };
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary

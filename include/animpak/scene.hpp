@@ -43,6 +43,7 @@ struct ElementInstance {
   std::string name;       ///< "<library name>#<k>" for unguided elements, the guided name otherwise
   int library = 0;        ///< index into World::library
   bool guided = false;
+  bool secondary = false; ///< docs/parameters.md, "Secondary elements"
   int vertex_begin = 0;   ///< its first global vertex id
   int slice_begin = 0;    ///< its first global slice id
   Vec2 position;          ///< unit coordinates of its seed (unguided) or first target (guided)

@@ -63,6 +63,9 @@ struct LibraryElementSpec {
   /// `random_phase` each at its own slice drawn from the seed (docs/scene-format.md, "Phase").
   double phase = 0.0;
   bool random_phase = false;
+  /// Its copies are secondary elements (docs/parameters.md, "Secondary elements"): they keep their start
+  /// size while the primary elements grow, give way to them, and grow once they have stopped.
+  bool secondary = false;
 };
 
 struct TargetSpec {

@@ -89,6 +89,9 @@ class Backend {
   /// Stops growth for good (slices may still shrink): the settling phase of the stop test. Recorded in
   /// the state's settling_since.
   virtual void stop_growth() = 0;
+  /// Lets the secondary elements grow (docs/parameters.md, "Secondary elements"), recorded in the state's
+  /// secondary_since. False, changing nothing, when the world has none or they already grow.
+  virtual bool start_secondary_growth() = 0;
   /// Records the stall test's progress mark in the state (mark_iteration, mark_growth), so a resumed
   /// run tests at the same iterations.
   virtual void set_progress_mark(std::uint64_t iteration, double mean_growth) = 0;

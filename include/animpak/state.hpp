@@ -30,6 +30,10 @@ enum ContactBit : std::uint8_t {
   contact_wall = 4,     ///< a boundary vertex nearer the container's boundary than stop_gap (growth pauses)
   contact_inside = 8,   ///< inside another element (the depth term of the overlap force)
   contact_yield = 16,   ///< overlaps an element no larger than its own slice there (growth shrinks; else pauses)
+  /// overlaps an element that does not give way to it: any element, except a secondary one when this
+  /// element is primary (docs/parameters.md, "Secondary elements"). Growth reads this bit, not
+  /// contact_overlap; without secondary elements the two are equal.
+  contact_block = 32,
 };
 
 /// The container query's index over the segments (docs/architecture.md, "The far field and the
@@ -101,6 +105,9 @@ struct Topology {
   std::vector<std::int32_t> slice_element;
   // elements: element e holds slices [element_slice_begin[e], element_slice_begin[e+1])
   std::vector<std::int32_t> element_slice_begin;
+  /// per element: 1 for a secondary element (docs/parameters.md, "Secondary elements"): it gives way to
+  /// every primary element and grows only once the primary ones have stopped.
+  std::vector<std::uint8_t> element_secondary;
 
   // envelope triangles, index triples, with their element
   std::vector<std::int32_t> env_a, env_b, env_c, env_element;
@@ -123,6 +130,15 @@ struct Topology {
   std::int32_t slice_count() const { return static_cast<std::int32_t>(slice_boundary.size()); }
   std::int32_t element_count() const { return static_cast<std::int32_t>(element_slice_begin.size()) - 1; }
   std::int32_t envelope_count() const { return static_cast<std::int32_t>(env_a.size()); }
+  /// Element e is secondary; a topology without the array (built by hand in tests) has none.
+  bool secondary(std::int32_t e) const {
+    return static_cast<std::size_t>(e) < element_secondary.size() && element_secondary[e] != 0;
+  }
+  bool has_secondary() const {
+    for (const std::uint8_t s : element_secondary)
+      if (s != 0) return true;
+    return false;
+  }
 };
 
 /// Everything that moves.
@@ -135,6 +151,9 @@ struct SimState {
   /// The iteration at which growth stopped for the settling phase (docs/parameters.md, "Stop test"),
   /// or 0 while slices still grow.
   std::uint64_t settling_since = 0;
+  /// The iteration at which the secondary elements began to grow (docs/parameters.md, "Secondary
+  /// elements"), or 0 while they are held at their start size (or the world has none).
+  std::uint64_t secondary_since = 0;
   /// The run's last progress mark (docs/parameters.md, "Stop test"): the iteration (0: none yet) and the
   /// mean g of all slices then. The stall test compares the mean g a window later with it.
   std::uint64_t mark_iteration = 0;

@@ -161,6 +161,13 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
+  if (world.topology.has_secondary()) {
+    if (result.last_good.secondary_since != 0)
+      std::cerr << "animpak: the secondary elements grew from iteration " << result.last_good.secondary_since
+                << ", when the primary ones had stopped\n";
+    else
+      std::cerr << "animpak: the secondary elements kept their start size: the primary ones had not stopped growing\n";
+  }
   if (result.reason == StopReason::unsettled)
     std::cerr << "animpak: warning: " << result.last.overlapping_vertices << " vertices still overlap another element and "
               << result.last.outside_vertices << " lie outside the container after " << world.params.settle_iterations

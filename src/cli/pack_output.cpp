@@ -194,6 +194,7 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       {"envelope_triangles", w.topology.envelope_count()},
       {"iterations", r.result.last_good.iteration},
       {"stop_reason", r.checkpoint.stop_reason},
+      {"secondary_since", r.result.last_good.secondary_since},
       {"seconds", seconds},
       {"final_growth", growth},
   };

@@ -79,7 +79,7 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
   if (n == 0) field.fail("expected at least one element");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField item = field.item(i);
-    item.check_keys({"name", "art", "animation", "count", "weight", "phase"});
+    item.check_keys({"name", "art", "animation", "count", "weight", "phase", "secondary"});
     LibraryElementSpec e;
     e.art = resolve_art(item.required("art"), base_dir);
     const std::optional<JsonField> name = item.optional("name");
@@ -103,6 +103,7 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
         e.phase = f->number_in(0.0, 1.0);
       }
     }
+    if (auto f = item.optional("secondary")) e.secondary = f->boolean();
     elements.push_back(std::move(e));
   }
   return elements;

@@ -27,6 +27,7 @@ struct Placement {
   std::vector<Key> keys;  ///< one per target, in slice order (guided only)
   int loop_partner = -1;       ///< instance whose first slice this one's last slice meets
   int phase = 0;  ///< slices by which its animation is ahead round the loop (unguided only)
+  bool secondary = false;  ///< a secondary element (unguided only; docs/parameters.md, "Secondary elements")
 };
 
 Vec2 apply(const Placement& p, int slice, Vec2 q);

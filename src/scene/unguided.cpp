@@ -127,6 +127,7 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     p.scale.assign(e.slice_count, scene.params.initial_scale);
     p.angle.assign(e.slice_count, angle);
     const LibraryElementSpec& spec = scene.elements[picks[k]];
+    p.secondary = spec.secondary;
     const int period = e.slice_count - 1;
     if (spec.random_phase)
       p.phase = static_cast<int>(phases.below(static_cast<std::uint64_t>(period)));

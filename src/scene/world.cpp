@@ -169,8 +169,9 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   for (std::size_t i = 0; i < placements.size(); ++i) {
     const Placement& p = placements[i];
     const SpacetimeElement& e = library[p.library];
-    world.elements.push_back({p.name, p.library, p.guided, topo.vertex_count(), topo.slice_count(),
+    world.elements.push_back({p.name, p.library, p.guided, p.secondary, topo.vertex_count(), topo.slice_count(),
                               p.offset.front(), p.angle.front()});
+    topo.element_secondary.push_back(p.secondary ? 1 : 0);
     append_instance(topo, world.state, e, p, static_cast<int>(i));
   }
   finish_slices(topo);

@@ -97,6 +97,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put_string(c.stop_reason);
   w.put<std::uint64_t>(c.state.iteration);
   w.put<std::uint64_t>(c.state.settling_since);
+  w.put<std::uint64_t>(c.state.secondary_since);
   w.put<std::uint64_t>(c.state.mark_iteration);
   w.put<double>(c.state.mark_growth);
   for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
@@ -126,7 +127,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
     throw InputError(name + ": ends early (truncated); the state file is damaged, pack the scene again");
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
-  if (version != checkpoint_version)
+  // Version 2 is version 3 without secondary_since (it had no secondary elements).
+  if (version != checkpoint_version && version != 2)
     throw InputError(name + ": state format version " + std::to_string(version) + ", this animpak reads version " +
                      std::to_string(checkpoint_version) + "; pack the scene again with this version");
   const std::size_t body = bytes.size() - sizeof(std::uint64_t);
@@ -144,6 +146,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   c.stop_reason = r.get_string();
   c.state.iteration = r.get<std::uint64_t>();
   c.state.settling_since = r.get<std::uint64_t>();
+  if (version >= 3) c.state.secondary_since = r.get<std::uint64_t>();
   c.state.mark_iteration = r.get<std::uint64_t>();
   c.state.mark_growth = r.get<double>();
   for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,

@@ -66,6 +66,15 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
     const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop_gap);
+    // Secondary elements (docs/parameters.md, "Secondary elements") wait for the primary ones to stop;
+    // then they grow, and the stall test starts a fresh window for them.
+    if (settling_since == 0 && (stalled || touching) && backend.start_secondary_growth()) {
+      result.last_good.secondary_since = iteration;
+      backend.set_progress_mark(iteration, result.last.mean_growth);
+      result.last_good.mark_iteration = iteration;
+      result.last_good.mark_growth = result.last.mean_growth;
+      continue;
+    }
     if (settling_since == 0 && (stalled || touching)) {
       if (clean) {
         result.reason = touching ? StopReason::gap : StopReason::stalled;

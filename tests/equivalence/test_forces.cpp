@@ -9,6 +9,7 @@ namespace {
 struct Coverage {
   int inside = 0, crossing = 0, wall = 0, boundary = 0, target = 0, repulsion = 0;
   int yield = 0, paused = 0;  // overlapping vertices that give way, and that only pause
+  int ignored = 0;            // overlapping vertices of a primary element that meet only secondary ones
 };
 
 // Compares one world's forces on every device; returns what the world exercised.
@@ -21,7 +22,8 @@ Coverage check_forces(const World& w, const Params& params, const std::string& l
     c.inside += (ref.contact[v] & contact_inside) != 0;
     c.crossing += (ref.contact[v] & (contact_overlap | contact_inside)) == contact_overlap;
     c.yield += (ref.contact[v] & contact_yield) != 0;
-    c.paused += (ref.contact[v] & (contact_overlap | contact_yield)) == contact_overlap;
+    c.paused += (ref.contact[v] & (contact_overlap | contact_block | contact_yield)) == (contact_overlap | contact_block);
+    c.ignored += (ref.contact[v] & (contact_overlap | contact_block)) == contact_overlap;
     c.wall += (ref.contact[v] & contact_wall) != 0;
     c.boundary += ref_parts.boundary.x[v] != 0.0f;
     c.target += ref_parts.target.x[v] != 0.0f;
@@ -225,6 +227,25 @@ TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[
     CHECK(c.crossing > 0);
     CHECK(c.yield > 0);
     CHECK(c.paused > 0);
+  }
+}
+
+TEST_CASE("forces: secondary elements give way to primary ones", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  WorldBuilder b;
+  b.add_element(square_tube(0.5f, 0.5f, 0.005f, {0.0f, 0.5f, 1.0f}));  // primary, deep inside the next
+  b.add_element(square_tube(0.5f, 0.5f, 0.12f, {0.0f, 0.4f, 1.0f}));    // secondary
+  b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));  // secondary
+  b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));  // primary
+  World w = finish(b);
+  w.topo.element_secondary = {0, 1, 1, 0};
+  for (std::int32_t s = 0; s < w.topo.slice_count(); ++s)
+    w.state.growth[s] = 1.0f + 0.25f * static_cast<float>(w.topo.slice_element[s]);
+  for (const Params& params : {Params{}, paper_params()}) {
+    const Coverage c = check_forces(w, params, "secondary");
+    CHECK(c.ignored > 0);  // the primary elements' vertices
+    CHECK(c.yield > 0);    // the secondary elements', the larger of the crossing bars included
+    CHECK(c.paused == 0);  // every overlap here is between a primary and a secondary element
   }
 }
 

@@ -25,9 +25,10 @@ std::string statistics_difference(const StepStatistics& a, const StepStatistics&
 
 // Runs `steps` steps on both backends, comparing the state every `compare_every` steps and the
 // statistics at the end; stops at the first step that differs so the message points at it.
-// With `settle_at` > 0 both stop growing (the settling phase) after that step.
+// With `settle_at` > 0 both stop growing (the settling phase) after that step; with `secondary_at` > 0
+// both let their secondary elements grow after that step.
 void check_steps(const Topology& topo, const SimState& initial, const Params& params, int steps, int compare_every,
-                 const std::string& label, int settle_at = 0) {
+                 const std::string& label, int settle_at = 0, int secondary_at = 0) {
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (skip_without_devices(devices)) return;
   for (const DeviceChoice& d : devices) for (const GridSort sort : grid_sorts) {
@@ -37,6 +38,10 @@ void check_steps(const Topology& topo, const SimState& initial, const Params& pa
     CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
     for (int step = 1; step <= steps; ++step) {
       if (step == settle_at + 1 && settle_at > 0) ref->stop_growth(), dev->stop_growth();
+      if (step == secondary_at + 1 && secondary_at > 0) {
+        REQUIRE(ref->start_secondary_growth());
+        REQUIRE(dev->start_secondary_growth());
+      }
       ref->step();
       dev->step();
       if (step % compare_every != 0 && step != steps) continue;
@@ -84,6 +89,36 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
   REQUIRE(world.elements.size() == 4);
   check_steps(world.topology, world.state, world.params, 100, 10, "star scene");
   check_steps(world.topology, world.state, world.params, 60, 10, "star scene, settling from step 30", 30);
+}
+
+TEST_CASE("steps: secondary elements held, then growing, give identical states", "[equivalence][opencl]") {
+  const std::string text = R"({
+    "container": {"art": "../shapes/heart-container.path"},
+    "elements": [{"name": "star", "art": "star.svg", "count": 3, "animation": {"preset": "rotate", "turns": 1}},
+                 {"name": "small", "art": "star.svg", "count": 2, "secondary": true}],
+    "seed": 3, "loop": true, "slices": 6, "params": {"growth_rate": 0.2}
+  })";
+  const std::filesystem::path dir = std::filesystem::path(ANIMPAK_SOURCE_DIR) / "examples" / "default";
+  const animpak::World world = make_world(parse_scene(text, dir / "scene.json", dir));
+  REQUIRE(world.topology.has_secondary());
+  check_steps(world.topology, world.state, world.params, 60, 10, "secondary stars, growing from step 30", 0, 30);
+  // Not vacuous: the reference holds the secondary stars at g 1 for 30 steps while the others grow,
+  // then grows them too.
+  auto ref = make_reference_backend(world.topology, world.state, world.params);
+  const auto growth_of = [&](const SimState& s, bool secondary) {
+    float most = 0.0f;
+    for (std::int32_t k = 0; k < world.topology.slice_count(); ++k)
+      if (world.topology.secondary(world.topology.slice_element[k]) == secondary) most = std::max(most, s.growth[k]);
+    return most;
+  };
+  for (int step = 0; step < 30; ++step) ref->step();
+  const SimState held = ref->state();
+  CHECK(growth_of(held, true) == 1.0f);
+  CHECK(growth_of(held, false) > 1.0f);
+  REQUIRE(ref->start_secondary_growth());
+  for (int step = 0; step < 30; ++step) ref->step();
+  CHECK(growth_of(ref->state(), true) > 1.0f);
+  CHECK(ref->state().secondary_since == 30);
 }
 
 }  // namespace animpak::test

@@ -318,6 +318,29 @@ TEST_CASE("parse_scene: phase is a number in [0, 1] or \"random\", and needs a l
              Contains("elements[0].phase: a phase needs a looping scene"));
 }
 
+TEST_CASE("build_world: a secondary library element makes its unguided copies secondary, guided ones stay primary") {
+  const std::string secondary = std::string(test::rotating) + R"(, "secondary": true)";
+  const World plain = world_of(star_scene(3, kSlices, 2));
+  const World w = world_of(star_scene(3, kSlices, 2, {}, secondary));
+  REQUIRE(w.elements.size() == 3);
+  CHECK(w.topology.element_secondary == std::vector<std::uint8_t>{1, 1, 1});
+  for (const ElementInstance& e : w.elements) CHECK(e.secondary);
+  CHECK(plain.topology.element_secondary == std::vector<std::uint8_t>{0, 0, 0});
+  CHECK_FALSE(plain.topology.has_secondary());
+  // Only the role changes: the same seeds, the same start.
+  CHECK(same_bytes(w.state.x, plain.state.x));
+
+  const World guided = world_of(star_scene(2, kSlices, 2, test::swapping_pair(), secondary));
+  REQUIRE(guided.elements.size() == 4);
+  for (std::size_t i = 0; i < guided.elements.size(); ++i) {
+    INFO(guided.elements[i].name);
+    CHECK(guided.elements[i].secondary == !guided.elements[i].guided);
+    CHECK(guided.topology.element_secondary[i] == (guided.elements[i].guided ? 0 : 1));
+  }
+  CHECK_THAT(error_of(star_scene(2, kSlices, 1, {}, std::string(test::rotating) + R"(, "secondary": "yes")")),
+             Contains(R"(elements[0].secondary: expected true or false, got "yes")"));
+}
+
 TEST_CASE("build_world: fixed orientation turns every unguided element alike, tangential follows the field") {
   const World fixed = world_of(star_scene(3, kSlices, 2, {R"(, "orientation": {"mode": "fixed", "angle": 30})", ""}));
   for (const ElementInstance& e : fixed.elements) CHECK(e.angle == Approx(30.0 * std::numbers::pi / 180.0));

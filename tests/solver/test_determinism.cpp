@@ -4,6 +4,8 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "animpak/checkpoint.hpp"
 #include "animpak/scene.hpp"
@@ -108,4 +110,38 @@ TEST_CASE("reference solver: a run resumed in its settling phase stays settling 
   require_identical(resumed, uninterrupted);
   // Not vacuous: while settling nothing grows.
   for (std::size_t s = 0; s < resumed.growth.size(); ++s) CHECK(resumed.growth[s] <= saved.state.growth[s]);
+}
+
+TEST_CASE("state.bin: version 2 files, from before secondary elements, still read, with none started") {
+  const World w = tiny_world();
+  Checkpoint saved;
+  saved.scene_text = "{}";
+  saved.scene_file = "tiny.json";
+  saved.stop_reason = "gap";
+  saved.state = w.state;
+  saved.state.iteration = 700077;
+  saved.state.settling_since = 700070;  // a value no earlier field holds
+  saved.state.secondary_since = 500050;
+  const test::TempDir temp("animpak-version2-");
+  write_checkpoint(temp / "state.bin", saved);
+  CHECK(read_checkpoint(temp / "state.bin").state.secondary_since == 500050);
+
+  // The same file as version 2 wrote it: without the 8 bytes of secondary_since after settling_since,
+  // and its own checksum.
+  std::ifstream in(temp / "state.bin", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = bytes.find(std::string(reinterpret_cast<const char*>(&saved.state.settling_since), 8));
+  REQUIRE(at != std::string::npos);
+  bytes.erase(at + 8, 8);
+  bytes[8] = 2;
+  bytes.resize(bytes.size() - 8);
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  bytes.append(reinterpret_cast<const char*>(&h), sizeof h);
+  std::ofstream(temp / "old.bin", std::ios::binary) << bytes;
+  const Checkpoint old = read_checkpoint(temp / "old.bin");
+  CHECK(old.state.iteration == 700077);
+  CHECK(old.state.settling_since == 700070);
+  CHECK(old.state.secondary_since == 0);
+  CHECK(old.state.x == saved.state.x);
 }

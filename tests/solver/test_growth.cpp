@@ -47,11 +47,11 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
   state.growth[full] = 2.0f;         // already at the cap: does not count as growing
   state.growth[at_floor] = 1.05f;    // overlapping: shrinks to 1, never below the start
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
-  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap | contact_yield;  // the last vertex only
-  contact[topo.slice_begin[smaller]] = contact_overlap;
+  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap | contact_block | contact_yield;  // the last vertex only
+  contact[topo.slice_begin[smaller]] = contact_overlap | contact_block;
   contact[topo.slice_begin[outside]] = contact_outside;
   contact[topo.slice_begin[at_wall] + 1] = contact_wall;
-  contact[topo.slice_begin[at_floor]] = contact_overlap | contact_inside | contact_yield;
+  contact[topo.slice_begin[at_floor]] = contact_overlap | contact_block | contact_inside | contact_yield;
 
   const SimState before = state;
   std::vector<std::uint8_t> changed;
@@ -94,11 +94,11 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   SimState state = w.state;
   std::fill(state.growth.begin(), state.growth.end(), 1.5f);
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
-  contact[topo.slice_begin[2]] = contact_overlap | contact_yield;
+  contact[topo.slice_begin[2]] = contact_overlap | contact_block | contact_yield;
   contact[topo.slice_begin[5]] = contact_outside;
   // Overlaps a larger element: growing, it would pause and leave the shrinking to the other side, but
   // that side may not see the overlap (its slice times differ a little), so settling shrinks it too.
-  contact[topo.slice_begin[7]] = contact_overlap;
+  contact[topo.slice_begin[7]] = contact_overlap | contact_block;
   contact[topo.slice_begin[8]] = contact_wall;  // at the wall: holds
   const SimState start = state;
   std::vector<std::uint8_t> changed;
@@ -118,6 +118,46 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
     const float expected = s == 2 || s == 5 ? 1.5f - shrink : s == 7 || s == 8 ? 1.5f : 1.5f + step;
     CHECK(same_bits(state.growth[s], expected));
   }
+}
+
+TEST_CASE("grow_slices: a secondary element keeps its size until secondary_since, and a primary slice ignores it") {
+  World w = growth_world();
+  Topology& topo = w.topology;
+  REQUIRE(topo.element_count() == 2);
+  topo.element_secondary = {0, 1};  // slices 5..9 are the secondary element's
+  Params params = w.params;
+  params.growth_ratio = 100.0;
+  params.neighbour_growth_ratio = 100.0;
+  SimState state = w.state;
+  std::fill(state.growth.begin(), state.growth.end(), 1.5f);
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  // Slice 1 overlaps the secondary element only (the overlap test gives no contact_block): it grows.
+  contact[topo.slice_begin[1]] = contact_overlap | contact_inside;
+  // Slice 6 of the secondary element overlaps a primary one: it gives way, held or not.
+  contact[topo.slice_begin[6]] = contact_overlap | contact_block | contact_yield;
+  const SimState start = state;
+  std::vector<std::uint8_t> changed;
+  reference::grow_slices(topo, contact, params, true, state, changed);
+  const float step = static_cast<float>(params.growth_rate * params.dt);
+  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    const float expected = s < 5 ? 1.5f + step : s == 6 ? 1.5f - shrink : 1.5f;
+    CHECK(same_bits(state.growth[s], expected));
+  }
+  // Once the secondary elements may grow, they do.
+  state = start;
+  state.secondary_since = 40;
+  reference::grow_slices(topo, contact, params, true, state, changed);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    CHECK(same_bits(state.growth[s], s == 6 ? 1.5f - shrink : 1.5f + step));
+  }
+  // Settling, the primary slice that overlaps only a secondary element does not shrink.
+  state = start;
+  reference::grow_slices(topo, contact, params, false, state, changed);
+  CHECK(same_bits(state.growth[1], 1.5f));
+  CHECK(state.growth[6] < 1.5f);
 }
 
 TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of its element") {
@@ -148,7 +188,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
 
   // One slice overlapping drags the element's largest slices down with it: the bound holds every step.
   contact.assign(topo.vertex_count(), 0);
-  contact[topo.slice_begin[topo.element_slice_begin[1]]] = contact_overlap;
+  contact[topo.slice_begin[topo.element_slice_begin[1]]] = contact_overlap | contact_block;
   for (int step = 0; step < 10; ++step) {
     reference::grow_slices(topo, contact, params, true, state, changed);
     float lo = 1e9f, hi = 0.0f;

@@ -277,6 +277,37 @@ TEST_CASE("overlap: the larger of two overlapping elements yields, the smaller d
   }
 }
 
+TEST_CASE("overlap: a secondary element gives way to a primary one whatever their sizes") {
+  // The crossing bars, the vertical one secondary (docs/parameters.md, "Secondary elements"): its
+  // flagged vertices block and yield even when it is the smaller; the primary bar's are flagged as
+  // overlapping (for the forces and the statistics) but neither block nor yield, even when it is the larger.
+  test::World w = crossing_bars();
+  w.topo.element_secondary = {0, 1};
+  for (const float secondary_g : {1.5f, 3.0f}) {
+    for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = secondary_g;
+    int primary = 0, secondary = 0;
+    for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+      const OverlapResult r = overlap_at(w, v);
+      if (!r.overlap) continue;
+      const bool is_secondary = w.topo.element[v] == 1;
+      INFO("vertex " << v << ", secondary g " << secondary_g);
+      CHECK(r.block == is_secondary);
+      CHECK(r.yield == is_secondary);
+      (is_secondary ? secondary : primary) += 1;
+    }
+    CHECK(primary == 2 * 26);
+    CHECK(secondary == 2 * 26);
+  }
+  // Both secondary: the rule between equals again (the larger yields, both block).
+  w.topo.element_secondary = {1, 1};
+  for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = 1.5f;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    const OverlapResult r = overlap_at(w, v);
+    CHECK(r.block == r.overlap);
+    CHECK(r.yield == (r.overlap && w.topo.element[v] == 0));
+  }
+}
+
 TEST_CASE("overlap: elements that cross only between two slices are found at the middle of the interval") {
   // A (half-size 0.04) moves right and B (0.05) left through the same place: at the slice times 0 and 1
   // they are 0.11 apart, at t = 0.5 A lies inside B. Only the middle of the slice interval sees it.

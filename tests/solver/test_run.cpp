@@ -3,6 +3,7 @@
 // nothing overlaps or spills, and a settling that never comes clean ends as `unsettled`.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 
@@ -17,7 +18,7 @@ using Script = std::function<StepStatistics(std::uint64_t iteration, bool settli
 
 class ScriptedBackend final : public Backend {
  public:
-  explicit ScriptedBackend(Script script) : script_(std::move(script)) {}
+  explicit ScriptedBackend(Script script, bool secondary = false) : script_(std::move(script)), secondary_(secondary) {}
   std::string name() const override { return "scripted"; }
   void step() override { ++state_.iteration; }
   StepStatistics statistics() override {
@@ -29,14 +30,21 @@ class ScriptedBackend final : public Backend {
   void stop_growth() override {
     if (state_.settling_since == 0) state_.settling_since = state_.iteration;
   }
+  bool start_secondary_growth() override {
+    if (!secondary_ || state_.secondary_since != 0) return false;
+    state_.secondary_since = state_.iteration;
+    return true;
+  }
   void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
     state_.mark_iteration = iteration;
     state_.mark_growth = mean_growth;
   }
   const PhaseTimes& times() const override { return times_; }
+  const SimState& current() const { return state_; }
 
  private:
   Script script_;
+  bool secondary_ = false;
   SimState state_;
   PhaseTimes times_;
 };
@@ -108,4 +116,37 @@ TEST_CASE("run: a stall window of 0 turns the stall test off") {
   control.max_iterations = 1000;
   const RunResult r = run_simulation(b, p, control);
   CHECK(r.reason == StopReason::max_iterations);
+}
+
+TEST_CASE("run: with secondary elements, the first stop starts their growth and a fresh stall window") {
+  // Primary growth stalls at 400 (as in the test above); the secondary elements then grow the mean g
+  // until 900, after which it wobbles. Settling clears the overlaps 60 steps after it starts.
+  std::uint64_t started = 0;
+  ScriptedBackend* self = nullptr;
+  ScriptedBackend b(
+      [&](std::uint64_t i, bool settling) {
+        if (started == 0 && self->current().secondary_since != 0) started = self->current().secondary_since;
+        double mean = i < 400 ? 1.0 + 0.01 * double(i) : 5.0 + ((i / 10) % 2 ? 0.01 : 0.0);
+        if (started != 0) mean += 0.002 * double(std::min<std::uint64_t>(i, 900) - started);
+        return growing(mean, 0.02f, settling && i >= 1060 ? 0 : 3);
+      },
+      true);
+  self = &b;
+  const RunResult r = run(b, run_params());
+  CHECK(r.reason == StopReason::stalled);
+  // 500 compares with 400's mark: stalled, so the secondary elements start instead of settling, with a
+  // new mark at 500; marks at 600 ... 900 still rise; 1000 compares with 900: stalled, settling.
+  CHECK(r.last_good.secondary_since == 500);
+  CHECK(r.last_good.settling_since == 1000);
+  CHECK(r.last_good.iteration == 1060);
+}
+
+TEST_CASE("run: a world without secondary elements stops where it always did") {
+  ScriptedBackend b([](std::uint64_t i, bool settling) {
+    const double mean = i < 400 ? 1.0 + 0.01 * double(i) : 5.0 + ((i / 10) % 2 ? 0.01 : 0.0);
+    return growing(mean, 0.02f, settling && i >= 560 ? 0 : 3);
+  });
+  const RunResult r = run(b, run_params());
+  CHECK(r.last_good.secondary_since == 0);
+  CHECK(r.last_good.settling_since == 500);
 }

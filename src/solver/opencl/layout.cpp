@@ -24,7 +24,7 @@ static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == verte
 static_assert(AP_SPRING_CLASSES == spring_class_count);
 static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
               AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside &&
-              AP_CONTACT_YIELD == contact_yield);
+              AP_CONTACT_YIELD == contact_yield && AP_CONTACT_BLOCK == contact_block);
 static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank &&
               AP_GROWTH_HELD == reference::growth_held);
 static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);

@@ -53,7 +53,7 @@ struct TopologyBuffers {
   cl::Buffer element, slice, flags, rest_t, rest_dir_x, rest_dir_y, target;
   cl::Buffer spring_begin, spring_other, spring_class;
   cl::Buffer tri_a, tri_b, tri_c, tri_begin, tri_list;
-  cl::Buffer slice_begin, slice_boundary, slice_element, element_slice_begin;
+  cl::Buffer slice_begin, slice_boundary, slice_element, element_slice_begin, element_secondary;
   cl::Buffer env_a, env_b, env_c, env_element;
   cl::Buffer target_x, target_y, target_t;
   cl::Buffer seg_ax, seg_ay, seg_bx, seg_by, container_index;
@@ -77,6 +77,7 @@ class DeviceBackend final : public OpenclBackend {
   DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
                 GridSort sort)
       : topo_(topology), info_(info), iteration_(initial.iteration), settling_since_(initial.settling_since),
+        secondary_since_(initial.secondary_since),
         mark_iteration_(initial.mark_iteration), mark_growth_(initial.mark_growth),
         rebuild_(params.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
@@ -105,6 +106,12 @@ class DeviceBackend final : public OpenclBackend {
     if (settling_since_ != 0) return;
     settling_since_ = iteration_;
     propose_growth_.set(2, 0);
+  }
+  bool start_secondary_growth() override {
+    if (secondary_since_ != 0 || !topo_.has_secondary()) return false;
+    secondary_since_ = iteration_;
+    propose_growth_.set(3, 0);
+    return true;
   }
   const PhaseTimes& times() const override { return times_; }
 
@@ -162,6 +169,7 @@ class DeviceBackend final : public OpenclBackend {
     settle_times();
     s.iteration = iteration_;
     s.settling_since = settling_since_;
+    s.secondary_since = secondary_since_;
     s.mark_iteration = mark_iteration_;
     s.mark_growth = mark_growth_;
     return s;
@@ -289,6 +297,10 @@ class DeviceBackend final : public OpenclBackend {
     b.slice_begin = in(topo_.slice_begin, "slice_begin"), b.slice_boundary = in(topo_.slice_boundary, "slice_boundary");
     b.slice_element = in(topo_.slice_element, "slice_element");
     b.element_slice_begin = in(topo_.element_slice_begin, "element_slice_begin");
+    // One byte per element; a topology built without the array (tests) has no secondary element.
+    std::vector<std::uint8_t> secondary(static_cast<std::size_t>(std::max(topo_.element_count(), 1)), 0);
+    for (std::int32_t e = 0; e < topo_.element_count(); ++e) secondary[e] = topo_.secondary(e) ? 1 : 0;
+    b.element_secondary = in(secondary, "element_secondary");
     b.env_a = in(topo_.env_a, "env_a"), b.env_b = in(topo_.env_b, "env_b"), b.env_c = in(topo_.env_c, "env_c");
     b.env_element = in(topo_.env_element, "env_element");
     b.target_x = in(topo_.target_x, "target_x"), b.target_y = in(topo_.target_y, "target_y");
@@ -377,7 +389,8 @@ class DeviceBackend final : public OpenclBackend {
         repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
                         cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
                         w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
-                        b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, w.rpl_x, w.rpl_y, w.rpl_t,
+                        b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, b.element_secondary,
+                        w.rpl_x, w.rpl_y, w.rpl_t,
                         w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
@@ -400,7 +413,8 @@ class DeviceBackend final : public OpenclBackend {
     containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                       opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
-    propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, b.slice_begin, contact_, growth_, w.proposed);
+    propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, secondary_since_ == 0 ? 1 : 0, b.slice_begin,
+                         b.slice_element, b.element_secondary, contact_, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");
     grow_.bind(world_, p, b.slice_element, b.element_slice_begin, w.proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");
@@ -549,6 +563,7 @@ class DeviceBackend final : public OpenclBackend {
   DeviceInfo info_;
   std::uint64_t iteration_;
   std::uint64_t settling_since_;
+  std::uint64_t secondary_since_;
   std::uint64_t mark_iteration_;
   double mark_growth_;
   int rebuild_;

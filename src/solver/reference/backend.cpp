@@ -74,6 +74,11 @@ class ReferenceBackend final : public Backend {
   void stop_growth() override {
     if (state_.settling_since == 0) state_.settling_since = state_.iteration;
   }
+  bool start_secondary_growth() override {
+    if (state_.secondary_since != 0 || !topo_.has_secondary()) return false;
+    state_.secondary_since = state_.iteration;
+    return true;
+  }
   void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
     state_.mark_iteration = iteration;
     state_.mark_growth = mean_growth;

@@ -90,6 +90,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     if (overlap.overlap) contact |= contact_overlap;
     if (overlap.inside) contact |= contact_inside;
     if (overlap.yield) contact |= contact_yield;
+    if (overlap.block) contact |= contact_block;
     r.contact[v] = contact;
     if (out != nullptr) {
       out->repulsion.set(v, rpl.force);

@@ -26,12 +26,15 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     const float g = state.growth[s];
     float next = g;
     // Growing, the larger of two overlapping slices yields; settling, both do, so that an overlap one side
-    // alone sees (their slices' times differ a little) still clears.
-    const bool yields = (bits & contact_overlap) != 0 && (!growing || (bits & contact_yield) != 0);
+    // alone sees (their slices' times differ a little) still clears. Only overlaps with elements that do
+    // not give way count (contact_block): a primary slice neither pauses nor shrinks for a secondary one.
+    const bool yields = (bits & contact_block) != 0 && (!growing || (bits & contact_yield) != 0);
+    // Secondary elements keep their start size until the primary ones have stopped growing.
+    const bool held = state.secondary_since == 0 && topo.secondary(topo.slice_element[s]);
     if ((bits & contact_outside) != 0 || yields) {
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
-    } else if (growing && (bits & (contact_wall | contact_overlap)) == 0 && g < cap) {
+    } else if (growing && !held && (bits & (contact_wall | contact_block)) == 0 && g < cap) {
       next = g + step;
       if (next > cap) next = cap;
     }

@@ -195,6 +195,7 @@ namespace {
 struct PointOverlap {
   bool overlap = false, inside = false;
   bool yield = false;          // one of the elements overlapped is no larger (g) than own_g
+  bool block = false;          // one of the elements overlapped does not give way to own
   float near2 = 0.0f;          // when inside: squared distance to the nearest way out
   float qx = 0.0f, qy = 0.0f;  // that way out, a point of the other element's outline
 };
@@ -247,9 +248,15 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
     }
     if (crosses) r.overlap = true;
     // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, between
-    // its two slices as its polygon is.
-    if ((crosses || inside) && !(state.growth[s] + (state.growth[s + 1] - state.growth[s]) * w > own_g))
-      r.yield = true;
+    // its two slices as its polygon is. A secondary element gives way to a primary one whatever their
+    // sizes ("Secondary elements"): it blocks and yields to it, never the other way round.
+    const bool own_secondary = topo.secondary(own), other_secondary = topo.secondary(e);
+    if ((crosses || inside) && !(other_secondary && !own_secondary)) {
+      r.block = true;
+      if ((own_secondary && !other_secondary) ||
+          !(state.growth[s] + (state.growth[s + 1] - state.growth[s]) * w > own_g))
+        r.yield = true;
+    }
     // Inside several elements: the nearest way out, the first element reaching it wins.
     if (inside && (!r.inside || near2 < r.near2)) {
       r.overlap = r.inside = true;
@@ -266,6 +273,7 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
 void fold(const PointOverlap& found, float px, float py, OverlapResult& r, float& depth2) {
   r.overlap = r.overlap || found.overlap;
   r.yield = r.yield || found.yield;
+  r.block = r.block || found.block;
   if (!found.inside || (r.inside && !(found.near2 > depth2))) return;
   r.inside = true;
   depth2 = found.near2;
