@@ -91,7 +91,7 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
   check_steps(world.topology, world.state, world.params, 60, 10, "star scene, settling from step 30", 30);
 }
 
-TEST_CASE("steps: secondary elements held, then growing, give identical states", "[equivalence][opencl]") {
+TEST_CASE("steps: a small real scene with secondary elements, held, then growing, gives identical states", "[equivalence][opencl]") {
   const std::string text = R"({
     "container": {"art": "../shapes/heart-container.path"},
     "elements": [{"name": "star", "art": "star.svg", "count": 3, "animation": {"preset": "rotate", "turns": 1}},
