@@ -51,6 +51,12 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     // spills (docs/parameters.md, "Stop test"), so a packing that stops is one the solver sees as correct.
     const bool clean = result.last.overlapping_vertices == 0 && result.last.outside_vertices == 0;
     std::uint64_t settling_since = result.last_good.settling_since;
+    // The stall test's progress mark, here and in the state the backend saves.
+    const auto mark_progress = [&] {
+      backend.set_progress_mark(iteration, result.last.mean_growth);
+      result.last_good.mark_iteration = iteration;
+      result.last_good.mark_growth = result.last.mean_growth;
+    };
     // Growth can also stall short of the gap test, in a steady exchange of slices that grow into a
     // neighbour and shrink back: the mean g then no longer rises over a window of stall_window steps.
     bool stalled = false;
@@ -58,24 +64,18 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + window) {
       const SimState& mark = result.last_good;
       stalled = mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stall_growth));
-      if (!stalled) {
-        backend.set_progress_mark(iteration, result.last.mean_growth);
-        result.last_good.mark_iteration = iteration;
-        result.last_good.mark_growth = result.last.mean_growth;
-      }
+      if (!stalled) mark_progress();
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
     const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop_gap);
-    // Secondary elements (docs/parameters.md, "Secondary elements") wait for the primary ones to stop;
-    // then they grow, and the stall test starts a fresh window for them.
-    if (settling_since == 0 && (stalled || touching) && backend.start_secondary_growth()) {
-      result.last_good.secondary_since = iteration;
-      backend.set_progress_mark(iteration, result.last.mean_growth);
-      result.last_good.mark_iteration = iteration;
-      result.last_good.mark_growth = result.last.mean_growth;
-      continue;
-    }
     if (settling_since == 0 && (stalled || touching)) {
+      // Secondary elements (docs/parameters.md, "Secondary elements") wait for the primary ones to stop;
+      // then they grow, and the stall test starts a fresh window for them.
+      if (backend.start_secondary_growth()) {
+        result.last_good.secondary_since = iteration;
+        mark_progress();
+        continue;
+      }
       if (clean) {
         result.reason = touching ? StopReason::gap : StopReason::stalled;
         break;
