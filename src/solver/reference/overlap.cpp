@@ -206,6 +206,7 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
                            const OverlapGrid& grid, std::int32_t own, float own_g, std::int32_t start, float px, float py, float pt,
                            float nx, float ny) {
   PointOverlap r;
+  const bool own_secondary = topo.secondary(own);
   const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
   // Reused across calls: three queries per boundary vertex.
   thread_local std::vector<std::int32_t> candidates;
@@ -250,7 +251,7 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
     // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, between
     // its two slices as its polygon is. A secondary element gives way to a primary one whatever their
     // sizes ("Secondary elements"): it blocks and yields to it, never the other way round.
-    const bool own_secondary = topo.secondary(own), other_secondary = topo.secondary(e);
+    const bool other_secondary = topo.secondary(e);
     if ((crosses || inside) && !(other_secondary && !own_secondary)) {
       r.block = true;
       if ((own_secondary && !other_secondary) ||
