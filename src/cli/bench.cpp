@@ -146,7 +146,9 @@ void write_json(const std::vector<BenchRow>& rows, const std::filesystem::path& 
                        {"ms_per_iter", r.timing.ms_per_iter},
                        {"reference_ms_per_iter", r.reference_ms_per_iter},
                        {"grid_sort", r.grid_sort.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.grid_sort)},
-                       {"speedup", r.reference_ms_per_iter / r.timing.ms_per_iter},
+                       {"speedup", median(r.rounds_speedup)},
+                       {"rounds_ms_per_iter", r.rounds_ms},
+                       {"rounds_speedup", r.rounds_speedup},
                        {"phases", phases_json(r.timing.phases_ms)}});
   nlohmann::json fits = nlohmann::json::array();
   for (const auto& [device, series] : fitted_lines(rows)) {
@@ -169,19 +171,37 @@ void print_table(const std::vector<BenchRow>& rows) {
   // A --scene path can be long; the column fits the longest name.
   int width = 18;
   for (const BenchRow& r : rows) width = std::max(width, static_cast<int>(r.scene.size()));
-  std::printf("%-*s %-14s %8s %5s %9s %10s %8s %8s %8s %9s %11s %7s %7s %10s\n", width, "scene", "device", "vertices",
-              "elem", "visits/v", "ms/iter", "speedup", "grid", "forces", "integrate", "constraints", "loop", "growth",
-              "statistics");
+  std::printf("%-*s %-14s %8s %5s %9s %10s %8s %8s %8s %8s %9s %11s %7s %7s %10s\n", width, "scene", "device",
+              "vertices", "elem", "visits/v", "ms/iter", "spread%", "speedup", "grid", "forces", "integrate",
+              "constraints", "loop", "growth", "statistics");
   for (const BenchRow& r : rows) {
     const PhaseTimes& p = r.timing.phases_ms;
-    std::printf("%-*s %-14s %8d %5d %9.1f %10.3f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", width,
+    const auto [lo, hi] = std::minmax_element(r.rounds_ms.begin(), r.rounds_ms.end());
+    const double spread = r.rounds_ms.empty() ? 0.0 : 100.0 * (*hi - *lo) / r.timing.ms_per_iter;
+    std::printf("%-*s %-14s %8d %5d %9.1f %10.3f %8.1f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", width,
                 r.scene.c_str(), r.device.c_str(), r.vertices, r.elements, r.visits_per_vertex(), r.timing.ms_per_iter,
-                r.reference_ms_per_iter / r.timing.ms_per_iter, p.grid, p.forces, p.integrate, p.constraints, p.loop,
-                p.growth, p.statistics);
+                spread, median(r.rounds_speedup), p.grid, p.forces, p.integrate, p.constraints, p.loop, p.growth,
+                p.statistics);
   }
 }
 
 }  // namespace
+
+StepTiming median_round(const std::vector<StepTiming>& rounds) {
+  if (rounds.empty()) return {};
+  std::vector<const StepTiming*> order;
+  for (const StepTiming& r : rounds) order.push_back(&r);
+  std::stable_sort(order.begin(), order.end(),
+                   [](const StepTiming* a, const StepTiming* b) { return a->ms_per_iter < b->ms_per_iter; });
+  return *order[(order.size() - 1) / 2];
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 LinearFit fit_series(const std::vector<BenchRow>& rows, const std::string& device, const std::string& series) {
   std::vector<const BenchRow*> pts;
@@ -232,18 +252,28 @@ int bench(const BenchOptions& options, const BenchPlotter& plot) {
   const std::vector<BenchTarget> targets = bench_targets(options);
 
   std::vector<BenchRow> rows;
+  const int repeat = std::max(1, options.repeat);
   for (const BenchWorld& w : bench_worlds(options)) {
-    double reference_ms = 0.0;
-    for (const BenchTarget& target : targets) {
-      std::cerr << "animpak: timing " << w.scene << " (" << w.world.topology.vertex_count() << " vertices) on "
-                << target.label << "\n";
-      std::string grid_sort;
-      auto backend = make_backend(target, w.world, grid_sort);
-      BenchRow row{target.label, w.scene, w.series, w.world.topology.vertex_count(), w.elements,
-                   time_steps(*backend, w.world.params, options.warmup, options.steps), 0.0, 0, grid_sort};
-      if (target.label == "reference") reference_ms = row.timing.ms_per_iter;
-      row.neighbour_visits = neighbour_visits(w.world.topology, backend->state(), w.world.params);
-      row.reference_ms_per_iter = reference_ms;
+    std::vector<std::unique_ptr<Backend>> backends;
+    std::vector<std::string> grid_sorts(targets.size());
+    std::vector<std::vector<StepTiming>> rounds(targets.size());
+    for (std::size_t i = 0; i < targets.size(); ++i) backends.push_back(make_backend(targets[i], w.world, grid_sorts[i]));
+    // Round by round, every device in turn; each backend steps on from where its last round ended.
+    for (int round = 0; round < repeat; ++round)
+      for (std::size_t i = 0; i < targets.size(); ++i) {
+        std::cerr << "animpak: timing " << w.scene << " (" << w.world.topology.vertex_count() << " vertices) on "
+                  << targets[i].label << (repeat > 1 ? ", round " + std::to_string(round + 1) : std::string()) << "\n";
+        rounds[i].push_back(time_steps(*backends[i], w.world.params, round == 0 ? options.warmup : 0, options.steps));
+      }
+    // The reference is always the first target (bench_targets).
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      BenchRow row{targets[i].label, w.scene, w.series, w.world.topology.vertex_count(), w.elements,
+                   median_round(rounds[i]), median_round(rounds[0]).ms_per_iter, 0, grid_sorts[i], {}, {}};
+      for (std::size_t r = 0; r < rounds[i].size(); ++r) {
+        row.rounds_ms.push_back(rounds[i][r].ms_per_iter);
+        row.rounds_speedup.push_back(rounds[0][r].ms_per_iter / rounds[i][r].ms_per_iter);
+      }
+      row.neighbour_visits = neighbour_visits(w.world.topology, backends[i]->state(), w.world.params);
       rows.push_back(row);
     }
   }

@@ -20,11 +20,22 @@ struct BenchRow {
   double reference_ms_per_iter = 0.0;  ///< the reference backend's ms per step on the same world
   std::int64_t neighbour_visits = 0;   ///< envelope triangles the repulsion queries visit per step
   std::string grid_sort;               ///< OpenCL devices: where the grid was sorted (host, device)
+  /// ms per step of every round (bench --repeat), in round order; `timing` is the median round's
+  std::vector<double> rounds_ms;
+  /// the reference's ms per step over this device's, round by round (the same round's two timings)
+  std::vector<double> rounds_speedup;
 
   bool synthetic() const { return series == "constant" || series == "dense"; }
   /// Envelope triangles of other elements visited per step, over all vertices (docs/benchmark.md).
   double visits_per_vertex() const { return vertices > 0 ? double(neighbour_visits) / vertices : 0.0; }
 };
+
+/// The median of `rounds` by ms per step (of an even count, the lower of the two middle ones), so that
+/// the reported phases belong to one real round.
+StepTiming median_round(const std::vector<StepTiming>& rounds);
+
+/// The median of `values` (of an even count, the mean of the two middle ones); 0 for none.
+double median(std::vector<double> values);
 
 /// Least-squares line of ms per step against thousands of vertices over one device's rows of one
 /// synthetic series.

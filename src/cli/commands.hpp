@@ -80,6 +80,9 @@ struct BenchOptions {
   std::vector<int> sizes{10000, 50000, 100000};  ///< target vertex counts of the synthetic worlds
   int steps = 20;                                 ///< timed steps per world
   int warmup = 3;                                 ///< untimed steps first (caches, allocations)
+  /// rounds per world: every device is timed once per round, in turn, and each row reports the median
+  /// round (with the fastest and slowest), so that a load that comes and goes hits all devices alike
+  int repeat = 1;
   int slices = 20;                                ///< n_s of the synthetic worlds
   /// constant, dense or both (docs/benchmark.md); unset: constant, or none when `scenes` or `states` is given
   std::optional<std::string> series;

@@ -84,6 +84,10 @@ int run(int argc, char** argv) {
       ->check(CLI::Range(100, 10000000));
   bench_cmd->add_option("--steps", bench_options.steps, "timed steps per world")->check(CLI::Range(1, 100000));
   bench_cmd->add_option("--warmup", bench_options.warmup, "untimed steps before timing")->check(CLI::Range(0, 100000));
+  bench_cmd->add_option("--repeat", bench_options.repeat,
+                        "rounds per world: each device timed once per round, in turn; rows give the median round, "
+                        "its spread (slowest - fastest) and the median of the rounds' speedups")
+      ->check(CLI::Range(1, 1000));
   bench_cmd->add_option("--slices", bench_options.slices, "slices n_s of the dense worlds, and of the constant series at 45 copies (it "
                         "gives larger worlds more, docs/benchmark.md)")->check(CLI::Range(2, 1000));
   bench_cmd->add_option("--examples", bench_options.examples, "the examples folder (element art, example scenes)");

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 #include "bench_report.hpp"
@@ -215,4 +216,57 @@ TEST_CASE("bench fit: least-squares slope and intercept over one device's rows o
   CHECK(g.points == 4);
   CHECK(g.min_visits_per_vertex == Approx(0.4));
   CHECK(g.visit_cost_ratio == Approx(f.visit_cost_ratio));
+}
+
+TEST_CASE("animpak bench --repeat: every device timed once per round, in turn, and the median round reported") {
+  const animpak::test::TempDir scratch("animpak-bench-");
+  const std::string scene = (scratch / "scene.json").string();
+  std::ofstream(scene) << animpak::test::star_scene(3, 5, 2);
+  const auto json_file = scratch / "bench-repeat.json";
+  const CommandResult r = run_animpak("bench --scene " + scene + " --device pocl --steps 1 --warmup 0 --repeat 3 --json " +
+                                      json_file.string());
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  // Rounds alternate between the devices.
+  const std::size_t r1 = r.err.find("on reference, round 1"), p1 = r.err.find("on pocl, round 1"),
+                    r2 = r.err.find("on reference, round 2"), p3 = r.err.find("on pocl, round 3");
+  REQUIRE(p3 != std::string::npos);
+  CHECK(r1 < p1);
+  CHECK(p1 < r2);
+  CHECK(r2 < p3);
+  const nlohmann::json j = nlohmann::json::parse(read_text(json_file));
+  REQUIRE(j.at("results").size() == 2);
+  const auto& reference = j.at("results")[0];
+  const auto& pocl = j.at("results")[1];
+  REQUIRE(pocl.at("rounds_ms_per_iter").size() == 3);
+  // The row is the median round, and the speedup the median of the rounds' own ratios.
+  std::vector<double> rounds = pocl.at("rounds_ms_per_iter").get<std::vector<double>>();
+  std::sort(rounds.begin(), rounds.end());
+  CHECK(pocl.at("ms_per_iter").get<double>() == rounds[1]);
+  std::vector<double> ratios;
+  for (int k = 0; k < 3; ++k)
+    ratios.push_back(reference.at("rounds_ms_per_iter")[k].get<double>() / pocl.at("rounds_ms_per_iter")[k].get<double>());
+  CHECK(pocl.at("rounds_speedup").get<std::vector<double>>() == ratios);
+  std::sort(ratios.begin(), ratios.end());
+  CHECK(pocl.at("speedup").get<double>() == ratios[1]);
+  CHECK(reference.at("speedup").get<double>() == 1.0);
+  CHECK_THAT(r.out, Catch::Matchers::Contains("spread%"));
+}
+
+TEST_CASE("bench: median_round picks the middle round by ms per step, the lower middle of an even count") {
+  using animpak::StepTiming;
+  const auto timing = [](double ms, double forces) {
+    StepTiming t;
+    t.ms_per_iter = ms;
+    t.phases_ms.forces = forces;
+    return t;
+  };
+  const StepTiming odd = animpak::cli::median_round({timing(9, 1), timing(3, 2), timing(5, 3)});
+  CHECK(odd.ms_per_iter == 5);
+  CHECK(odd.phases_ms.forces == 3);  // the phases of that same round
+  CHECK(animpak::cli::median_round({timing(9, 1), timing(3, 2), timing(5, 3), timing(7, 4)}).ms_per_iter == 5);
+  CHECK(animpak::cli::median_round({}).ms_per_iter == 0);
+  CHECK(animpak::cli::median({4.0, 1.0, 2.0, 3.0}) == 2.5);
+  CHECK(animpak::cli::median({3.0, 1.0, 2.0}) == 2.0);
+  CHECK(animpak::cli::median({}) == 0.0);
 }
