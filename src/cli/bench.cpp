@@ -146,7 +146,7 @@ void write_json(const std::vector<BenchRow>& rows, const std::filesystem::path& 
                        {"ms_per_iter", r.timing.ms_per_iter},
                        {"reference_ms_per_iter", r.reference_ms_per_iter},
                        {"grid_sort", r.grid_sort.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.grid_sort)},
-                       {"speedup", median(r.rounds_speedup)},
+                       {"speedup", r.speedup()},
                        {"rounds_ms_per_iter", r.rounds_ms},
                        {"rounds_speedup", r.rounds_speedup},
                        {"phases", phases_json(r.timing.phases_ms)}});
@@ -176,11 +176,9 @@ void print_table(const std::vector<BenchRow>& rows) {
               "constraints", "loop", "growth", "statistics");
   for (const BenchRow& r : rows) {
     const PhaseTimes& p = r.timing.phases_ms;
-    const auto [lo, hi] = std::minmax_element(r.rounds_ms.begin(), r.rounds_ms.end());
-    const double spread = r.rounds_ms.empty() ? 0.0 : 100.0 * (*hi - *lo) / r.timing.ms_per_iter;
     std::printf("%-*s %-14s %8d %5d %9.1f %10.3f %8.1f %8.2f %8.3f %8.3f %9.3f %11.3f %7.3f %7.3f %10.3f\n", width,
                 r.scene.c_str(), r.device.c_str(), r.vertices, r.elements, r.visits_per_vertex(), r.timing.ms_per_iter,
-                spread, median(r.rounds_speedup), p.grid, p.forces, p.integrate, p.constraints, p.loop, p.growth,
+                r.spread_percent(), r.speedup(), p.grid, p.forces, p.integrate, p.constraints, p.loop, p.growth,
                 p.statistics);
   }
 }
@@ -201,6 +199,14 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double BenchRow::speedup() const { return median(rounds_speedup); }
+
+double BenchRow::spread_percent() const {
+  if (rounds_ms.empty()) return 0.0;
+  const auto [lo, hi] = std::minmax_element(rounds_ms.begin(), rounds_ms.end());
+  return 100.0 * (*hi - *lo) / timing.ms_per_iter;
 }
 
 LinearFit fit_series(const std::vector<BenchRow>& rows, const std::string& device, const std::string& series) {

@@ -28,6 +28,10 @@ struct BenchRow {
   bool synthetic() const { return series == "constant" || series == "dense"; }
   /// Envelope triangles of other elements visited per step, over all vertices (docs/benchmark.md).
   double visits_per_vertex() const { return vertices > 0 ? double(neighbour_visits) / vertices : 0.0; }
+  /// The median of the rounds' speedups (docs/benchmark.md, "Rounds").
+  double speedup() const;
+  /// The slowest round's ms per step minus the fastest's, as a percentage of the median round's.
+  double spread_percent() const;
 };
 
 /// The median of `rounds` by ms per step (of an even count, the lower of the two middle ones), so that
