@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, from a clean clone: installs what is missing, builds the release and the
-# sanitizer (ASan + UBSan) builds, and runs every test in both. README quick start, command 2.
+# sanitizer (ASan + UBSan) builds, and runs every test in the release build and the library stages'
+# tests in the sanitizer build (CMakePresets.json; README, "Tests"). README quick start, command 2.
 # Unity builds (CMAKE_UNITY_BUILD: each target's sources compiled a few at a time in one translation
 # unit) take a build from scratch in about half the time; `-DCMAKE_UNITY_BUILD=OFF` on a later configure
 # goes back to one object per source for incremental work.
