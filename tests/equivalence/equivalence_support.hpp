@@ -42,6 +42,17 @@ inline std::vector<DeviceChoice> devices_under_test() {
   return out;
 }
 
+/// Every how many seeds the cases over several random worlds check: 1 (each) unless
+/// ANIMPAK_EQUIVALENCE_SEED_STRIDE asks for more. scripts/oclgrind-check.sh sets 2: on the simulator,
+/// whose checks are of memory access and not of numbers, half the worlds cover the same kernel code
+/// in half the time (docs/testing.md).
+inline std::uint64_t seed_stride() {
+  const char* text = std::getenv("ANIMPAK_EQUIVALENCE_SEED_STRIDE");
+  if (text == nullptr || *text == '\0') return 1;
+  const long stride = std::strtol(text, nullptr, 10);
+  return stride >= 1 ? static_cast<std::uint64_t>(stride) : 1;
+}
+
 /// The line ctest's SKIP_REGULAR_EXPRESSION looks for (tests/CMakeLists.txt), so that a run with no
 /// device to compare shows its tests as skipped, not as passed.
 inline constexpr const char* no_device_skip = "skipped: no OpenCL device";

@@ -97,7 +97,7 @@ BroadphaseUse broadphase_use(const World& w) {
 TEST_CASE("forces: random worlds, default and paper constants", "[equivalence][opencl]") {
   if (!have_devices()) return;
   Coverage total;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 6; seed += seed_stride()) {
     RandomWorldShape shape;
     shape.elements = 3 + static_cast<int>(seed % 4);
     shape.max_radius = 0.2f;  // large enough that elements overlap and cross the container
@@ -133,7 +133,7 @@ TEST_CASE("forces: vertices on cell borders and the grid's edge", "[equivalence]
 TEST_CASE("forces: many small elements spread out, the overlap broadphase leaving most out", "[equivalence][opencl]") {
   if (!have_devices()) return;
   Coverage total;
-  for (std::uint64_t seed = 21; seed <= 22; ++seed) {
+  for (std::uint64_t seed = 21; seed <= 22; seed += seed_stride()) {
     RandomWorldShape shape;
     shape.elements = 60;
     shape.min_radius = 0.02f;
