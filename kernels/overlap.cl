@@ -126,7 +126,6 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
     const int lo = slice_begin[s], hi = slice_begin[s + 1];
     const int edges = slice_boundary[s];
     bool inside = false, crosses = false;
-    float near2 = INFINITY, cqx = px, cqy = py;
     for (int i = 0; i < edges; ++i) {
       const int j = i + 1 == edges ? 0 : i + 1;
       const float ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
@@ -134,7 +133,17 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
       const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
       const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      if (segments_cross(px, py, nx, ny, ax, ay, bx, by)) crosses = true;
+      if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
+          ap_min(ay, by) <= ey1 && segments_cross(px, py, nx, ny, ax, ay, bx, by))
+        crosses = true;
+    }
+    float near2 = INFINITY, cqx = px, cqy = py;
+    for (int i = 0; inside && i < edges; ++i) {
+      const int j = i + 1 == edges ? 0 : i + 1;
+      const float ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
+      const float ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
+      const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
+      const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
       float cx, cy;
       const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;

@@ -232,18 +232,32 @@ PointOverlap point_overlap(const Topology& topo, const SimState& state, const Sl
     const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
     const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
     const std::int32_t edges = topo.slice_boundary[s];
-    bool inside = false, crosses = false;
-    float near2 = std::numeric_limits<float>::infinity(), qx = px, qy = py;
-    for (std::int32_t i = 0; i < edges; ++i) {
+    // The polygon at pt, edge by edge: the even-odd test, and a proper crossing of the query's boundary
+    // edge with this edge (touching does not count), tried only until one is found and only where the
+    // two edges' boxes meet (disjoint boxes cannot cross).
+    const auto edge = [&](std::int32_t i, float& ax, float& ay, float& bx, float& by) {
       const std::int32_t j = i + 1 == edges ? 0 : i + 1;
-      const float ax = state.x[lo + i] + (state.x[hi + i] - state.x[lo + i]) * w;
-      const float ay = state.y[lo + i] + (state.y[hi + i] - state.y[lo + i]) * w;
-      const float bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
-      const float by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
+      ax = state.x[lo + i] + (state.x[hi + i] - state.x[lo + i]) * w;
+      ay = state.y[lo + i] + (state.y[hi + i] - state.y[lo + i]) * w;
+      bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
+      by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
+    };
+    bool inside = false, crosses = false;
+    for (std::int32_t i = 0; i < edges; ++i) {
+      float ax, ay, bx, by;
+      edge(i, ax, ay, bx, by);
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      // A proper crossing of the query's boundary edge with this edge (touching does not count).
-      if (segments_cross(px, py, nx, ny, ax, ay, bx, by)) crosses = true;
-      float cx, cy;
+      if (!crosses && std::max(ax, bx) >= ex0 && std::min(ax, bx) <= ex1 && std::max(ay, by) >= ey0 &&
+          std::min(ay, by) <= ey1 && segments_cross(px, py, nx, ny, ax, ay, bx, by))
+        crosses = true;
+    }
+    // Only a point inside needs its way out, the nearest point of the outline: a second walk, since
+    // most elements tried are near and not entered. With the crossing test's box check this made a
+    // step of the packed default example 1.2x faster here and 1.1x on PoCL.
+    float near2 = std::numeric_limits<float>::infinity(), qx = px, qy = py;
+    for (std::int32_t i = 0; inside && i < edges; ++i) {
+      float ax, ay, bx, by, cx, cy;
+      edge(i, ax, ay, bx, by);
       const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
       if (d2 < near2) near2 = d2, qx = cx, qy = cy;
     }
