@@ -125,6 +125,8 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
     const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
     const int lo = slice_begin[s], hi = slice_begin[s + 1];
     const int edges = slice_boundary[s];
+    /* The even-odd test, and the crossing test until one is found and only where the edges' boxes
+     * meet; the way out (the nearest point of the outline) in a second walk, for a point inside only. */
     bool inside = false, crosses = false;
     for (int i = 0; i < edges; ++i) {
       const int j = i + 1 == edges ? 0 : i + 1;
