@@ -30,6 +30,17 @@ bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, 
          overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by));
 }
 
+/** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
+ * slices whose first vertices are lo and hi (reference point_overlap's `edge`). */
+void overlap_edge(__global const float* x, __global const float* y, int lo, int hi, int i, int edges, float w,
+                  float* ax, float* ay, float* bx, float* by) {
+  const int j = i + 1 == edges ? 0 : i + 1;
+  *ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
+  *ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
+  *bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
+  *by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
+}
+
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
  * slice. */
 __kernel void slice_boxes(const WorldInfo world,
@@ -129,11 +140,8 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
      * meet; the way out (the nearest point of the outline) in a second walk, for a point inside only. */
     bool inside = false, crosses = false;
     for (int i = 0; i < edges; ++i) {
-      const int j = i + 1 == edges ? 0 : i + 1;
-      const float ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
-      const float ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
-      const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
-      const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
+      float ax, ay, bx, by;
+      overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
       if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
           ap_min(ay, by) <= ey1 && segments_cross(px, py, nx, ny, ax, ay, bx, by))
@@ -141,12 +149,8 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
     }
     float near2 = INFINITY, cqx = px, cqy = py;
     for (int i = 0; inside && i < edges; ++i) {
-      const int j = i + 1 == edges ? 0 : i + 1;
-      const float ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
-      const float ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
-      const float bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
-      const float by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
-      float cx, cy;
+      float ax, ay, bx, by, cx, cy;
+      overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
       const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
       if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
     }
