@@ -3,7 +3,8 @@
 // device (GPUs) or on the host from the cell ids read back (CPU devices); the overlap test's broadphase
 // is built on the host every step from the slice boxes read back (reference::build_overlap_grid), so
 // each step crosses the bus once each way for it; statistics are per-slice reductions read on demand,
-// and the full state comes back only in state().
+// and the full state comes back only in state(). The topology and scratch buffers are made in
+// device_buffers.cpp.
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -11,6 +12,7 @@
 
 #include "../counting_sort.hpp"
 #include "animpak/error.hpp"
+#include "device_buffers.hpp"
 #include "kernel.hpp"
 
 namespace animpak {
@@ -35,6 +37,8 @@ namespace {
 
 using opencl::check;
 using opencl::Kernel;
+using opencl::ScratchBuffers;
+using opencl::TopologyBuffers;
 
 void validate(const Topology& topo) {
   const std::int32_t n = topo.vertex_count();
@@ -47,30 +51,6 @@ void validate(const Topology& topo) {
       used[v] = 1;
     }
 }
-
-// The topology's arrays on the device, read-only, one buffer per Topology field the kernels read.
-struct TopologyBuffers {
-  cl::Buffer element, slice, flags, rest_t, rest_dir_x, rest_dir_y, target;
-  cl::Buffer spring_begin, spring_other, spring_class;
-  cl::Buffer tri_a, tri_b, tri_c, tri_begin, tri_list;
-  cl::Buffer slice_begin, slice_boundary, slice_element, element_slice_begin, element_secondary;
-  cl::Buffer env_a, env_b, env_c, env_element;
-  cl::Buffer target_x, target_y, target_t;
-  cl::Buffer seg_ax, seg_ay, seg_bx, seg_by, container_index;
-  cl::Buffer loop_end, loop_start;
-  cl::Buffer rest_copy_x, rest_copy_y, rest_copy_t, rest_copy_cx, rest_copy_cy;
-};
-
-// Scratch one phase of a step hands to the next; nothing here outlives a step.
-struct ScratchBuffers {
-  cl::Buffer cell_count, cursor, block_sum;                                            // grid sort
-  cl::Buffer slot_element, slot_a, slot_b, slot_c, slot_cx, slot_cy, slot_ct;          // triangles in cell order
-  cl::Buffer run_next, run_cx, run_cy, run_ct;                                         // far-field cell aggregates
-  cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;          // repulsion, overlap test
-  cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;                // per-slice geometry
-  cl::Buffer overlap_start, overlap_elements;                                          // overlap broadphase
-  cl::Buffer proposed;                                                                 // growth proposals
-};
 
 class DeviceBackend final : public OpenclBackend {
  public:
@@ -87,7 +67,7 @@ class DeviceBackend final : public OpenclBackend {
               static_cast<std::int32_t>(topo_.loop_end.size()), static_cast<std::int32_t>(topo_.container.ax.size()), 0};
     grid_ = opencl::grid_info(params, topo_.envelope_count());
     upload_state(initial);
-    upload_topology();
+    topo_buf_ = opencl::upload_topology(context_, queue_, topo_);
     allocate_scratch();
     bind_grid_kernels(program);
     bind_step_kernels(program, opencl::force_params(params));
@@ -225,7 +205,8 @@ class DeviceBackend final : public OpenclBackend {
     g.n = grid_.n;
     g.cell = grid_.cell;
     g.cx.resize(grid_.triangles), g.cy.resize(grid_.triangles), g.ct.resize(grid_.triangles);
-    read(env_cx_, g.cx, "env_cx"), read(env_cy_, g.cy, "env_cy"), read(env_ct_, g.ct, "env_ct", true);
+    const ScratchBuffers& w = scratch_;
+    read(w.env_cx, g.cx, "env_cx"), read(w.env_cy, g.cy, "env_cy"), read(w.env_ct, g.ct, "env_ct", true);
     if (sort_ == GridSort::host) {
       g.triangle_cell = cells_;
       g.cell_start = cell_start_;
@@ -233,9 +214,9 @@ class DeviceBackend final : public OpenclBackend {
     } else {
       g.triangle_cell.resize(grid_.triangles), g.cell_start.resize(cell_start_.size());
       g.sorted_triangles.resize(grid_.triangles);
-      read(triangle_cell_, g.triangle_cell, "triangle_cell");
-      read(sorted_buf_, g.sorted_triangles, "sorted_triangles");
-      read(cell_start_buf_, g.cell_start, "cell_start", true);
+      read(w.triangle_cell, g.triangle_cell, "triangle_cell");
+      read(w.sorted, g.sorted_triangles, "sorted_triangles");
+      read(w.cell_start, g.cell_start, "cell_start", true);
     }
     pending_.clear();
     // The runs are the reference's own, from the arrays just read (the equivalence suite compares the
@@ -283,68 +264,15 @@ class DeviceBackend final : public OpenclBackend {
     boundary_buf_ = upload(boundary_order_, "boundary_vertices");
   }
 
-  void upload_topology() {
-    auto in = [&](const auto& v, const char* name) { return upload(v, name, CL_MEM_READ_ONLY); };
-    TopologyBuffers& b = topo_buf_;
-    b.element = in(topo_.element, "element"), b.slice = in(topo_.slice, "slice"), b.flags = in(topo_.flags, "flags");
-    b.rest_t = in(topo_.rest_t, "rest_t");
-    b.rest_dir_x = in(topo_.rest_dir_x, "rest_dir_x"), b.rest_dir_y = in(topo_.rest_dir_y, "rest_dir_y");
-    b.target = in(topo_.target, "target");
-    b.spring_begin = in(topo_.spring_begin, "spring_begin"), b.spring_other = in(topo_.spring_other, "spring_other");
-    b.spring_class = in(topo_.spring_class, "spring_class");
-    b.tri_a = in(topo_.tri_a, "tri_a"), b.tri_b = in(topo_.tri_b, "tri_b"), b.tri_c = in(topo_.tri_c, "tri_c");
-    b.tri_begin = in(topo_.tri_begin, "tri_begin"), b.tri_list = in(topo_.tri_list, "tri_list");
-    b.slice_begin = in(topo_.slice_begin, "slice_begin"), b.slice_boundary = in(topo_.slice_boundary, "slice_boundary");
-    b.slice_element = in(topo_.slice_element, "slice_element");
-    b.element_slice_begin = in(topo_.element_slice_begin, "element_slice_begin");
-    // One byte per element; a topology built without the array (tests) has no secondary element.
-    std::vector<std::uint8_t> secondary(static_cast<std::size_t>(std::max(topo_.element_count(), 1)), 0);
-    for (std::int32_t e = 0; e < topo_.element_count(); ++e) secondary[e] = topo_.secondary(e) ? 1 : 0;
-    b.element_secondary = in(secondary, "element_secondary");
-    b.env_a = in(topo_.env_a, "env_a"), b.env_b = in(topo_.env_b, "env_b"), b.env_c = in(topo_.env_c, "env_c");
-    b.env_element = in(topo_.env_element, "env_element");
-    b.target_x = in(topo_.target_x, "target_x"), b.target_y = in(topo_.target_y, "target_y");
-    b.target_t = in(topo_.target_t, "target_t");
-    b.seg_ax = in(topo_.container.ax, "container.ax"), b.seg_ay = in(topo_.container.ay, "container.ay");
-    b.seg_bx = in(topo_.container.bx, "container.bx"), b.seg_by = in(topo_.container.by, "container.by");
-    b.container_index = in(topo_.container.index.data, "container.index");
-    b.loop_end = in(topo_.loop_end, "loop_end"), b.loop_start = in(topo_.loop_start, "loop_start");
-    b.rest_copy_x = in(topo_.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo_.rest_copy_y, "rest_copy_y");
-    b.rest_copy_t = in(topo_.rest_copy_t, "rest_copy_t");
-    b.rest_copy_cx = in(topo_.slice_rest_copy_cx, "slice_rest_copy_cx");
-    b.rest_copy_cy = in(topo_.slice_rest_copy_cy, "slice_rest_copy_cy");
-  }
-
+  // The device scratch (device_buffers.cpp) and the host arrays the host sort and the broadphase fill.
   void allocate_scratch() {
-    const std::int32_t n = world_.vertices, slices = world_.slices;
-    const std::size_t fn = sizeof(float) * n, fs = sizeof(float) * slices, ft = sizeof(float) * grid_.triangles,
-                      it = sizeof(std::int32_t) * grid_.triangles, ic = sizeof(std::int32_t) * grid_.cells;
-    const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+    scratch_ = opencl::allocate_scratch(context_, world_.vertices, world_.slices, grid_);
     cells_.resize(grid_.triangles);
     cell_start_.resize(static_cast<std::size_t>(grid_.cells) + 1);
     sorted_.resize(grid_.triangles);
-    env_cx_ = scratch(ft, "env_cx"), env_cy_ = scratch(ft, "env_cy"), env_ct_ = scratch(ft, "env_ct");
-    triangle_cell_ = scratch(it, "triangle_cell");
-    cell_start_buf_ = scratch(sizeof(std::int32_t) * cell_start_.size(), "cell_start");
-    sorted_buf_ = scratch(it, "sorted_triangles");
-    ScratchBuffers& w = scratch_;
-    w.cell_count = scratch(ic, "cell_count"), w.cursor = scratch(ic, "cell_cursor");
-    w.block_sum = scratch(sizeof(std::int32_t) * blocks, "scan_blocks");
-    w.slot_element = scratch(it, "slot_element");
-    w.slot_a = scratch(it, "slot_a"), w.slot_b = scratch(it, "slot_b"), w.slot_c = scratch(it, "slot_c");
-    w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
-    w.run_next = scratch(it, "run_next");
-    w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");
-    w.rpl_x = scratch(fn, "repulsion_x"), w.rpl_y = scratch(fn, "repulsion_y"), w.rpl_t = scratch(fn, "repulsion_t");
-    w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(n, "repulsion_contact");
-    w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");
-    w.slice_cx = scratch(fs, "slice_cx"), w.slice_cy = scratch(fs, "slice_cy");
-    w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
-    w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
-    w.box_t = scratch(fs, "slice_t");
+    const std::size_t slices = static_cast<std::size_t>(world_.slices);
     boxes_.x0.resize(slices), boxes_.y0.resize(slices), boxes_.x1.resize(slices), boxes_.y1.resize(slices);
     boxes_.t.resize(slices);
-    w.proposed = scratch(fs, "proposed_growth");
   }
 
   // The collision grid's kernels (§5.1): centroids and cells, the device sort, the per-slot copies.
@@ -352,26 +280,26 @@ class DeviceBackend final : public OpenclBackend {
     const TopologyBuffers& b = topo_buf_;
     const ScratchBuffers& w = scratch_;
     envelope_cells_ = Kernel(program, "envelope_cells");
-    envelope_cells_.bind(grid_, b.env_a, b.env_b, b.env_c, x_, y_, t_, env_cx_, env_cy_, env_ct_, triangle_cell_);
+    envelope_cells_.bind(grid_, b.env_a, b.env_b, b.env_c, x_, y_, t_, w.env_cx, w.env_cy, w.env_ct, w.triangle_cell);
     grid_clear_ = Kernel(program, "grid_clear");
     grid_clear_.bind(grid_, w.cell_count);
     grid_count_ = Kernel(program, "grid_count");
-    grid_count_.bind(grid_, triangle_cell_, w.cell_count);
+    grid_count_.bind(grid_, w.triangle_cell, w.cell_count);
     grid_block_sums_ = Kernel(program, "grid_block_sums");
     grid_block_sums_.bind(grid_, w.cell_count, w.block_sum);
     grid_scan_blocks_ = Kernel(program, "grid_scan_blocks");
     grid_scan_blocks_.bind(grid_, w.block_sum);
     grid_scan_cells_ = Kernel(program, "grid_scan_cells");
-    grid_scan_cells_.bind(grid_, w.cell_count, w.block_sum, cell_start_buf_, w.cursor);
+    grid_scan_cells_.bind(grid_, w.cell_count, w.block_sum, w.cell_start, w.cursor);
     grid_scatter_ = Kernel(program, "grid_scatter");
-    grid_scatter_.bind(grid_, triangle_cell_, w.cursor, sorted_buf_);
+    grid_scatter_.bind(grid_, w.triangle_cell, w.cursor, w.sorted);
     grid_order_ = Kernel(program, "grid_order_cells");
-    grid_order_.bind(grid_, cell_start_buf_, sorted_buf_);
+    grid_order_.bind(grid_, w.cell_start, w.sorted);
     grid_gather_ = Kernel(program, "grid_gather");
-    grid_gather_.bind(grid_, sorted_buf_, b.env_element, b.env_a, b.env_b, b.env_c, env_cx_, env_cy_, env_ct_,
+    grid_gather_.bind(grid_, w.sorted, b.env_element, b.env_a, b.env_b, b.env_c, w.env_cx, w.env_cy, w.env_ct,
                       w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct);
     grid_runs_ = Kernel(program, "grid_runs");
-    grid_runs_.bind(grid_, cell_start_buf_, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx,
+    grid_runs_.bind(grid_, w.cell_start, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx,
                     w.run_cy, w.run_ct);
   }
 
@@ -387,7 +315,7 @@ class DeviceBackend final : public OpenclBackend {
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ =
         repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
-                        cell_start_buf_, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
+                        w.cell_start, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
                         w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
                         b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, b.element_secondary,
                         w.rpl_x, w.rpl_y, w.rpl_t,
@@ -427,12 +355,8 @@ class DeviceBackend final : public OpenclBackend {
 
   // A device buffer holding `data` (read-write unless `flags` says otherwise).
   template <typename T>
-  cl::Buffer upload(const std::vector<T>& data, const char* name, cl_mem_flags flags = CL_MEM_READ_WRITE) {
-    cl::Buffer b = opencl::make_buffer(context_, flags, sizeof(T) * data.size(), name);
-    if (!data.empty())
-      check(queue_.enqueueWriteBuffer(b, CL_TRUE, 0, sizeof(T) * data.size(), data.data()),
-            std::string("clEnqueueWriteBuffer(") + name + ")");
-    return b;
+  cl::Buffer upload(const std::vector<T>& data, const char* name) {
+    return opencl::upload_buffer(context_, queue_, data, name);
   }
 
   cl::Buffer scratch(std::size_t bytes, const char* name) {
@@ -515,16 +439,17 @@ class DeviceBackend final : public OpenclBackend {
   }
 
   void host_sort() {
-    read(triangle_cell_, cells_, "triangle_cell", true);
+    read(scratch_.triangle_cell, cells_, "triangle_cell", true);
     settle_times();
     PhaseStopwatch w(times_.grid);
     counting_sort(cells_, grid_.cells, cell_start_, sorted_);
     // The host vectors stay untouched until the next build, which first waits on this queue.
-    check(queue_.enqueueWriteBuffer(cell_start_buf_, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
+    check(queue_.enqueueWriteBuffer(scratch_.cell_start, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
                                     cell_start_.data()),
           "clEnqueueWriteBuffer(cell_start)");
     if (!sorted_.empty())
-      check(queue_.enqueueWriteBuffer(sorted_buf_, CL_FALSE, 0, sizeof(std::int32_t) * sorted_.size(), sorted_.data()),
+      check(queue_.enqueueWriteBuffer(scratch_.sorted, CL_FALSE, 0, sizeof(std::int32_t) * sorted_.size(),
+                                      sorted_.data()),
             "clEnqueueWriteBuffer(sorted_triangles)");
   }
 
@@ -584,7 +509,6 @@ class DeviceBackend final : public OpenclBackend {
   ScratchBuffers scratch_;
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer boundary_buf_;
-  cl::Buffer env_cx_, env_cy_, env_ct_, triangle_cell_, cell_start_buf_, sorted_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,

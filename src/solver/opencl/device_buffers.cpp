@@ -1,0 +1,72 @@
+// The OpenCL backend's device memory (device_buffers.hpp).
+#include "device_buffers.hpp"
+
+#include <algorithm>
+
+namespace animpak::opencl {
+
+TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQueue& queue, const Topology& topo) {
+  auto in = [&](const auto& v, const char* name) { return upload_buffer(context, queue, v, name, CL_MEM_READ_ONLY); };
+  TopologyBuffers b;
+  b.element = in(topo.element, "element"), b.slice = in(topo.slice, "slice"), b.flags = in(topo.flags, "flags");
+  b.rest_t = in(topo.rest_t, "rest_t");
+  b.rest_dir_x = in(topo.rest_dir_x, "rest_dir_x"), b.rest_dir_y = in(topo.rest_dir_y, "rest_dir_y");
+  b.target = in(topo.target, "target");
+  b.spring_begin = in(topo.spring_begin, "spring_begin"), b.spring_other = in(topo.spring_other, "spring_other");
+  b.spring_class = in(topo.spring_class, "spring_class");
+  b.tri_a = in(topo.tri_a, "tri_a"), b.tri_b = in(topo.tri_b, "tri_b"), b.tri_c = in(topo.tri_c, "tri_c");
+  b.tri_begin = in(topo.tri_begin, "tri_begin"), b.tri_list = in(topo.tri_list, "tri_list");
+  b.slice_begin = in(topo.slice_begin, "slice_begin"), b.slice_boundary = in(topo.slice_boundary, "slice_boundary");
+  b.slice_element = in(topo.slice_element, "slice_element");
+  b.element_slice_begin = in(topo.element_slice_begin, "element_slice_begin");
+  // One byte per element; a topology built without the array (tests) has no secondary element.
+  std::vector<std::uint8_t> secondary(static_cast<std::size_t>(std::max(topo.element_count(), 1)), 0);
+  for (std::int32_t e = 0; e < topo.element_count(); ++e) secondary[e] = topo.secondary(e) ? 1 : 0;
+  b.element_secondary = in(secondary, "element_secondary");
+  b.env_a = in(topo.env_a, "env_a"), b.env_b = in(topo.env_b, "env_b"), b.env_c = in(topo.env_c, "env_c");
+  b.env_element = in(topo.env_element, "env_element");
+  b.target_x = in(topo.target_x, "target_x"), b.target_y = in(topo.target_y, "target_y");
+  b.target_t = in(topo.target_t, "target_t");
+  b.seg_ax = in(topo.container.ax, "container.ax"), b.seg_ay = in(topo.container.ay, "container.ay");
+  b.seg_bx = in(topo.container.bx, "container.bx"), b.seg_by = in(topo.container.by, "container.by");
+  b.container_index = in(topo.container.index.data, "container.index");
+  b.loop_end = in(topo.loop_end, "loop_end"), b.loop_start = in(topo.loop_start, "loop_start");
+  b.rest_copy_x = in(topo.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo.rest_copy_y, "rest_copy_y");
+  b.rest_copy_t = in(topo.rest_copy_t, "rest_copy_t");
+  b.rest_copy_cx = in(topo.slice_rest_copy_cx, "slice_rest_copy_cx");
+  b.rest_copy_cy = in(topo.slice_rest_copy_cy, "slice_rest_copy_cy");
+  return b;
+}
+
+ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertices, std::int32_t slices,
+                                const GridInfo& grid) {
+  const auto scratch = [&](std::size_t bytes, const char* name) {
+    return make_buffer(context, CL_MEM_READ_WRITE, bytes, name);
+  };
+  const std::size_t fn = sizeof(float) * vertices, fs = sizeof(float) * slices, ft = sizeof(float) * grid.triangles,
+                    it = sizeof(std::int32_t) * grid.triangles, ic = sizeof(std::int32_t) * grid.cells;
+  const std::int32_t blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  ScratchBuffers w;
+  w.env_cx = scratch(ft, "env_cx"), w.env_cy = scratch(ft, "env_cy"), w.env_ct = scratch(ft, "env_ct");
+  w.triangle_cell = scratch(it, "triangle_cell");
+  w.cell_count = scratch(ic, "cell_count"), w.cursor = scratch(ic, "cell_cursor");
+  w.block_sum = scratch(sizeof(std::int32_t) * blocks, "scan_blocks");
+  w.cell_start = scratch(sizeof(std::int32_t) * (static_cast<std::size_t>(grid.cells) + 1), "cell_start");
+  w.sorted = scratch(it, "sorted_triangles");
+  w.slot_element = scratch(it, "slot_element");
+  w.slot_a = scratch(it, "slot_a"), w.slot_b = scratch(it, "slot_b"), w.slot_c = scratch(it, "slot_c");
+  w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
+  w.run_next = scratch(it, "run_next");
+  w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");
+  w.rpl_x = scratch(fn, "repulsion_x"), w.rpl_y = scratch(fn, "repulsion_y"), w.rpl_t = scratch(fn, "repulsion_t");
+  w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(vertices, "repulsion_contact");
+  w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");
+  w.slice_cx = scratch(fs, "slice_cx"), w.slice_cy = scratch(fs, "slice_cy");
+  w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
+  w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
+  w.box_t = scratch(fs, "slice_t");
+  w.proposed = scratch(fs, "proposed_growth");
+  return w;
+}
+
+}  // namespace animpak::opencl
