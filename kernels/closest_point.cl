@@ -72,3 +72,62 @@ void closest_point_on_triangle(float px, float py, float pt, float ax, float ay,
   *qy = ay + aby * v + acy * w;
   *qt = at + abt * v + act * w;
 }
+
+/* The near block's triangles 16 at a time (repulsion_near_range) when the host builds for a CPU
+ * (-DAP_NEAR_LANES=16, program.cpp): every Voronoi region's answer is computed for all lanes, then the
+ * first region that holds, in the order of the scalar function above, is selected per lane. Each lane
+ * does the scalar function's float operations on the same operands, so its point is bit-identical; the
+ * work is branch-free, so the CPU compiler puts the lanes in SIMD registers (docs/architecture.md, "The
+ * near block in lanes"). */
+#if defined(AP_NEAR_LANES) && AP_NEAR_LANES == 16
+#define AP_LANES 16
+typedef float16 ap_floatv;
+typedef int16 ap_intv;
+#define ap_vloadf(k, p) vload16((k), (p))
+#define ap_vloadi(k, p) vload16((k), (p))
+#define AP_FOR_LANES(M) M(0) M(1) M(2) M(3) M(4) M(5) M(6) M(7) M(8) M(9) M(a) M(b) M(c) M(d) M(e) M(f)
+
+/** closest_point_on_triangle for AP_LANES triangles at once. */
+void closest_point_on_triangles(float px, float py, float pt, ap_floatv ax, ap_floatv ay, ap_floatv at, ap_floatv bx,
+                                ap_floatv by, ap_floatv bt, ap_floatv cx, ap_floatv cy, ap_floatv ct, ap_floatv* qx,
+                                ap_floatv* qy, ap_floatv* qt) {
+  const ap_floatv abx = bx - ax, aby = by - ay, abt = bt - at;
+  const ap_floatv acx = cx - ax, acy = cy - ay, act = ct - at;
+  const ap_floatv apx = px - ax, apy = py - ay, apt = pt - at;
+  const ap_floatv d1 = abx * apx + aby * apy + abt * apt;
+  const ap_floatv d2 = acx * apx + acy * apy + act * apt;
+  const ap_floatv bpx = px - bx, bpy = py - by, bpt = pt - bt;
+  const ap_floatv d3 = abx * bpx + aby * bpy + abt * bpt;
+  const ap_floatv d4 = acx * bpx + acy * bpy + act * bpt;
+  const ap_floatv vc = d1 * d4 - d3 * d2;
+  const ap_floatv cpx = px - cx, cpy = py - cy, cpt = pt - ct;
+  const ap_floatv d5 = abx * cpx + aby * cpy + abt * cpt;
+  const ap_floatv d6 = acx * cpx + acy * cpy + act * cpt;
+  const ap_floatv vb = d5 * d2 - d1 * d6;
+  const ap_floatv va = d3 * d6 - d5 * d4;
+  const ap_floatv e43 = d4 - d3, e56 = d5 - d6;
+  /* From the last region back to the first, each overriding the lanes where it holds. */
+  const ap_floatv sum = va + vb + vc;
+  const ap_floatv denom = 1.0f / sum;
+  const ap_floatv v = vb * denom, w = vc * denom;
+  ap_floatv rx = ax + abx * v + acx * w, ry = ay + aby * v + acy * w, rt = at + abt * v + act * w;
+  ap_intv m = !(sum > 0.0f);
+  rx = select(rx, ax, m), ry = select(ry, ay, m), rt = select(rt, at, m);
+  const ap_floatv s_bc = e43 / (e43 + e56);
+  m = va <= 0.0f && e43 >= 0.0f && e56 >= 0.0f;
+  rx = select(rx, bx + (cx - bx) * s_bc, m), ry = select(ry, by + (cy - by) * s_bc, m);
+  rt = select(rt, bt + (ct - bt) * s_bc, m);
+  const ap_floatv s_ac = d2 / (d2 - d6);
+  m = vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f;
+  rx = select(rx, ax + acx * s_ac, m), ry = select(ry, ay + acy * s_ac, m), rt = select(rt, at + act * s_ac, m);
+  m = d6 >= 0.0f && d5 <= d6;
+  rx = select(rx, cx, m), ry = select(ry, cy, m), rt = select(rt, ct, m);
+  const ap_floatv s_ab = d1 / (d1 - d3);
+  m = vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f;
+  rx = select(rx, ax + abx * s_ab, m), ry = select(ry, ay + aby * s_ab, m), rt = select(rt, at + abt * s_ab, m);
+  m = d3 >= 0.0f && d4 <= d3;
+  rx = select(rx, bx, m), ry = select(ry, by, m), rt = select(rt, bt, m);
+  m = d1 <= 0.0f && d2 <= 0.0f;
+  *qx = select(rx, ax, m), *qy = select(ry, ay, m), *qt = select(rt, at, m);
+}
+#endif

@@ -144,26 +144,46 @@ __kernel void grid_order_cells(const GridInfo grid,
 }
 
 /** What the force kernels read per grid slot, copied into sorted order once per rebuild so a cell's
- * triangles are read from consecutive addresses instead of through their ids: owner, centroid and
- * vertices. Copies only: no arithmetic, so the forces stay bit-identical. */
+ * triangles are read from consecutive addresses instead of through their ids: owner and centroid (the
+ * vertices' positions change every step: slot_positions). Copies only: no arithmetic, so the forces stay
+ * bit-identical. */
 __kernel void grid_gather(const GridInfo grid,
                           __global const int* sorted_triangles,                        /* input */
                           __global const int* env_element,                             /* input: per triangle */
-                          __global const int* env_a, __global const int* env_b, __global const int* env_c, /* input */
                           __global const float* cx, __global const float* cy, __global const float* ct, /* input */
                           __global int* slot_element,                                  /* output: per slot */
-                          __global int* slot_a, __global int* slot_b, __global int* slot_c, /* output */
                           __global float* slot_cx, __global float* slot_cy, __global float* slot_ct) { /* output */
   const int k = get_global_id(0);
   if (k >= grid.triangles) return;
   const int tri = sorted_triangles[k];
   slot_element[k] = env_element[tri];
-  slot_a[k] = env_a[tri];
-  slot_b[k] = env_b[tri];
-  slot_c[k] = env_c[tri];
   slot_cx[k] = cx[tri];
   slot_cy[k] = cy[tri];
   slot_ct[k] = ct[tri];
+}
+
+/** Every slot's three vertices at this step's positions, in nine planes (AP_SLOT_*), so that the near
+ * block reads them from consecutive addresses. Run every step, as the grid may be older than the
+ * positions (grid_rebuild_interval); copies only. One work-item per slot. */
+__kernel void slot_positions(const GridInfo grid,
+                             __global const int* sorted_triangles, /* input */
+                             __global const int* env_a, __global const int* env_b, __global const int* env_c,
+                             __global const float* x, __global const float* y, __global const float* t, /* input */
+                             __global float* slot_vertices) {      /* output: nine planes of grid.triangles */
+  const int k = get_global_id(0);
+  const int n = grid.triangles;
+  if (k >= n) return;
+  const int tri = sorted_triangles[k];
+  const int a = env_a[tri], b = env_b[tri], c = env_c[tri];
+  slot_vertices[AP_SLOT_AX * n + k] = x[a];
+  slot_vertices[AP_SLOT_AY * n + k] = y[a];
+  slot_vertices[AP_SLOT_AT * n + k] = t[a];
+  slot_vertices[AP_SLOT_BX * n + k] = x[b];
+  slot_vertices[AP_SLOT_BY * n + k] = y[b];
+  slot_vertices[AP_SLOT_BT * n + k] = t[b];
+  slot_vertices[AP_SLOT_CX * n + k] = x[c];
+  slot_vertices[AP_SLOT_CY * n + k] = y[c];
+  slot_vertices[AP_SLOT_CT * n + k] = t[c];
 }
 
 /** The far field's cell aggregates (grid.cpp, build_far_runs): per cell, each run of slots owned by one

@@ -15,21 +15,60 @@ void repulsion_add_term(float ux, float uy, float ut, float eps, float count, fl
   *st = *st + ut * w;
 }
 
-/** Exact term of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`. */
+/** Exact term of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`. Built
+ * for a CPU, AP_LANES slots at a time (closest_point_on_triangles), each lane's term then added in slot
+ * order: the same float operations as the one-slot loop, which takes the rest of the range (all of it
+ * on a GPU), and as the reference. */
 void repulsion_near_range(int2 range, int own, float px, float py, float pt, float eps,
-                          __global const int* slot_element, __global const int* slot_a, __global const int* slot_b,
-                          __global const int* slot_c, __global const float* x, __global const float* y,
-                          __global const float* t, float* sx, float* sy, float* st, float* closest2) {
-  for (int k = range.x; k < range.y; ++k) {
-    if (slot_element[k] == own) continue;
-    const int a = slot_a[k], b = slot_b[k], c = slot_c[k];
-    float qpx, qpy, qpt;
-    closest_point_on_triangle(px, py, pt, x[a], y[a], t[a], x[b], y[b], t[b], x[c], y[c], t[c], &qpx, &qpy, &qpt);
-    const float ux = px - qpx, uy = py - qpy, ut = pt - qpt;
-    const float d2 = ux * ux + uy * uy + ut * ut;
-    if (d2 < *closest2) *closest2 = d2;
-    repulsion_add_term(ux, uy, ut, eps, 1.0f, sx, sy, st);
+                          __global const int* slot_element, __global const float* slot_vertices, int slots, float* sx,
+                          float* sy, float* st, float* closest2) {
+  __global const float* ax = slot_vertices + AP_SLOT_AX * slots;
+  __global const float* ay = slot_vertices + AP_SLOT_AY * slots;
+  __global const float* at = slot_vertices + AP_SLOT_AT * slots;
+  __global const float* bx = slot_vertices + AP_SLOT_BX * slots;
+  __global const float* by = slot_vertices + AP_SLOT_BY * slots;
+  __global const float* bt = slot_vertices + AP_SLOT_BT * slots;
+  __global const float* cx = slot_vertices + AP_SLOT_CX * slots;
+  __global const float* cy = slot_vertices + AP_SLOT_CY * slots;
+  __global const float* ct = slot_vertices + AP_SLOT_CT * slots;
+  float sum_x = *sx, sum_y = *sy, sum_t = *st, c2 = *closest2;
+  int k = range.x;
+#ifdef AP_LANES
+  for (; k + AP_LANES <= range.y; k += AP_LANES) {
+    const ap_intv own_lane = ap_vloadi(0, slot_element + k) == own;
+    if (all(own_lane)) continue;
+    ap_floatv qx, qy, qt;
+    closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
+                               ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k), ap_vloadf(0, cx + k),
+                               ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
+    const ap_floatv ux = px - qx, uy = py - qy, ut = pt - qt;
+    const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
+    /* repulsion_add_term's weight with count 1; lanes with d2 = 0 (inf, NaN here) are skipped below. */
+    const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
+    const ap_floatv wx = ux * w, wy = uy * w, wt = ut * w;
+#define AP_NEAR_LANE(j)                   \
+  if (!own_lane.s##j) {                   \
+    if (d2.s##j < c2) c2 = d2.s##j;       \
+    if (d2.s##j > 0.0f) {                 \
+      sum_x = sum_x + wx.s##j;            \
+      sum_y = sum_y + wy.s##j;            \
+      sum_t = sum_t + wt.s##j;            \
+    }                                     \
   }
+    AP_FOR_LANES(AP_NEAR_LANE)
+#undef AP_NEAR_LANE
+  }
+#endif
+  for (; k < range.y; ++k) {
+    if (slot_element[k] == own) continue;
+    float qx, qy, qt;
+    closest_point_on_triangle(px, py, pt, ax[k], ay[k], at[k], bx[k], by[k], bt[k], cx[k], cy[k], ct[k], &qx, &qy, &qt);
+    const float ux = px - qx, uy = py - qy, ut = pt - qt;
+    const float d2 = ux * ux + uy * uy + ut * ut;
+    if (d2 < c2) c2 = d2;
+    repulsion_add_term(ux, uy, ut, eps, 1.0f, &sum_x, &sum_y, &sum_t);
+  }
+  *sx = sum_x, *sy = sum_y, *st = sum_t, *closest2 = c2;
 }
 
 /** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
@@ -67,7 +106,7 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                         __global const int* slice,               /* input: per vertex */
                         __global const int* cell_start,          /* input: cells + 1 */
                         __global const int* slot_element,        /* input: per grid slot (grid_gather) */
-                        __global const int* slot_a, __global const int* slot_b, __global const int* slot_c,
+                        __global const float* slot_vertices,     /* input: per grid slot (grid_gather) */
                         __global const float* slot_cx, __global const float* slot_cy, __global const float* slot_ct,
                         __global const int* run_next,            /* input: per grid slot (grid_runs) */
                         __global const float* run_cx, __global const float* run_cy, __global const float* run_ct,
@@ -106,7 +145,7 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       repulsion_near_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
-                           slot_element, slot_a, slot_b, slot_c, x, y, t, &sx, &sy, &st, &closest2);
+                           slot_element, slot_vertices, grid.triangles, &sx, &sy, &st, &closest2);
   for (int dz = -2; dz <= 2; ++dz) {
     for (int dy = -2; dy <= 2; ++dy) {
       if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */

@@ -44,6 +44,17 @@ typedef float ap_float;
 /* Cells per block of the device-side grid scan (grid.cl). */
 #define AP_SCAN_BLOCK 64
 
+/* The planes of the grid's slot_vertices buffer (grid_gather): plane p of slot k is at p * triangles + k. */
+#define AP_SLOT_AX 0
+#define AP_SLOT_AY 1
+#define AP_SLOT_AT 2
+#define AP_SLOT_BX 3
+#define AP_SLOT_BY 4
+#define AP_SLOT_BT 5
+#define AP_SLOT_CX 6
+#define AP_SLOT_CY 7
+#define AP_SLOT_CT 8
+
 /* The collision grid (reference::CollisionGrid without its arrays), passed to every grid kernel. */
 typedef struct {
   ap_int n;              /* cells per axis */

@@ -93,6 +93,20 @@ TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its l
   CHECK(broken.log.find("temporal.cl") != std::string::npos);
 }
 
+TEST_CASE("device_build_options: CPU devices take the near block in 16 lanes, GPUs one slot at a time", "[opencl]") {
+  const std::vector<DeviceChoice> devices = devices_under_test();
+  if (skip_without_devices(devices)) return;
+  for (const DeviceChoice& d : devices) {
+    const cl::Device device = opencl::device_for(d.device);
+    cl_device_type type = 0;
+    device.getInfo(CL_DEVICE_TYPE, &type);
+    const std::string options = opencl::device_build_options(device);
+    INFO(d.device.name << ": " << options);
+    CHECK(options.rfind(opencl::build_options, 0) == 0);
+    CHECK((options.find("-DAP_NEAR_LANES=16") != std::string::npos) == ((type & CL_DEVICE_TYPE_CPU) != 0));
+  }
+}
+
 TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and line") {
   // NVIDIA's compiler ignores #line and reports "<kernel>:LINE" over the whole program; the host turns
   // that into the file and line a developer edits. Find where temporal.cl starts in the program.

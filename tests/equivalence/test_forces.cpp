@@ -186,6 +186,62 @@ TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "degenerate");
 }
 
+// The longest run of consecutive grid slots that one boundary vertex's near block walks in one row
+// (three cells in x) while holding another element's triangle: the kernel takes such runs AP_LANES
+// slots at a time (closest_point_on_triangles in kernels/closest_point.cl).
+std::int32_t longest_near_row(const World& w, const Params& params) {
+  const reference::CollisionGrid g = reference::build_collision_grid(w.topo, w.state, params);
+  std::int32_t longest = 0;
+  for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+    if ((w.topo.flags[v] & vertex_boundary) == 0) continue;
+    const std::int32_t qx = reference::grid_axis_cell(w.state.x[v], g.cell, g.n);
+    const std::int32_t qy = reference::grid_axis_cell(w.state.y[v], g.cell, g.n);
+    const std::int32_t qt = reference::grid_axis_cell(w.state.t[v], g.cell, g.n);
+    for (std::int32_t dz = -1; dz <= 1; ++dz) for (std::int32_t dy = -1; dy <= 1; ++dy) {
+      const std::int32_t cy = qy + dy, ct = qt + dz;
+      if (cy < 0 || ct < 0 || cy >= g.n || ct >= g.n) continue;
+      const std::int32_t x0 = std::max(qx - 1, 0), x1 = std::min(qx + 1, g.n - 1);
+      const std::int32_t row = (ct * g.n + cy) * g.n;
+      bool other = false;
+      for (std::int32_t k = g.cell_start[row + x0]; k < g.cell_start[row + x1 + 1]; ++k)
+        other = other || w.topo.env_element[g.sorted_triangles[k]] != w.topo.element[v];
+      if (other) longest = std::max(longest, g.cell_start[row + x1 + 1] - g.cell_start[row + x0]);
+    }
+  }
+  return longest;
+}
+
+TEST_CASE("forces: near rows long enough for the kernel's lanes, with slivers and repeated points", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  // Five jittered 24-gons around one point, on eleven slices each (two of them 1e-7 apart), some points
+  // repeated and some rings nearly collinear: rows of dozens of slots, every Voronoi region of the
+  // closest-point test among them, and triangles degenerate enough that the face region fails.
+  std::mt19937 rng(7);
+  auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+  WorldBuilder b;
+  for (int e = 0; e < 5; ++e) {
+    const float cx = 0.5f + uniform(-0.04f, 0.04f), cy = 0.5f + uniform(-0.04f, 0.04f);
+    const float squash = e == 3 ? 1e-4f : 1.0f;  // a sliver ring
+    std::vector<TinySlice> slices;
+    for (int s = 0; s <= 10; ++s) {
+      TinySlice sl;
+      sl.t = s == 6 ? slices.back().t + 1e-7f : std::min(1.0f, 0.1f * float(s) + uniform(0.0f, 0.01f));
+      for (int i = 0; i < 24; ++i) {
+        const float a = 6.2831853f * float(i) / 24.0f, r = uniform(0.02f, 0.05f);
+        sl.ring.push_back({cx + r * std::cos(a), cy + squash * r * std::sin(a)});
+        if (i % 7 == 3) sl.ring.push_back(sl.ring.back());  // a zero-length edge
+      }
+      slices.push_back(sl);
+    }
+    b.add_element(slices);
+  }
+  const World w = finish(b);
+  for (const Params& params : {Params{}, paper_params()}) {
+    REQUIRE(longest_near_row(w, params) >= 64);
+    check_forces(w, params, "lanes");
+  }
+}
+
 TEST_CASE("forces: elements touching the container and a hole", "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;

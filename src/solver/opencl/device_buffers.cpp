@@ -54,7 +54,7 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.cell_start = scratch(sizeof(std::int32_t) * (static_cast<std::size_t>(grid.cells) + 1), "cell_start");
   w.sorted = scratch(it, "sorted_triangles");
   w.slot_element = scratch(it, "slot_element");
-  w.slot_a = scratch(it, "slot_a"), w.slot_b = scratch(it, "slot_b"), w.slot_c = scratch(it, "slot_c");
+  w.slot_vertices = scratch(9 * ft, "slot_vertices");  // nine planes: a.x, a.y, a.t, b.x, …, c.t
   w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
   w.run_next = scratch(it, "run_next");
   w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");

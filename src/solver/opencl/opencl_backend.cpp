@@ -98,6 +98,7 @@ class DeviceBackend final : public OpenclBackend {
   void step() override {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
+    timed(times_.grid, slot_positions_.run(queue_, grid_.triangles));
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
     timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
     build_overlap_grid();
@@ -167,6 +168,7 @@ class DeviceBackend final : public OpenclBackend {
     WorldInfo world = world_;
     world.breakdown = out != nullptr ? 1 : 0;
     forces_.set(0, world);
+    slot_positions_.run(queue_, grid_.triangles);
     slice_centroids_.run(queue_, world_.slices);
     slice_boxes_.run(queue_, world_.slices);
     build_overlap_grid();
@@ -296,8 +298,10 @@ class DeviceBackend final : public OpenclBackend {
     grid_order_ = Kernel(program, "grid_order_cells");
     grid_order_.bind(grid_, w.cell_start, w.sorted);
     grid_gather_ = Kernel(program, "grid_gather");
-    grid_gather_.bind(grid_, w.sorted, b.env_element, b.env_a, b.env_b, b.env_c, w.env_cx, w.env_cy, w.env_ct,
-                      w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct);
+    grid_gather_.bind(grid_, w.sorted, b.env_element, w.env_cx, w.env_cy, w.env_ct, w.slot_element, w.slot_cx,
+                      w.slot_cy, w.slot_ct);
+    slot_positions_ = Kernel(program, "slot_positions");
+    slot_positions_.bind(grid_, w.sorted, b.env_a, b.env_b, b.env_c, x_, y_, t_, w.slot_vertices);
     grid_runs_ = Kernel(program, "grid_runs");
     grid_runs_.bind(grid_, w.cell_start, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx,
                     w.run_cy, w.run_ct);
@@ -315,7 +319,7 @@ class DeviceBackend final : public OpenclBackend {
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ =
         repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
-                        w.cell_start, w.slot_element, w.slot_a, w.slot_b, w.slot_c, w.slot_cx, w.slot_cy, w.slot_ct,
+                        w.cell_start, w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct,
                         w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
                         b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, b.element_secondary,
                         w.rpl_x, w.rpl_y, w.rpl_t,
@@ -512,7 +516,7 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_,
+      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_,
       constraints_, loop_, containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;

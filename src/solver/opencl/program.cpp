@@ -98,17 +98,28 @@ std::string annotate_build_log(const std::string& log, const std::string& source
   return out;
 }
 
+std::string device_build_options(const cl::Device& device) {
+  cl_device_type type = 0;
+  check(device.getInfo(CL_DEVICE_TYPE, &type), "clGetDeviceInfo(CL_DEVICE_TYPE)");
+  // A CPU compiler puts the 16 lanes in SIMD registers; a GPU already runs one work-item per lane,
+  // where 16 lanes per work-item would only multiply its registers.
+  std::string options = build_options;
+  if ((type & CL_DEVICE_TYPE_CPU) != 0) options += " -DAP_NEAR_LANES=16";
+  return options;
+}
+
 cl::Program build_program(const cl::Context& context, const cl::Device& device) {
   cl_int err = CL_SUCCESS;
   const std::string source = program_source();
   cl::Program program(context, source, false, &err);
   check(err, "clCreateProgramWithSource");
-  const cl_int built = program.build(std::vector<cl::Device>{device}, build_options);
+  const std::string options = device_build_options(device);
+  const cl_int built = program.build(std::vector<cl::Device>{device}, options.c_str());
   if (built != CL_SUCCESS) {
     std::string log, name;
     device.getInfo(CL_DEVICE_NAME, &name);
     program.getBuildInfo(device, CL_PROGRAM_BUILD_LOG, &log);
-    throw OpenclError("clBuildProgram", built, "device " + name + ", options " + build_options,
+    throw OpenclError("clBuildProgram", built, "device " + name + ", options " + options,
                       annotate_build_log(log, source));
   }
   return program;
