@@ -87,6 +87,15 @@ typedef int16 ap_intv;
 #define ap_vloadi(k, p) vload16((k), (p))
 #define AP_FOR_LANES(M) M(0) M(1) M(2) M(3) M(4) M(5) M(6) M(7) M(8) M(9) M(a) M(b) M(c) M(d) M(e) M(f)
 
+/** How many lanes of a comparison's result are set (-1). */
+int ap_lane_count(ap_intv m) {
+  const int16 c = m & 1;
+  const int8 c8 = c.lo + c.hi;
+  const int4 c4 = c8.lo + c8.hi;
+  const int2 c2 = c4.lo + c4.hi;
+  return c2.x + c2.y;
+}
+
 /** closest_point_on_triangle for AP_LANES triangles at once. */
 void closest_point_on_triangles(float px, float py, float pt, ap_floatv ax, ap_floatv ay, ap_floatv at, ap_floatv bx,
                                 ap_floatv by, ap_floatv bt, ap_floatv cx, ap_floatv cy, ap_floatv ct, ap_floatv* qx,

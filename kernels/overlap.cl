@@ -139,7 +139,35 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
     /* The even-odd test, and the crossing test until one is found and only where the edges' boxes
      * meet; the way out (the nearest point of the outline) in a second walk, for a point inside only. */
     bool inside = false, crosses = false;
-    for (int i = 0; i < edges; ++i) {
+    int i = 0;
+#ifdef AP_LANES
+    /* Built for a CPU: AP_LANES edges at a time while the last one's end does not wrap to vertex 0.
+     * Each lane does the scalar test's float operations; the parity and the crossing are a count and
+     * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
+     * lanes"). */
+    for (; i + AP_LANES < edges; i += AP_LANES) {
+      const ap_floatv xa = ap_vloadf(0, x + lo + i), ya = ap_vloadf(0, y + lo + i);
+      const ap_floatv xb = ap_vloadf(0, x + lo + i + 1), yb = ap_vloadf(0, y + lo + i + 1);
+      const ap_floatv ax = xa + (ap_vloadf(0, x + hi + i) - xa) * w, ay = ya + (ap_vloadf(0, y + hi + i) - ya) * w;
+      const ap_floatv bx = xb + (ap_vloadf(0, x + hi + i + 1) - xb) * w,
+                      by = yb + (ap_vloadf(0, y + hi + i + 1) - yb) * w;
+      /* ray_crosses_segment */
+      const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
+      inside = inside != ((ap_lane_count(ray) & 1) != 0);
+      if (crosses) continue;
+      /* ap_max / ap_min as select, then segments_cross */
+      const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
+                          select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
+      const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+      const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
+      const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
+      const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
+      const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
+                            ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
+      crosses = any(box && cross);
+    }
+#endif
+    for (; i < edges; ++i) {
       float ax, ay, bx, by;
       overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;

@@ -211,11 +211,12 @@ std::int32_t longest_near_row(const World& w, const Params& params) {
   return longest;
 }
 
-TEST_CASE("forces: near rows long enough for the kernel's lanes, with slivers and repeated points", "[equivalence][opencl]") {
+TEST_CASE("forces: near rows and outlines long enough for the kernel's lanes, with slivers and repeated points", "[equivalence][opencl]") {
   if (!have_devices()) return;
   // Five jittered 24-gons around one point, on eleven slices each (two of them 1e-7 apart), some points
-  // repeated and some rings nearly collinear: rows of dozens of slots, every Voronoi region of the
-  // closest-point test among them, and triangles degenerate enough that the face region fails.
+  // repeated and one ring nearly collinear: rows of dozens of slots, every Voronoi region of the
+  // closest-point test among them, and triangles degenerate enough that the face region fails; and
+  // overlapping outlines of 27 edges, which the overlap test's walk takes 16 at a time.
   std::mt19937 rng(7);
   auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
   WorldBuilder b;
@@ -238,7 +239,9 @@ TEST_CASE("forces: near rows long enough for the kernel's lanes, with slivers an
   const World w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) {
     REQUIRE(longest_near_row(w, params) >= 64);
-    check_forces(w, params, "lanes");
+    const Coverage c = check_forces(w, params, "lanes");
+    CHECK(c.inside > 0);
+    CHECK(c.crossing > 0);
   }
 }
 
