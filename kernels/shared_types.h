@@ -44,7 +44,7 @@ typedef float ap_float;
 /* Cells per block of the device-side grid scan (grid.cl). */
 #define AP_SCAN_BLOCK 64
 
-/* The planes of the grid's slot_vertices buffer (grid_gather): plane p of slot k is at p * triangles + k. */
+/* The planes of the slot_vertices buffer (grid.cl, slot_positions): plane p of slot k is at p * triangles + k. */
 #define AP_SLOT_AX 0
 #define AP_SLOT_AY 1
 #define AP_SLOT_AT 2

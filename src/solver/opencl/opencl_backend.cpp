@@ -516,8 +516,8 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_, integrate_,
-      constraints_, loop_, containment_, propose_growth_, grow_, rest_lengths_, statistics_;
+      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_,
+      integrate_, constraints_, loop_, containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
   reference::SliceBoxes boxes_;
