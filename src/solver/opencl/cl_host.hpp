@@ -38,7 +38,7 @@ DeviceChoice default_device(const std::vector<DeviceInfo>& devices);
 /// The cl::Device described by `info` (same platform and device name). OpenclError when gone.
 cl::Device device_for(const DeviceInfo& info);
 
-/// The options for one device: build_options, and on a CPU device the near block in 16 lanes
+/// The options for one device: build_options, and on a CPU device (not also a GPU) the near block in 16 lanes
 /// (AP_NEAR_LANES, kernels/repulsion.cl; docs/architecture.md, "The near block in lanes").
 std::string device_build_options(const cl::Device& device);
 
