@@ -31,6 +31,9 @@ struct CollisionGrid {
   std::vector<std::int32_t> triangle_cell; ///< linear cell of envelope triangle i
   std::vector<std::int32_t> cell_start;    ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
   std::vector<std::int32_t> sorted_triangles;  ///< triangle ids, by cell, increasing id within a cell
+  /// The element of each slot: env_element[sorted_triangles[k]], laid out in slot order (the kernels'
+  /// slot_element), so the cell walks test ownership from one array instead of through two.
+  std::vector<std::int32_t> slot_element;
   /// The far field's cell aggregates (docs/parameters.md, "Far field"): a run is the slots of one cell
   /// that belong to one element (consecutive, since ids are element-major). For a run's first slot k,
   /// run_next[k] is one past its last slot and run_cx/cy/ct[k] the mean of its centroids (summed in slot
@@ -52,22 +55,27 @@ Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_
 
 CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params);
 
-/// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct) and sets far_cells;
-/// build_collision_grid calls it when params.far_cells is 1, and a device backend's read-back grid too.
-void build_far_runs(const Topology& topo, CollisionGrid& grid);
+/// Fills slot_element of a grid whose sorted_triangles are set; build_collision_grid calls it, and a
+/// device backend's read-back grid too.
+void fill_slot_elements(const Topology& topo, CollisionGrid& grid);
+
+/// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct; slot_element must be filled) and
+/// sets far_cells; build_collision_grid calls it when params.far_cells is 1, and a device backend's
+/// read-back grid too.
+void build_far_runs(CollisionGrid& grid);
 
 /// Envelope triangles of elements other than `own_element` whose centroids lie in the 3×3×3 block of
 /// cells around q's cell ("near"), or in the 98 cells of the outer shell of the 5×5×5 block ("far").
 /// Cells outside the grid are skipped. Order: cells by dz, dy, dx ascending, then sorted order within
 /// a cell. `out` is cleared first.
-void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                     std::vector<std::int32_t>& out);
-void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out);
 
 /// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
 /// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
-void far_slots(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                std::vector<std::int32_t>& out);
 
 // ---- geometry helpers ---------------------------------------------------------------------------------

@@ -15,7 +15,8 @@ void check_grid(const World& w, const Params& params, const std::string& label) 
         bit_difference("centroid x", ref.cx, dev.cx) + bit_difference("centroid y", ref.cy, dev.cy) +
         bit_difference("centroid t", ref.ct, dev.ct) + bit_difference("triangle_cell", ref.triangle_cell, dev.triangle_cell) +
         bit_difference("cell_start", ref.cell_start, dev.cell_start) +
-        bit_difference("sorted_triangles", ref.sorted_triangles, dev.sorted_triangles);
+        bit_difference("sorted_triangles", ref.sorted_triangles, dev.sorted_triangles) +
+        bit_difference("slot_element", ref.slot_element, dev.slot_element);
     INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
     CHECK(diff.empty());
   }

@@ -107,6 +107,7 @@ TEST_CASE("grid: the counting sort is a stable permutation with correct cell ran
     REQUIRE(g.cell_start.size() == std::size_t(25 * 25 * 25 + 1));
     CHECK(g.cell_start.front() == 0);
     CHECK(g.cell_start.back() == triangles);
+    REQUIRE(g.slot_element.size() == std::size_t(triangles));
     std::vector<std::int32_t> seen = g.sorted_triangles;
     std::sort(seen.begin(), seen.end());
     for (int i = 0; i < triangles; ++i) CHECK(seen[i] == i);
@@ -115,6 +116,7 @@ TEST_CASE("grid: the counting sort is a stable permutation with correct cell ran
       for (std::int32_t k = g.cell_start[c]; k < g.cell_start[c + 1]; ++k) {
         const std::int32_t tri = g.sorted_triangles[k];
         CHECK(g.triangle_cell[tri] == std::int32_t(c));
+        CHECK(g.slot_element[k] == w.topo.env_element[tri]);
         CHECK(cell_of(g, envelope_centroid(w.topo, w.state, tri)) == std::int32_t(c));
         if (k > g.cell_start[c]) CHECK(g.sorted_triangles[k - 1] < tri);
       }
@@ -136,8 +138,8 @@ TEST_CASE("grid: near and far queries equal brute force on random worlds") {
         const Vec3f q{special_or_random(rng), special_or_random(rng), special_or_random(rng)};
         const std::int32_t own = std::uniform_int_distribution<int>(0, 3)(rng);  // 3: owns nothing
         INFO("cell " << cell << " world " << world << " q " << q.x << ", " << q.y << ", " << q.t);
-        near_triangles(g, w.topo, q, own, near);
-        far_triangles(g, w.topo, q, own, far);
+        near_triangles(g, q, own, near);
+        far_triangles(g, q, own, far);
         CHECK(near == brute(w, g, q, own, 0, 1));
         CHECK(far == brute(w, g, q, own, 2, 2));
       }
@@ -196,8 +198,8 @@ TEST_CASE("grid: far slots are the far triangles' slots, or one run head per cel
       const Vec3f q{special_or_random(rng), special_or_random(rng), special_or_random(rng)};
       const std::int32_t own = std::uniform_int_distribution<int>(0, 3)(rng);
       INFO("mode " << cells_mode << " q " << q.x << ", " << q.y << ", " << q.t << " own " << own);
-      far_triangles(g, w.topo, q, own, far);
-      far_slots(g, w.topo, q, own, slots);
+      far_triangles(g, q, own, far);
+      far_slots(g, q, own, slots);
       if (cells_mode == 0) {
         std::vector<std::int32_t> as_triangles;
         for (const std::int32_t k : slots) as_triangles.push_back(g.sorted_triangles[k]);

@@ -33,8 +33,8 @@ struct Query {
 Query query(const test::World& w, const CollisionGrid& g, std::int32_t v) {
   Query q;
   const Vec3f p{w.state.x[v], w.state.y[v], w.state.t[v]};
-  near_triangles(g, w.topo, p, w.topo.element[v], q.near);
-  far_slots(g, w.topo, p, w.topo.element[v], q.far);
+  near_triangles(g, p, w.topo.element[v], q.near);
+  far_slots(g, p, w.topo.element[v], q.far);
   return q;
 }
 

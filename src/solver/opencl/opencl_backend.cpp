@@ -221,9 +221,10 @@ class DeviceBackend final : public OpenclBackend {
       read(w.cell_start, g.cell_start, "cell_start", true);
     }
     pending_.clear();
+    reference::fill_slot_elements(topo_, g);
     // The runs are the reference's own, from the arrays just read (the equivalence suite compares the
     // forces they give, not the buffers).
-    if (grid_.far_cells != 0) reference::build_far_runs(topo_, g);
+    if (grid_.far_cells != 0) reference::build_far_runs(g);
     return g;
   }
 

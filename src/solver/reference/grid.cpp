@@ -48,11 +48,17 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
     g.triangle_cell[i] = (it * g.n + iy) * g.n + ix;
   }
   counting_sort(g.triangle_cell, cells, g.cell_start, g.sorted_triangles);
-  if (params.far_cells != 0) build_far_runs(topo, g);
+  fill_slot_elements(topo, g);
+  if (params.far_cells != 0) build_far_runs(g);
   return g;
 }
 
-void build_far_runs(const Topology& topo, CollisionGrid& g) {
+void fill_slot_elements(const Topology& topo, CollisionGrid& g) {
+  g.slot_element.resize(g.sorted_triangles.size());
+  for (std::size_t k = 0; k < g.sorted_triangles.size(); ++k) g.slot_element[k] = topo.env_element[g.sorted_triangles[k]];
+}
+
+void build_far_runs(CollisionGrid& g) {
   const std::size_t slots = g.sorted_triangles.size();
   g.far_cells = true;
   g.run_next.assign(slots, 0);
@@ -61,10 +67,10 @@ void build_far_runs(const Topology& topo, CollisionGrid& g) {
   for (std::int32_t c = 0; c < cells; ++c) {
     const std::int32_t end = g.cell_start[c + 1];
     for (std::int32_t head = g.cell_start[c]; head < end;) {
-      const std::int32_t owner = topo.env_element[g.sorted_triangles[head]];
+      const std::int32_t owner = g.slot_element[head];
       float sx = 0.0f, sy = 0.0f, st = 0.0f;
       std::int32_t k = head;
-      for (; k < end && topo.env_element[g.sorted_triangles[k]] == owner; ++k) {
+      for (; k < end && g.slot_element[k] == owner; ++k) {
         const std::int32_t tri = g.sorted_triangles[k];
         sx = sx + g.cx[tri];
         sy = sy + g.cy[tri];
@@ -101,36 +107,35 @@ void for_block_cells(const CollisionGrid& grid, Vec3f q, std::int32_t r, std::in
 }
 
 // The triangles of other elements in those cells, in sorted order within a cell.
-void collect(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void collect(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
              std::int32_t r, std::int32_t min_ring, std::vector<std::int32_t>& out) {
   out.clear();
   for_block_cells(grid, q, r, min_ring, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
-      const std::int32_t tri = grid.sorted_triangles[k];
-      if (topo.env_element[tri] != own_element) out.push_back(tri);
+      if (grid.slot_element[k] != own_element) out.push_back(grid.sorted_triangles[k]);
     }
   });
 }
 
 }  // namespace
 
-void near_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                     std::vector<std::int32_t>& out) {
-  collect(grid, topo, q, own_element, 1, 0, out);
+  collect(grid, q, own_element, 1, 0, out);
 }
 
-void far_triangles(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out) {
-  collect(grid, topo, q, own_element, 2, 2, out);
+  collect(grid, q, own_element, 2, 2, out);
 }
 
-void far_slots(const CollisionGrid& grid, const Topology& topo, Vec3f q, std::int32_t own_element,
+void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                std::vector<std::int32_t>& out) {
   out.clear();
   for_block_cells(grid, q, 2, 2, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {
       const std::int32_t next = grid.far_cells ? grid.run_next[k] : k + 1;
-      if (topo.env_element[grid.sorted_triangles[k]] != own_element) out.push_back(k);
+      if (grid.slot_element[k] != own_element) out.push_back(k);
       k = next;
     }
   });
