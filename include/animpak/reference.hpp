@@ -13,6 +13,7 @@
 #include <limits>
 #include <vector>
 
+#include "animpak/closest_point.hpp"
 #include "animpak/element.hpp"
 #include "animpak/params.hpp"
 #include "animpak/simulation.hpp"
@@ -80,9 +81,7 @@ void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
 
 // ---- geometry helpers ---------------------------------------------------------------------------------
 
-/// Closest point to p on triangle abc in (x, y, t): Ericson, Real-Time Collision Detection §5.1.5.
-/// closest_point.cpp.
-Vec3f closest_point_on_triangle(Vec3f p, Vec3f a, Vec3f b, Vec3f c);
+// closest_point_on_triangle(p, a, b, c): animpak/closest_point.hpp (inline).
 
 /// Closest point (*qx, *qy) to (px, py) on segment ab in x, y: the projection onto the line, clamped to
 /// the segment (a for a zero-length one); returns the squared distance. The container's wall and the
