@@ -7,12 +7,17 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "animpak/render.hpp"  // PackingQuality, plain structs: declaring it links nothing from animpak_render
 #include "bench_report.hpp"
 
 namespace animpak::cli {
+
+/// The commit this program was built from, read at build time (cmake/Commit.cmake): an abbreviated hash,
+/// with "-dirty" when tracked files had uncommitted changes, or "unknown" outside a git checkout.
+std::string_view build_commit();
 
 // inspect, check and render draw, so only `animpak` defines them (inspect.cpp, check.cpp, render_commands.cpp).
 struct InspectOptions {

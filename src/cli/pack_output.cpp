@@ -183,7 +183,7 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
   for (const NamedPhase& phase : phase_fields) seconds[phase.name] = r.times.*phase.seconds;
   json stats = {
       {"animpak", "0.1.0"},
-      {"commit", ANIMPAK_COMMIT},
+      {"commit", build_commit()},
       {"scene", r.checkpoint.scene_file.string()},
       {"seed", r.checkpoint.seed},
       {"device", r.device},
@@ -220,7 +220,7 @@ bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& c
              {"stop_reason", checkpoint.stop_reason}};
   }
   set_quality(stats, world, quality);
-  stats["rendered_by"] = ANIMPAK_COMMIT;
+  stats["rendered_by"] = build_commit();
   write_json(file, stats);
   return true;
 }

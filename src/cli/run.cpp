@@ -24,7 +24,7 @@ int run(int argc, char** argv) {
   const std::unique_ptr<Frontend> frontend = make_frontend();
   const std::string program = frontend->name();
   CLI::App app{frontend->description(), program};
-  app.set_version_flag("--version", program + " 0.1.0");
+  app.set_version_flag("--version", program + " 0.1.0 (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
              "that differs from the reference.");

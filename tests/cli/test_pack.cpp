@@ -138,6 +138,8 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
   const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
   CHECK(stats["iterations"] == 20);
   CHECK(stats["stop_reason"] == "max_iterations");
+  // The commit that --version names, so that the run can be reproduced from it.
+  CHECK_THAT(run_animpak("--version").out, Contains("(commit " + stats["commit"].get<std::string>() + ")"));
   for (const char* phase : {"setup", "simulation", "grid", "forces", "integrate", "constraints", "loop", "growth"}) {
     INFO(phase);
     REQUIRE(stats["seconds"].contains(phase));
