@@ -1,7 +1,8 @@
 /* Repulsion, paper Eq. 1 (src/solver/reference/repulsion.cpp): k_rpl Σ u/|u| · 1/(ε + |u|²) over the
- * exact closest points on the near envelope triangles of other elements, then the centroids of the
- * far ones (or their cells' aggregates, grid_runs), in the grid's visiting order (cells by dz, dy, dx
- * ascending, sorted order within a cell), and the overlap test of Eq. 3 (overlap.cl). */
+ * exact closest points on the near envelope triangles of other elements, in four partial sums by grid
+ * slot mod 4, then the centroids of the far ones (or their cells' aggregates, grid_runs), in the grid's
+ * visiting order (cells by dz, dy, dx ascending, sorted order within a cell), and the overlap test of
+ * Eq. 3 (overlap.cl). docs/architecture.md, "The twin rule", gives the order. */
 
 /** One term of Eq. 1, `count` times (a far-field run stands for count triangles; 1 is exact); a point
  * exactly at x has no direction and adds nothing. */
@@ -15,13 +16,29 @@ void repulsion_add_term(float ux, float uy, float ut, float eps, float count, fl
   *st = *st + ut * w;
 }
 
-/** Exact term of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`. Built
- * for a CPU, AP_LANES slots at a time (closest_point_on_triangles), each lane's term then added in slot
- * order: the same float operations as the one-slot loop, which takes the rest of the range (all of it
- * on a GPU), and as the reference. */
+/** One exact near term of Eq. 1, added to partial sum k mod 4 of (*ax, *ay, *at) (repulsion.cpp); the
+ * other three partials get +0, which leaves them as they are (they start at +0 and never become −0). */
+void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float4* ax, float4* ay, float4* at) {
+  const float d2 = ux * ux + uy * uy + ut * ut;
+  if (!(d2 > 0.0f)) return;
+  const float inv_len = 1.0f / sqrt(d2);
+  const float w = inv_len * (1.0f / (eps + d2)) * 1.0f;
+  const int4 mine = (int4)(0, 1, 2, 3) == (int4)(k & 3);
+  *ax = *ax + select((float4)(0.0f), (float4)(ux * w), mine);
+  *ay = *ay + select((float4)(0.0f), (float4)(uy * w), mine);
+  *at = *at + select((float4)(0.0f), (float4)(ut * w), mine);
+}
+
+/** Exact terms of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`, each
+ * added to partial sum (slot mod 4) of (*ax, *ay, *at), in slot order within each partial. Built for a
+ * CPU, AP_LANES slots at a time (closest_point_on_triangles): the partials are turned so that lane j
+ * holds partial (range.x + j) mod 4, and each group adds its lanes 0-3, 4-7, 8-11, 12-15 in that order
+ * (slot order within every partial). Lanes of the own element, or with d2 = 0 (w inf, NaN), add +0
+ * instead of being skipped. The same float operations as the one-slot loop, which takes the rest of the
+ * range (all of it on a GPU), and as the reference. */
 void repulsion_near_range(int2 range, int own, float px, float py, float pt, float eps,
-                          __global const int* slot_element, __global const float* slot_vertices, int slots, float* sx,
-                          float* sy, float* st, float* closest2) {
+                          __global const int* slot_element, __global const float* slot_vertices, int slots,
+                          float4* ax_sum, float4* ay_sum, float4* at_sum, float* closest2) {
   __global const float* ax = slot_vertices + AP_SLOT_AX * slots;
   __global const float* ay = slot_vertices + AP_SLOT_AY * slots;
   __global const float* at = slot_vertices + AP_SLOT_AT * slots;
@@ -31,32 +48,40 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
   __global const float* cx = slot_vertices + AP_SLOT_CX * slots;
   __global const float* cy = slot_vertices + AP_SLOT_CY * slots;
   __global const float* ct = slot_vertices + AP_SLOT_CT * slots;
-  float sum_x = *sx, sum_y = *sy, sum_t = *st, c2 = *closest2;
+  float4 sum_x = *ax_sum, sum_y = *ay_sum, sum_t = *at_sum;
+  float c2 = *closest2;
   int k = range.x;
 #ifdef AP_LANES
-  for (; k + AP_LANES <= range.y; k += AP_LANES) {
-    const ap_intv own_lane = ap_vloadi(0, slot_element + k) == own;
-    if (all(own_lane)) continue;
-    ap_floatv qx, qy, qt;
-    closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
-                               ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k), ap_vloadf(0, cx + k),
-                               ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
-    const ap_floatv ux = px - qx, uy = py - qy, ut = pt - qt;
-    const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
-    /* repulsion_add_term's weight with count 1; lanes with d2 = 0 (inf, NaN here) are skipped below. */
-    const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
-    const ap_floatv wx = ux * w, wy = uy * w, wt = ut * w;
-#define AP_NEAR_LANE(j)                   \
-  if (!own_lane.s##j) {                   \
-    if (d2.s##j < c2) c2 = d2.s##j;       \
-    if (d2.s##j > 0.0f) {                 \
-      sum_x = sum_x + wx.s##j;            \
-      sum_y = sum_y + wy.s##j;            \
-      sum_t = sum_t + wt.s##j;            \
-    }                                     \
-  }
-    AP_FOR_LANES(AP_NEAR_LANE)
-#undef AP_NEAR_LANE
+  if (k + AP_LANES <= range.y) {
+    const uint r = (uint)(k & 3);
+    const uint4 turn = ((uint4)(0, 1, 2, 3) + r) & 3u, back = ((uint4)(4, 5, 6, 7) - r) & 3u;
+    float4 lane_x = shuffle(sum_x, turn), lane_y = shuffle(sum_y, turn), lane_t = shuffle(sum_t, turn);
+    for (; k + AP_LANES <= range.y; k += AP_LANES) {
+      const ap_intv own_lane = ap_vloadi(0, slot_element + k) == own;
+      if (all(own_lane)) continue;
+      ap_floatv qx, qy, qt;
+      closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
+                                 ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k),
+                                 ap_vloadf(0, cx + k), ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
+      const ap_floatv ux = px - qx, uy = py - qy, ut = pt - qt;
+      const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
+      /* repulsion_add_term's weight with count 1. */
+      const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
+      const ap_intv take = ~own_lane & (d2 > 0.0f);
+      const ap_floatv zero = (ap_floatv)(0.0f);
+      const ap_floatv wx = select(zero, ux * w, take), wy = select(zero, uy * w, take),
+                      wt = select(zero, ut * w, take);
+      lane_x = lane_x + wx.s0123, lane_y = lane_y + wy.s0123, lane_t = lane_t + wt.s0123;
+      lane_x = lane_x + wx.s4567, lane_y = lane_y + wy.s4567, lane_t = lane_t + wt.s4567;
+      lane_x = lane_x + wx.s89ab, lane_y = lane_y + wy.s89ab, lane_t = lane_t + wt.s89ab;
+      lane_x = lane_x + wx.scdef, lane_y = lane_y + wy.scdef, lane_t = lane_t + wt.scdef;
+      /* The nearest distance is a minimum, exact in any order; NaN lanes are ignored as `d2 < c2` does. */
+      const ap_floatv other_d2 = select(d2, (ap_floatv)(INFINITY), own_lane);
+      const float8 m8 = fmin(other_d2.lo, other_d2.hi);
+      const float4 m4 = fmin(m8.lo, m8.hi);
+      c2 = fmin(c2, fmin(fmin(m4.x, m4.y), fmin(m4.z, m4.w)));
+    }
+    sum_x = shuffle(lane_x, back), sum_y = shuffle(lane_y, back), sum_t = shuffle(lane_t, back);
   }
 #endif
   for (; k < range.y; ++k) {
@@ -66,9 +91,9 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
     const float ux = px - qx, uy = py - qy, ut = pt - qt;
     const float d2 = ux * ux + uy * uy + ut * ut;
     if (d2 < c2) c2 = d2;
-    repulsion_add_term(ux, uy, ut, eps, 1.0f, &sum_x, &sum_y, &sum_t);
+    repulsion_add_partial(k, ux, uy, ut, eps, &sum_x, &sum_y, &sum_t);
   }
-  *sx = sum_x, *sy = sum_y, *st = sum_t, *closest2 = c2;
+  *ax_sum = sum_x, *ay_sum = sum_y, *at_sum = sum_t, *closest2 = c2;
 }
 
 /** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
@@ -135,17 +160,21 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
                                   overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
-  float sx = 0.0f, sy = 0.0f, st = 0.0f;
+  float4 near_x = (float4)(0.0f), near_y = (float4)(0.0f), near_t = (float4)(0.0f);
   float closest2 = INFINITY;
   const int qx = grid_axis_cell(px, grid.cell, grid.n);
   const int qy = grid_axis_cell(py, grid.cell, grid.n);
   const int qt = grid_axis_cell(pt, grid.cell, grid.n);
-  /* The 3x3x3 near block with exact closest points, then the outer shell of the 5x5x5 block with
-   * centroids (the reference collects both lists and sums near before far), row by row. */
+  /* The 3x3x3 near block with exact closest points in four partial sums, joined as (p0 + p1) + (p2 + p3);
+   * then the outer shell of the 5x5x5 block with centroids added to that one by one (the reference
+   * collects both lists and sums near before far), row by row. */
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       repulsion_near_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
-                           slot_element, slot_vertices, grid.triangles, &sx, &sy, &st, &closest2);
+                           slot_element, slot_vertices, grid.triangles, &near_x, &near_y, &near_t, &closest2);
+  float sx = (near_x.x + near_x.y) + (near_x.z + near_x.w);
+  float sy = (near_y.x + near_y.y) + (near_y.z + near_y.w);
+  float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
   for (int dz = -2; dz <= 2; ++dz) {
     for (int dy = -2; dy <= 2; ++dy) {
       if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */

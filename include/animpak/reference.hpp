@@ -74,6 +74,10 @@ void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element
 void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out);
 
+/// The near triangles as grid slots, in the same order (the triangle is sorted_triangles[k]): Eq. 1
+/// adds each one's term to the partial sum of its slot mod 4 (repulsion_force).
+void near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
+
 /// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
 /// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
 void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
@@ -104,8 +108,9 @@ struct RepulsionResult {
 };
 
 /// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
-/// `near` triangles, then over the `far` slots (far_slots): a triangle's centroid, or with
-/// grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when
+/// the triangles of the `near` slots (near_slots), summed in four partials by slot mod 4 and joined as
+/// (p0 + p1) + (p2 + p3), then one by one over the `far` slots (far_slots): a triangle's centroid, or
+/// with grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when
 /// `overlapping` (Eq. 3 takes over) or v is not a boundary vertex; `closest` is computed for every
 /// boundary vertex.
 /// repulsion.cpp.

@@ -63,7 +63,7 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
     CHECK(same(f.total.at(v), again.total.at(v)));
 
     const Vec3f q{w.state.x[v], w.state.y[v], w.state.t[v]};
-    near_triangles(g, q, w.topo.element[v], near);
+    near_slots(g, q, w.topo.element[v], near);
     far_slots(g, q, w.topo.element[v], far);
     CHECK((f.contact[v] & contact_overlap) == 0);
     const RepulsionResult rr = repulsion_force(w.topo, w.state, p, g, v, near, far, false);

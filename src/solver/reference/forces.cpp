@@ -48,7 +48,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     const float px = state.x[v], py = state.y[v];
     if (boundary) {
       const Vec3f q{px, py, state.t[v]};
-      near_triangles(grid, q, topo.element[v], near);
+      near_slots(grid, q, topo.element[v], near);
       far_slots(grid, q, topo.element[v], far);
     }
     const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v, params.interval_points);
