@@ -12,12 +12,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
   if(git_program)
     # --match with a pattern no tag has: always the abbreviated hash, never a tag name.
     execute_process(COMMAND "${git_program}" describe --always --dirty --abbrev=7 --match=animpak-no-tag
-                    WORKING_DIRECTORY "${SOURCE_DIR}" OUTPUT_VARIABLE commit RESULT_VARIABLE failed
+                    WORKING_DIRECTORY "${SOURCE_DIR}" OUTPUT_VARIABLE commit
                     OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-    if(failed)
-      set(commit "")
-    endif()
   endif()
+  # Anything but a hash (nothing, when git fails outside a repository) is "unknown".
   if(NOT commit MATCHES "^[0-9a-f]+(-dirty)?$")
     set(commit "unknown")
   endif()

@@ -4,13 +4,18 @@
  * visiting order (cells by dz, dy, dx ascending, sorted order within a cell), and the overlap test of
  * Eq. 3 (overlap.cl). docs/architecture.md, "The twin rule", gives the order. */
 
+/** Eq. 1's weight of one term, `count` times: 1/|u| · 1/(ε + |u|²) · count, for d2 = |u|² > 0. */
+float repulsion_weight(float d2, float eps, float count) {
+  const float inv_len = 1.0f / sqrt(d2);
+  return inv_len * (1.0f / (eps + d2)) * count;
+}
+
 /** One term of Eq. 1, `count` times (a far-field run stands for count triangles; 1 is exact); a point
  * exactly at x has no direction and adds nothing. */
 void repulsion_add_term(float ux, float uy, float ut, float eps, float count, float* sx, float* sy, float* st) {
   const float d2 = ux * ux + uy * uy + ut * ut;
   if (!(d2 > 0.0f)) return;
-  const float inv_len = 1.0f / sqrt(d2);
-  const float w = inv_len * (1.0f / (eps + d2)) * count;
+  const float w = repulsion_weight(d2, eps, count);
   *sx = *sx + ux * w;
   *sy = *sy + uy * w;
   *st = *st + ut * w;
@@ -21,8 +26,7 @@ void repulsion_add_term(float ux, float uy, float ut, float eps, float count, fl
 void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float4* ax, float4* ay, float4* at) {
   const float d2 = ux * ux + uy * uy + ut * ut;
   if (!(d2 > 0.0f)) return;
-  const float inv_len = 1.0f / sqrt(d2);
-  const float w = inv_len * (1.0f / (eps + d2)) * 1.0f;
+  const float w = repulsion_weight(d2, eps, 1.0f);
   const int4 mine = (int4)(0, 1, 2, 3) == (int4)(k & 3);
   *ax = *ax + select((float4)(0.0f), (float4)(ux * w), mine);
   *ay = *ay + select((float4)(0.0f), (float4)(uy * w), mine);
@@ -65,7 +69,7 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
                                  ap_vloadf(0, cx + k), ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
       const ap_floatv ux = px - qx, uy = py - qy, ut = pt - qt;
       const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
-      /* repulsion_add_term's weight with count 1. */
+      /* repulsion_weight with count 1, lane by lane. */
       const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
       const ap_intv take = ~own_lane & (d2 > 0.0f);
       const ap_floatv zero = (ap_floatv)(0.0f);

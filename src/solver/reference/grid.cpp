@@ -106,32 +106,38 @@ void for_block_cells(const CollisionGrid& grid, Vec3f q, std::int32_t r, std::in
   }
 }
 
-// The triangles of other elements in those cells, in sorted order within a cell: their slots, or with
-// `triangles` the triangles in them.
+// The slots of other elements' triangles in those cells, in sorted order within a cell.
 void collect(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::int32_t r, std::int32_t min_ring,
-             bool triangles, std::vector<std::int32_t>& out) {
+             std::vector<std::int32_t>& out) {
   out.clear();
   for_block_cells(grid, q, r, min_ring, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
-      if (grid.slot_element[k] != own_element) out.push_back(triangles ? grid.sorted_triangles[k] : k);
+      if (grid.slot_element[k] != own_element) out.push_back(k);
     }
   });
 }
 
+// Slots to the triangles in them, in place.
+void slots_to_triangles(const CollisionGrid& grid, std::vector<std::int32_t>& slots) {
+  for (std::int32_t& k : slots) k = grid.sorted_triangles[k];
+}
+
 }  // namespace
+
+void near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
+  collect(grid, q, own_element, 1, 0, out);
+}
 
 void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                     std::vector<std::int32_t>& out) {
-  collect(grid, q, own_element, 1, 0, true, out);
-}
-
-void near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
-  collect(grid, q, own_element, 1, 0, false, out);
+  near_slots(grid, q, own_element, out);
+  slots_to_triangles(grid, out);
 }
 
 void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                    std::vector<std::int32_t>& out) {
-  collect(grid, q, own_element, 2, 2, true, out);
+  collect(grid, q, own_element, 2, 2, out);
+  slots_to_triangles(grid, out);
 }
 
 void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
