@@ -66,12 +66,12 @@ bool edge_crosses_container(int segments, const ContainerIndexInfo ix, __global 
     for (int j = j0; j <= j1; ++j)
       for (int k = index[j]; k < index[j + 1]; ++k) {
         const int i = index[ix.band_segments + k];
-        if (segments_cross(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
+        if (segments_cross_properly(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
       }
     return false;
   }
   for (int i = 0; i < segments; ++i)
-    if (segments_cross(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
+    if (segments_cross_properly(px, py, nx, ny, ax[i], ay[i], bx[i], by[i])) return true;
   return false;
 }
 
@@ -95,7 +95,7 @@ void boundary_force(const ForceParams p, bool inside, float distance2, float qx,
 
 /** Containment: a vertex outside the container moves past its nearest boundary point by
  * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
-__kernel void containment(const WorldInfo world,
+__kernel void apply_containment(const WorldInfo world,
                           __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
                           __global const float* seg_bx, __global const float* seg_by, /* input */
                           const ContainerIndexInfo container_index,                   /* the container's index */

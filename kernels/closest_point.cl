@@ -73,7 +73,7 @@ void closest_point_on_triangle(float px, float py, float pt, float ax, float ay,
   *qt = at + abt * v + act * w;
 }
 
-/* The near block's triangles 16 at a time (repulsion_near_range) when the host builds for a CPU
+/* The near block's triangles 16 at a time (repulsion_near_slots) when the host builds for a CPU
  * (-DAP_NEAR_LANES=16, program.cpp): every Voronoi region's answer is computed for all lanes, then the
  * first region that holds, in the order of the scalar function above, is selected per lane. Each lane
  * does the scalar function's float operations on the same operands, so its point is bit-identical; the

@@ -66,12 +66,12 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   const float tor_t = 0.0f;
   const float k_tor = (flags[v] & AP_VERTEX_HOLD_ANGLE) != 0 ? p.k_target_angle : p.k_torsion;
   torsion_force(k_tor, px, py, slice_cx[s], slice_cy[s], rest_dir_x[v], rest_dir_y[v], &tor_x, &tor_y);
-  const float tmp_x = 0.0f, tmp_y = 0.0f;
-  const float tmp_t = temporal_force(p, rest_t[v], pt);
+  const float temporal_x = 0.0f, temporal_y = 0.0f;
+  const float temporal_t = temporal_force(p, rest_t[v], pt);
 
-  fx[v] = rpl_x + edg_x + tgt_x + bdr_x + ovr_x + tor_x + tmp_x;
-  fy[v] = rpl_y + edg_y + tgt_y + bdr_y + ovr_y + tor_y + tmp_y;
-  ft[v] = rpl_t + edg_t + tgt_t + bdr_t + ovr_t + tor_t + tmp_t;
+  fx[v] = rpl_x + edg_x + tgt_x + bdr_x + ovr_x + tor_x + temporal_x;
+  fy[v] = rpl_y + edg_y + tgt_y + bdr_y + ovr_y + tor_y + temporal_y;
+  ft[v] = rpl_t + edg_t + tgt_t + bdr_t + ovr_t + tor_t + temporal_t;
   /* The wall is a neighbour too (§5.3's slice gap). */
   uchar bits = in_container ? 0 : AP_CONTACT_OUTSIDE;
   float gap = dist;
@@ -98,7 +98,7 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   const int n = world.vertices;
   const float parts[AP_FORCE_COMPONENTS][3] = {{rpl_x, rpl_y, rpl_t}, {edg_x, edg_y, edg_t}, {tgt_x, tgt_y, tgt_t},
                                                {bdr_x, bdr_y, bdr_t}, {ovr_x, ovr_y, ovr_t}, {tor_x, tor_y, tor_t},
-                                               {tmp_x, tmp_y, tmp_t}};
+                                               {temporal_x, temporal_y, temporal_t}};
   for (int c = 0; c < AP_FORCE_COMPONENTS; ++c)
     for (int axis = 0; axis < 3; ++axis) breakdown[(c * 3 + axis) * n + v] = parts[c][axis];
 }

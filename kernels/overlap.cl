@@ -7,31 +7,12 @@
  * cells the query edge's box meets, in increasing element order, exactly as
  * reference::overlap_candidates. */
 
-/** Half-open ray-crossing step of the even-odd test (boundary.cpp: ray_crosses_segment). */
-bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {
-  if ((ay > py) == (by > py)) return false;
-  const float xi = (bx - ax) * (py - ay) / (by - ay) + ax;
-  return px < xi;
-}
-
 /* std::min / std::max spelled out, so NaN compares exactly as in the reference. */
 float ap_min(float a, float b) { return b < a ? b : a; }
 float ap_max(float a, float b) { return a < b ? b : a; }
 
-float overlap_orient(float ax, float ay, float bx, float by, float cx, float cy) {
-  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-bool overlap_opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
-
-/** Proper crossing of segments p → n and a → b (boundary.cpp: segments_cross). */
-bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by) {
-  return overlap_opposite(overlap_orient(ax, ay, bx, by, px, py), overlap_orient(ax, ay, bx, by, nx, ny)) &&
-         overlap_opposite(overlap_orient(px, py, nx, ny, ax, ay), overlap_orient(px, py, nx, ny, bx, by));
-}
-
 /** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
- * slices whose first vertices are lo and hi (reference point_overlap's `edge`). */
+ * slices whose first vertices are lo and hi (reference overlap_edge). */
 void overlap_edge(__global const float* x, __global const float* y, int lo, int hi, int i, int edges, float w,
                   float* ax, float* ay, float* bx, float* by) {
   const int j = i + 1 == edges ? 0 : i + 1;
@@ -70,7 +51,7 @@ __kernel void slice_boxes(const WorldInfo world,
 
 /** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
  * `own` that the broadphase lists, in increasing order, each one's slice pair around pt searched from
- * slice index `start` (reference point_overlap and overlap_candidates).
+ * slice index `start` (reference overlap_point and overlap_candidates).
  * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy),
  * plus AP_CONTACT_BLOCK when an element it overlaps does not give way to `own` (any, except a secondary
  * one when `own` is primary), and AP_CONTACT_YIELD when such an element is no larger (g at pt) than
@@ -155,7 +136,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
       const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
       inside = inside != ((ap_lane_count(ray) & 1) != 0);
       if (crosses) continue;
-      /* ap_max / ap_min as select, then segments_cross */
+      /* ap_max / ap_min as select, then segments_cross_properly */
       const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
                           select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
       const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
@@ -172,7 +153,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
       overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
       if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
       if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
-          ap_min(ay, by) <= ey1 && segments_cross(px, py, nx, ny, ax, ay, bx, by))
+          ap_min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
         crosses = true;
     }
     float near2 = INFINITY, cqx = px, cqy = py;
@@ -204,7 +185,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
   return bits;
 }
 
-/** Folds one query point's bits into v's (reference fold): the deepest point inside gives the way out. */
+/** Folds one query point's bits into v's (reference overlap_fold): the deepest point inside gives the way out. */
 void overlap_fold(uchar found, float near2, float qx, float qy, float px, float py, uchar* bits, float* depth2,
                   float* out_x, float* out_y) {
   if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;

@@ -40,7 +40,7 @@ void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float
  * (slot order within every partial). Lanes of the own element, or with d2 = 0 (w inf, NaN), add +0
  * instead of being skipped. The same float operations as the one-slot loop, which takes the rest of the
  * range (all of it on a GPU), and as the reference. */
-void repulsion_near_range(int2 range, int own, float px, float py, float pt, float eps,
+void repulsion_near_slots(int2 range, int own, float px, float py, float pt, float eps,
                           __global const int* slot_element, __global const float* slot_vertices, int slots,
                           float4* ax_sum, float4* ay_sum, float4* at_sum, float* closest2) {
   __global const float* ax = slot_vertices + AP_SLOT_AX * slots;
@@ -103,7 +103,7 @@ void repulsion_near_range(int2 range, int own, float px, float py, float pt, flo
 /** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
  * triangle's centroid, or with far_cells every run's mean centroid, counted once per triangle of the run
  * (grid_runs). The range starts at a cell's first slot, which is a run's first slot. */
-void repulsion_far_range(int2 range, int own, float px, float py, float pt, float eps, int far_cells,
+void repulsion_far_slots(int2 range, int own, float px, float py, float pt, float eps, int far_cells,
                          __global const int* slot_element, __global const float* slot_cx,
                          __global const float* slot_cy, __global const float* slot_ct,
                          __global const int* run_next, __global const float* run_cx,
@@ -128,7 +128,7 @@ void repulsion_far_range(int2 range, int own, float px, float py, float pt, floa
  * is near) and its overlap test (a vertex that overlaps gets no Eq. 1 force: Eq. 3 takes over).
  * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
  * step_forces reads the results back per vertex. */
-__kernel void repulsion(const GridInfo grid, const ForceParams p, const int boundary_count, const int elements,
+__kernel void repulsion_force(const GridInfo grid, const ForceParams p, const int boundary_count, const int elements,
                         __global const int* boundary_vertices,   /* input: the boundary vertices */
                         __global const float* x, __global const float* y, __global const float* t, /* input */
                         __global const int* element,             /* input: per vertex */
@@ -174,7 +174,7 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
    * collects both lists and sums near before far), row by row. */
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
-      repulsion_near_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
+      repulsion_near_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
                            slot_element, slot_vertices, grid.triangles, &near_x, &near_y, &near_t, &closest2);
   float sx = (near_x.x + near_x.y) + (near_x.z + near_x.w);
   float sy = (near_y.x + near_y.y) + (near_y.z + near_y.w);
@@ -182,14 +182,14 @@ __kernel void repulsion(const GridInfo grid, const ForceParams p, const int boun
   for (int dz = -2; dz <= 2; ++dz) {
     for (int dy = -2; dy <= 2; ++dy) {
       if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */
-        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
                             grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
                             run_ct, &sx, &sy, &st);
       } else {                             /* only the row's two end cells are */
-        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
                             grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
                             run_ct, &sx, &sy, &st);
-        repulsion_far_range(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
                             grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
                             run_ct, &sx, &sy, &st);
       }

@@ -76,11 +76,11 @@ void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
 
 /// The near triangles as grid slots, in the same order (the triangle is sorted_triangles[k]): Eq. 1
 /// adds each one's term to the partial sum of its slot mod 4 (repulsion_force).
-void near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
+void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
 
 /// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
 /// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
-void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                std::vector<std::int32_t>& out);
 
 // ---- geometry helpers ---------------------------------------------------------------------------------
@@ -93,12 +93,12 @@ void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
 float closest_point_on_segment(float px, float py, float ax, float ay, float bx, float by, float& qx, float& qy);
 
 /// One step of the even–odd (ray crossing) point-in-polygon test: whether the ray from (px, py)
-/// towards +x crosses segment (ax, ay)–(bx, by). Toggle "inside" on every true. boundary.cpp.
+/// towards +x crosses segment (ax, ay)–(bx, by). Toggle "inside" on every true. segments.cpp.
 bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by);
 
 /// Whether segments p → n and a → b cross properly: each one's ends strictly on opposite sides of the
-/// other's line (touching or collinear does not count). boundary.cpp.
-bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by);
+/// other's line (touching or collinear does not count). segments.cpp.
+bool segments_cross_properly(float px, float py, float nx, float ny, float ax, float ay, float bx, float by);
 
 // ---- forces (§5); each returns the force on vertex v only ---------------------------------------------
 
@@ -108,8 +108,8 @@ struct RepulsionResult {
 };
 
 /// Eq. 1 on a boundary vertex: k_rpl Σ u/|u| · 1/(ε + |u|²), u = x − x_i over exact closest points on
-/// the triangles of the `near` slots (near_slots), summed in four partials by slot mod 4 and joined as
-/// (p0 + p1) + (p2 + p3), then one by one over the `far` slots (far_slots): a triangle's centroid, or
+/// the triangles of the `near` slots (repulsion_near_slots), summed in four partials by slot mod 4 and joined as
+/// (p0 + p1) + (p2 + p3), then one by one over the `far` slots (repulsion_far_slots): a triangle's centroid, or
 /// with grid.far_cells a run's mean centroid counted once per triangle of the run. The force is zero when
 /// `overlapping` (Eq. 3 takes over) or v is not a boundary vertex; `closest` is computed for every
 /// boundary vertex.
@@ -282,16 +282,20 @@ void apply_containment(const Topology& topo, SimState& state);
 /// test counts it as touching).
 enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
-/// One growth step (docs/parameters.md, "Growth"): a slice with a vertex outside the container, or one
-/// that overlaps an element no larger there (contact_yield), shrinks by shrink_rate · Δt_sim (not below
-/// 1); one that overlaps only larger elements, has a boundary vertex nearer the wall than stop_gap, or is
-/// at max_growth keeps its g; any other grows by growth_rate · Δt_sim. Then every slice is limited to
-/// growth_ratio × the smallest proposal of its element and to neighbour_growth_ratio × the proposal of
-/// each time neighbour. Without `growing` (the settling phase) no slice grows, and every overlapping or
-/// spilling slice shrinks by settle_shrink_rate · Δt_sim. `changed` marks what moved; returns how many
-/// slices grew.
-std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                         bool growing, SimState& state, std::vector<std::uint8_t>& changed);
+/// Each slice's own next g from its contacts (docs/parameters.md, "Growth"), into `proposed`: a slice
+/// with a vertex outside the container, or one that overlaps an element no larger there (contact_yield),
+/// shrinks by shrink_rate · Δt_sim (not below 1); one that overlaps only larger elements, has a boundary
+/// vertex nearer the wall than stop_gap, or is at max_growth keeps its g; any other grows by growth_rate ·
+/// Δt_sim. Without `growing` (the settling phase) no slice grows, and every overlapping or spilling slice
+/// shrinks by settle_shrink_rate · Δt_sim.
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
+                    bool growing, const SimState& state, std::vector<float>& proposed);
+
+/// Every slice's new g: its proposal, limited to growth_ratio × the smallest proposal of its element and
+/// to neighbour_growth_ratio × the proposal of each time neighbour. `changed` marks what moved; returns
+/// how many slices grew.
+std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
+                         SimState& state, std::vector<std::uint8_t>& changed);
 
 /// Recomputes the rest length of every spring with an end on a slice marked in `changed`.
 void update_rest_lengths(const Topology& topo, const std::vector<std::uint8_t>& changed, SimState& state);

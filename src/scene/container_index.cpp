@@ -22,7 +22,9 @@ double segment_distance(double px, double py, double ax, double ay, double bx, d
   return std::hypot(px - (ax + u * dx), py - (ay + u * dy));
 }
 
-bool segments_cross(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+// Whether segments ab and cd meet, touching included (unlike the solver's segments_cross_properly): an
+// index bound must count a segment that only touches a cell.
+bool segments_meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
   const auto orient = [](double px, double py, double qx, double qy, double rx, double ry) {
     return (qx - px) * (ry - py) - (qy - py) * (rx - px);
   };
@@ -40,7 +42,7 @@ double box_segment_distance(double x0, double y0, double x1, double y1, double a
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 4; ++k) {
     const int m = (k + 1) % 4;
-    if (segments_cross(ax, ay, bx, by, cx[k], cy[k], cx[m], cy[m])) return 0.0;
+    if (segments_meet(ax, ay, bx, by, cx[k], cy[k], cx[m], cy[m])) return 0.0;
     best = std::min(best, segment_distance(cx[k], cy[k], ax, ay, bx, by));
     best = std::min(best, segment_distance(ax, ay, cx[k], cy[k], cx[m], cy[m]));
     best = std::min(best, segment_distance(bx, by, cx[k], cy[k], cx[m], cy[m]));

@@ -48,8 +48,8 @@ std::int64_t neighbour_visits(const Topology& topology, const SimState& state, c
   for (std::int32_t v = 0; v < topology.vertex_count(); ++v) {
     if ((topology.flags[v] & vertex_boundary) == 0) continue;
     const Vec3f q{state.x[v], state.y[v], state.t[v]};
-    reference::near_slots(grid, q, topology.element[v], near);
-    reference::far_slots(grid, q, topology.element[v], far);
+    reference::repulsion_near_slots(grid, q, topology.element[v], near);
+    reference::repulsion_far_slots(grid, q, topology.element[v], far);
     visits += static_cast<std::int64_t>(near.size() + far.size());
   }
   return visits;

@@ -127,7 +127,7 @@ inline std::string state_difference(const SimState& ref, const SimState& dev) {
 }
 
 /// The rest copy growth scales (rest_copy_x, slice_rest_copy_cx, ...), taken from the state as built.
-inline void fill_reference_copy(World& w) {
+inline void fill_reference_copy(TinyWorld& w) {
   w.topo.rest_copy_x = w.state.x;
   w.topo.rest_copy_y = w.state.y;
   w.topo.rest_copy_t = w.state.t;
@@ -145,7 +145,7 @@ struct RandomWorldShape {
 
 /// Ring elements at random places (so some overlap, some cross the container or the hole), random
 /// extra springs of every class, random velocities and growth, loop pairs on every element.
-inline World random_world(std::uint64_t seed, const RandomWorldShape& shape = {}) {
+inline TinyWorld random_world(std::uint64_t seed, const RandomWorldShape& shape = {}) {
   std::mt19937 rng(static_cast<std::uint32_t>(seed));
   auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
   WorldBuilder b;
@@ -182,7 +182,7 @@ inline World random_world(std::uint64_t seed, const RandomWorldShape& shape = {}
   const std::int32_t last_slice = (shape.slices - 1) * shape.ring;
   if (targets) b.add_target(0, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 0.0f);
   if (targets && last_slice > 0) b.add_target(last_slice, uniform(0.2f, 0.8f), uniform(0.2f, 0.8f), 1.0f);
-  World out = b.build();
+  TinyWorld out = b.build();
   if (targets)
     for (int k = 0; k < shape.ring; ++k) {
       out.topo.flags[k] |= vertex_hold_angle;

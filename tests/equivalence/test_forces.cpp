@@ -15,7 +15,7 @@ struct Coverage {
 };
 
 // Compares one world's forces on every device; returns what the world exercised.
-Coverage check_forces(const World& w, const Params& params, const std::string& label) {
+Coverage check_forces(const TinyWorld& w, const Params& params, const std::string& label) {
   const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
   reference::ForceBreakdown ref_parts;
   const reference::StepForces ref = reference::step_forces(w.topo, w.state, params, grid, &ref_parts);
@@ -56,8 +56,8 @@ std::vector<TinySlice> tube(const Ring& ring, const std::vector<float>& times) {
   return slices;
 }
 
-World finish(WorldBuilder& b) {
-  World w = b.build();
+TinyWorld finish(WorldBuilder& b) {
+  TinyWorld w = b.build();
   fill_reference_copy(w);
   return w;
 }
@@ -68,7 +68,7 @@ struct BroadphaseUse {
   long queries = 0, candidates = 0, two_cells = 0, four_cells = 0;
 };
 
-BroadphaseUse broadphase_use(const World& w) {
+BroadphaseUse broadphase_use(const TinyWorld& w) {
   reference::SliceBoxes boxes;
   reference::slice_boxes(w.topo, w.state, boxes);
   reference::OverlapGrid g;
@@ -103,7 +103,7 @@ TEST_CASE("forces: random worlds, default and paper constants", "[equivalence][o
     RandomWorldShape shape;
     shape.elements = 3 + static_cast<int>(seed % 4);
     shape.max_radius = 0.2f;  // large enough that elements overlap and cross the container
-    const World w = random_world(seed, shape);
+    const TinyWorld w = random_world(seed, shape);
     for (const Params& params : {Params{}, paper_params()}) {
       const Coverage c = check_forces(w, params, "seed " + std::to_string(seed));
       total.inside += c.inside, total.crossing += c.crossing, total.wall += c.wall;
@@ -128,7 +128,7 @@ TEST_CASE("forces: vertices on cell borders and the grid's edge", "[equivalence]
   // On and beyond the cube's faces: clamped into the border cells, and outside the container.
   b.add_element(tube({{0.0f, 0.0f}, {0.04f, -0.01f}, {0.04f, 0.04f}, {-0.02f, 0.04f}}, {0.0f, 0.5f, 1.0f}));
   b.add_element(tube({{0.96f, 0.96f}, {1.02f, 0.96f}, {1.0f, 1.0f}, {0.96f, 1.0f}}, {0.0f, 0.96f, 1.0f}));
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "cell borders");
 }
 
@@ -140,7 +140,7 @@ TEST_CASE("forces: many small elements spread out, the overlap broadphase leavin
     shape.elements = 60;
     shape.min_radius = 0.02f;
     shape.max_radius = 0.06f;
-    const World w = random_world(seed, shape);
+    const TinyWorld w = random_world(seed, shape);
     const BroadphaseUse u = broadphase_use(w);
     CHECK(u.candidates * 10 < u.queries * shape.elements);  // fewer than a tenth of the elements tried
     for (const Params& params : {Params{}, paper_params()}) {
@@ -167,7 +167,7 @@ TEST_CASE("forces: slice-pair boxes across the overlap broadphase's cell borders
       else
         b.add_element(tube({{cx, cy - 0.04f}, {cx + 0.04f, cy}, {cx, cy + 0.04f}, {cx - 0.04f, cy}}, times));
     }
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   const BroadphaseUse u = broadphase_use(w);
   CHECK(u.two_cells > 0);
   CHECK(u.four_cells > 0);
@@ -184,14 +184,14 @@ TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]
   b.add_element(tube({{0.30f, 0.30f}, {0.34f, 0.300001f}, {0.38f, 0.30f}, {0.34f, 0.34f}}, {0.0f, 0.5f, 0.5000001f, 1.0f}));
   b.add_element(tube({{0.33f, 0.29f}, {0.37f, 0.29f}, {0.37f, 0.33f}, {0.33f, 0.33f}}, {0.0f, 0.5f, 1.0f}));
   b.add_element(tube({{0.35f, 0.31f}, {0.35f, 0.31f}, {0.36f, 0.32f}, {0.35f, 0.32f}}, {0.0f, 0.49f, 1.0f}));
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "degenerate");
 }
 
 // The longest run of consecutive grid slots that one boundary vertex's near block walks in one row
 // (three cells in x) while holding another element's triangle: the kernel takes such runs AP_LANES
 // slots at a time (closest_point_on_triangles in kernels/closest_point.cl).
-std::int32_t longest_near_row(const World& w, const Params& params) {
+std::int32_t longest_near_row(const TinyWorld& w, const Params& params) {
   const reference::CollisionGrid g = reference::build_collision_grid(w.topo, w.state, params);
   std::int32_t longest = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
@@ -242,7 +242,7 @@ TEST_CASE("forces: near rows and outlines long enough for the kernel's lanes, wi
     }
     b.add_element(slices);
   }
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) {
     REQUIRE(longest_near_row(w, params) >= 64);
     const Coverage c = check_forces(w, params, "lanes");
@@ -259,7 +259,7 @@ TEST_CASE("forces: elements touching the container and a hole", "[equivalence][o
   b.add_element(square_tube(0.5f, 0.5f, 0.05f, {0.0f, 0.5f, 1.0f}));    // inside the hole
   b.add_element(square_tube(0.62f, 0.5f, 0.04f, {0.0f, 0.5f, 1.0f}));   // across the hole's edge
   b.add_element(square_tube(0.2f, 0.8f, 0.06f, {0.0f, 0.5f, 1.0f}));    // around the second hole
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
 }
 
@@ -269,7 +269,7 @@ TEST_CASE("forces: boundary edges across a reflex corner of the container, both 
   b.set_container({{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.7f}, {0.0f, 1.0f}}});
   b.add_element(square_tube(0.5f, 0.65f, 0.1f, {0.0f, 0.5f, 1.0f}));   // straddles the notch
   b.add_element(square_tube(0.2f, 0.3f, 0.05f, {0.0f, 0.5f, 1.0f}));   // clear of it
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "notch");
 }
 
@@ -281,7 +281,7 @@ TEST_CASE("forces: deep overlaps and edges that cross with no vertex inside", "[
   // A plus sign of two bars: only edges cross.
   b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));
   b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));
-  World w = finish(b);
+  TinyWorld w = finish(b);
   // Unequal g, so that the overlapping vertices of the larger element of each pair yield and those of
   // the smaller only pause (docs/parameters.md, "Growth").
   for (std::int32_t s = 0; s < w.topo.slice_count(); ++s)
@@ -302,7 +302,7 @@ TEST_CASE("forces: secondary elements give way to primary ones", "[equivalence][
   b.add_element(square_tube(0.5f, 0.5f, 0.12f, {0.0f, 0.4f, 1.0f}));    // secondary
   b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));  // secondary
   b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));  // primary
-  World w = finish(b);
+  TinyWorld w = finish(b);
   w.topo.element_secondary = {0, 1, 1, 0};
   for (std::int32_t s = 0; s < w.topo.slice_count(); ++s)
     w.state.growth[s] = 1.0f + 0.25f * static_cast<float>(w.topo.slice_element[s]);
@@ -321,7 +321,7 @@ TEST_CASE("forces: sparse targets and keyed slices holding their angle, turned o
   b.add_element(square_tube(0.7f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));
   b.add_target(0, 0.3f, 0.45f, 0.0f);   // element 0, slices 0 and 2 only
   b.add_target(8, 0.45f, 0.55f, 0.5f);
-  World w = finish(b);
+  TinyWorld w = finish(b);
   for (std::int32_t v : {0, 1, 2, 3, 8, 9, 10, 11}) w.topo.flags[v] |= vertex_hold_angle;
   // Turn every slice by 0.3 rad about its centre so that both torsion constants act.
   std::vector<float> cx, cy;
@@ -343,7 +343,7 @@ TEST_CASE("forces: one element alone", "[equivalence][opencl]") {
   WorldBuilder b;
   b.add_element(square_tube(0.5f, 0.5f, 0.1f, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}));
   b.add_target(0, 0.3f, 0.3f, 0.0f);
-  const World w = finish(b);
+  const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "alone");
 }
 

@@ -5,7 +5,7 @@
 namespace animpak::test {
 namespace {
 
-void check_grid(const World& w, const Params& params, const std::string& label) {
+void check_grid(const TinyWorld& w, const Params& params, const std::string& label) {
   const reference::CollisionGrid ref = reference::build_collision_grid(w.topo, w.state, params);
   for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
     const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->build_and_read_grid();
@@ -30,7 +30,7 @@ TEST_CASE("grid: centroids, cells and the stable sort match the reference", "[eq
     RandomWorldShape shape;
     shape.elements = 6;
     shape.max_radius = 0.25f;  // some vertices beyond the cube's faces, clamped into border cells
-    const World w = random_world(seed, shape);
+    const TinyWorld w = random_world(seed, shape);
     Params coarse;
     coarse.cell_size = 0.3;  // few cells: many triangles share one, so the within-cell order matters
     check_grid(w, Params{}, "seed " + std::to_string(seed));

@@ -62,7 +62,7 @@ TEST_CASE("steps: random worlds, 20 steps each", "[equivalence][opencl]") {
     RandomWorldShape shape;
     shape.elements = 4;
     shape.max_radius = 0.15f;
-    const World w = random_world(seed, shape);
+    const TinyWorld w = random_world(seed, shape);
     Params params = paper_params();
     params.grid_rebuild_interval = static_cast<int>(seed % 3) + 1;  // rebuilding every k steps, alike
     check_steps(w.topo, w.state, params, 20, 1, "seed " + std::to_string(seed));
@@ -74,7 +74,7 @@ TEST_CASE("steps: many small elements, the overlap broadphase leaving most out",
   shape.elements = 50;
   shape.min_radius = 0.02f;
   shape.max_radius = 0.06f;
-  const World w = random_world(31, shape);
+  const TinyWorld w = random_world(31, shape);
   check_steps(w.topo, w.state, paper_params(), 10, 1, "50 small elements");
 }
 
@@ -128,14 +128,14 @@ namespace animpak::test {
 TEST_CASE("steps: one element alone, and a world without envelope triangles", "[equivalence][opencl]") {
   WorldBuilder alone;
   alone.add_element(square_tube(0.5f, 0.5f, 0.1f, {0.0f, 0.3f, 0.6f, 1.0f}));
-  World w = alone.build();
+  TinyWorld w = alone.build();
   fill_reference_copy(w);
   check_steps(w.topo, w.state, paper_params(), 10, 1, "alone");
 
   WorldBuilder flat;  // one slice per element: nothing to extrude an envelope from
   flat.add_element(square_tube(0.3f, 0.3f, 0.1f, {0.5f}));
   flat.add_element(square_tube(0.35f, 0.3f, 0.1f, {0.5f}));
-  World f = flat.build();
+  TinyWorld f = flat.build();
   fill_reference_copy(f);
   REQUIRE(f.topo.envelope_count() == 0);
   check_steps(f.topo, f.state, paper_params(), 10, 1, "no envelope");

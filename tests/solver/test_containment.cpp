@@ -21,7 +21,7 @@ TEST_CASE("containment: a vertex outside the container or inside a hole moves ju
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.1f)});  // a hole in the middle
   b.add_element({{{{1.2f, 0.5f}, {0.52f, 0.47f}, {0.3f, 0.3f}}, 0.5f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   w.state.vx = {1.0f, 2.0f, 3.0f};
   w.state.vy = {1.0f, 2.0f, 3.0f};
   apply_containment(w.topo, w.state);
@@ -51,7 +51,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   slices[7].ring = test::square(0.95f - p.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
   slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                     // slice 9 spills past it
   b.add_element(slices);
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
   for (int s = 0; s < 26; ++s) {
@@ -69,7 +69,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   Params grow = p;
   grow.growth_ratio = 100.0;
   std::vector<std::uint8_t> changed;
-  grow_slices(w.topo, f.contact, grow, true, state, changed);
+  test::grow_step(w.topo, f.contact, grow, true, state, changed);
   CHECK(changed[7] == growth_kept);
   CHECK(changed[9] == growth_kept);  // at g = 1 already: a spilling slice cannot shrink below the start
   CHECK(changed[8] == growth_grew);
@@ -89,7 +89,7 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
     std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.1f, times);
     slices[1].ring = test::square(0.5f, 0.65f, 0.1f);
     b.add_element(slices);
-    test::World w = b.build();
+    test::TinyWorld w = b.build();
     if (!indexed) w.topo.container.index = {};
     for (int v = 4; v < 8; ++v) REQUIRE(container_query(w.topo.container, w.state.x[v], w.state.y[v], false).inside);
     CHECK(edge_crosses_container(w.topo.container, 0.6f, 0.75f, 0.4f, 0.75f));
@@ -112,7 +112,7 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
     grow.growth_ratio = 100.0;
     grow.neighbour_growth_ratio = 100.0;
     std::vector<std::uint8_t> changed;
-    grow_slices(w.topo, f.contact, grow, true, state, changed);
+    test::grow_step(w.topo, f.contact, grow, true, state, changed);
     CHECK((changed[1] & growth_shrank) != 0);
     CHECK(state.growth[1] < 2.0f);
   }
@@ -168,7 +168,7 @@ TEST_CASE("containment: the container index answers every query exactly as tryin
   for (std::size_t c = 0; c < containers.size(); ++c) {
     WorldBuilder b;
     b.set_container(containers[c]);
-    const test::World w = b.build();
+    const test::TinyWorld w = b.build();
     const ContainerGeometry& indexed = w.topo.container;
     REQUIRE(indexed.index.nx > 0);
     ContainerGeometry plain = indexed;

@@ -12,7 +12,7 @@ using animpak::test::WorldBuilder;
 namespace {
 
 // Two vertices of one element, one spring of class c and rest length `rest` between them.
-test::World spring_pair(test::Ring ring, SpringClass c, float rest) {
+test::TinyWorld spring_pair(test::Ring ring, SpringClass c, float rest) {
   WorldBuilder b;
   b.add_element({{ring, 0.5f}}, false);
   b.add_spring(0, 1, c, rest);
@@ -24,7 +24,7 @@ test::World spring_pair(test::Ring ring, SpringClass c, float rest) {
 TEST_CASE("springs: Eq. 2, one stretched spring pulls both ends together with k (|u| - l)^2") {
   const Params p = test::paper_params();
   // |u| = 0.625, l = 0.5: stretch 0.125, k = 10 → 10 · 0.015625 = 0.15625, all exact in float.
-  const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.5f);
+  const test::TinyWorld w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.5f);
   const Vec3f fa = spring_force(w.topo, w.state, p, 0), fb = spring_force(w.topo, w.state, p, 1);
   CHECK(fa.x == 0.15625f);
   CHECK(fa.y == 0.0f);
@@ -34,7 +34,7 @@ TEST_CASE("springs: Eq. 2, one stretched spring pulls both ends together with k 
 
 TEST_CASE("springs: a spring stretched by 0.1 with k = 10 gives 0.1 along the edge") {
   const Params p = test::paper_params();
-  const test::World w = spring_pair({{0.2f, 0.3f}, {0.2f, 0.9f}}, SpringClass::shear, 0.5f);
+  const test::TinyWorld w = spring_pair({{0.2f, 0.3f}, {0.2f, 0.9f}}, SpringClass::shear, 0.5f);
   const Vec3f fa = spring_force(w.topo, w.state, p, 0);
   CHECK(fa.x == 0.0f);
   CHECK(fa.y == Approx(0.1f).margin(1e-6));
@@ -42,7 +42,7 @@ TEST_CASE("springs: a spring stretched by 0.1 with k = 10 gives 0.1 along the ed
 
 TEST_CASE("springs: a compressed spring pushes the ends apart") {
   const Params p = test::paper_params();
-  const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.75f);
+  const test::TinyWorld w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, SpringClass::edge, 0.75f);
   CHECK(spring_force(w.topo, w.state, p, 0).x == -0.15625f);
   CHECK(spring_force(w.topo, w.state, p, 1).x == 0.15625f);
 }
@@ -56,16 +56,16 @@ TEST_CASE("springs: each class uses its own stiffness") {
                                                     {SpringClass::target, p.k_target}};
   for (const auto& [c, k] : classes) {
     INFO(static_cast<int>(c));
-    const test::World w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, c, 0.5f);
+    const test::TinyWorld w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, c, 0.5f);
     CHECK(spring_force(w.topo, w.state, p, 0).x == Approx(k * 0.015625).epsilon(1e-6));
   }
 }
 
 TEST_CASE("springs: a spring at rest or with coincident ends gives no force") {
   const Params p = test::paper_params();
-  const test::World rest = spring_pair({{0.25f, 0.5f}, {0.75f, 0.5f}}, SpringClass::edge, 0.5f);
+  const test::TinyWorld rest = spring_pair({{0.25f, 0.5f}, {0.75f, 0.5f}}, SpringClass::edge, 0.5f);
   CHECK(spring_force(rest.topo, rest.state, p, 0).x == 0.0f);
-  const test::World w = spring_pair({{0.5f, 0.5f}, {0.5f, 0.5f}}, SpringClass::edge, 0.5f);
+  const test::TinyWorld w = spring_pair({{0.5f, 0.5f}, {0.5f, 0.5f}}, SpringClass::edge, 0.5f);
   const Vec3f f = spring_force(w.topo, w.state, p, 0);
   CHECK((f.x == 0.0f && f.y == 0.0f && f.t == 0.0f));
 }
@@ -76,7 +76,7 @@ TEST_CASE("springs: a time spring acts along t, summed over the CSR slots") {
   b.add_element({{{{0.5f, 0.5f}}, 0.25f}, {{{0.5f, 0.5f}}, 0.5f}, {{{0.5f, 0.5f}}, 0.75f}}, false);
   b.add_spring(0, 1, SpringClass::time, 0.125f);  // stretched by 0.125: pulls vertex 1 down in t
   b.add_spring(1, 2, SpringClass::time, 0.5f);    // compressed by 0.25: pushes vertex 1 down in t
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const Vec3f f = spring_force(w.topo, w.state, p, 1);
   CHECK(f.t == Approx(-0.01 * 0.015625 - 0.01 * 0.0625).epsilon(1e-6));
   CHECK(f.x == 0.0f);
@@ -87,7 +87,7 @@ TEST_CASE("target: a zero-length Eq. 2 spring from the anchor to its target poin
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {0.6f, 0.5f}}, 0.5f}}, false);
   b.add_target(0, 0.5f, 0.75f, 0.5f);
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const Vec3f f = target_force(w.topo, w.state, p, 0);
   CHECK(f.x == 0.0f);
   CHECK(f.y == 0.625f);  // 10 · 0.25²
@@ -100,7 +100,7 @@ TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
   const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   w.state.t[0] = 0.625f;
   const Vec3f f = temporal_force(w.topo, w.state, p, 0);
   CHECK(f.t == -0.125f);
@@ -112,7 +112,7 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
   p.wall_repulsion = 0.0;  // Eq. 4 alone; the wall's repulsion inside is the next case
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {1.25f, 0.5f}, {-0.5f, -0.25f}, {1.0f, 0.5f}}, 0.5f}}, false);
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const Vec3f inside = boundary_force(w.topo, w.state, p, 0);
   CHECK((inside.x == 0.0f && inside.y == 0.0f && inside.t == 0.0f));
   const Vec3f right = boundary_force(w.topo, w.state, p, 1);  // closest point (1, 0.5)
@@ -132,7 +132,7 @@ TEST_CASE("boundary: the wall repels a boundary vertex inside the container like
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   // Vertex 0: nearest wall the hole's edge x = 0.375, u = (−0.125, 0): 100 · (−1, 0) / (1 + 0.125²).
   const Vec3f f0 = boundary_force(w.topo, w.state, p, 0);
   CHECK(f0.x == Approx(-100.0 / (1.0 + 0.015625)).epsilon(1e-6));
@@ -151,7 +151,7 @@ TEST_CASE("boundary: the wall repels only within wall_range, so a wall across th
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   // Vertex 0 is 0.125 from the hole's edge, vertex 1 0.1 from the outline.
   p.wall_range = 0.11;
   const Vec3f far0 = boundary_force(w.topo, w.state, p, 0);
@@ -169,7 +169,7 @@ TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.5f, 0.5625f}, {0.25f, 0.5f}}, 0.5f}}, false);
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const Vec3f in_hole = boundary_force(w.topo, w.state, p, 0);  // nearest hole edge y = 0.625
   CHECK(in_hole.x == 0.0f);
   CHECK(in_hole.y == 0.3125f);
@@ -184,7 +184,7 @@ TEST_CASE("torsion: Eq. 5 turns a slice rotated by +5 or -5 degrees back, with m
     INFO(degrees);
     WorldBuilder b;
     b.add_element({{test::square(0.5f, 0.5f, 0.125f), 0.5f}}, false);
-    test::World w = b.build();
+    test::TinyWorld w = b.build();
     const double a = degrees * pi / 180.0;
     for (int v = 0; v < 4; ++v) {
       const double ux = w.state.x[v] - 0.5, uy = w.state.y[v] - 0.5;
@@ -214,7 +214,7 @@ TEST_CASE("torsion: no force at the rest orientation") {
   const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{test::square(0.5f, 0.5f, 0.125f), 0.5f}}, false);
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   std::vector<float> cx, cy;
   slice_centroids(w.topo, w.state, cx, cy);
   for (int v = 0; v < 4; ++v) {
@@ -232,7 +232,7 @@ TEST_CASE("torsion: a keyed slice holding its target angle turns back with k_tar
   const test::Ring tri = {{0.6f, 0.5f}, {0.4f, 0.4f}, {0.4f, 0.6f}};
   WorldBuilder b;
   b.add_element({{tri, 0.0f}, {tri, 1.0f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   for (int v = 0; v < 3; ++v) w.topo.flags[v] |= vertex_hold_angle;
   const double a = 10.0 * pi / 180.0;
   const double c = (0.6 + 0.4 + 0.4) / 3.0;  // centroid (c, 0.5)
@@ -264,7 +264,7 @@ TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triang
   const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element({{test::square(0.5f, 0.5f, 0.5f), 0.5f}});  // fan (0,1,2), (0,2,3) over (0,0)..(1,1)
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const OverlapResult crossing{true, false};  // an edge crossing only: Eq. 3 without the depth term
   const Vec3f f1 = overlap_force(w.topo, w.state, p, 1, crossing);  // only in (0,1,2): centroid (2/3, 1/3)
   CHECK(f1.x == Approx(-5.0 / 3.0).epsilon(1e-6));

@@ -199,7 +199,7 @@ TEST_CASE("grid: far slots are the far triangles' slots, or one run head per cel
       const std::int32_t own = std::uniform_int_distribution<int>(0, 3)(rng);
       INFO("mode " << cells_mode << " q " << q.x << ", " << q.y << ", " << q.t << " own " << own);
       far_triangles(g, q, own, far);
-      far_slots(g, q, own, slots);
+      repulsion_far_slots(g, q, own, slots);
       if (cells_mode == 0) {
         std::vector<std::int32_t> as_triangles;
         for (const std::int32_t k : slots) as_triangles.push_back(g.sorted_triangles[k]);

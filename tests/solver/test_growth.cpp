@@ -11,6 +11,7 @@
 #include "animpak/reference.hpp"
 #include "animpak/scene.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "tiny_worlds.hpp"
 
 using namespace animpak;
 
@@ -24,7 +25,7 @@ bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the others grow, capped") {
+TEST_CASE("growth: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the others grow, capped") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
@@ -55,7 +56,7 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
 
   const SimState before = state;
   std::vector<std::uint8_t> changed;
-  const std::int32_t count = reference::grow_slices(topo, contact, params, true, state, changed);
+  const std::int32_t count = test::grow_step(topo, contact, params, true, state, changed);
   REQUIRE(changed.size() == static_cast<std::size_t>(topo.slice_count()));
   CHECK(count == topo.slice_count() - 6);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
@@ -83,7 +84,7 @@ TEST_CASE("grow_slices: spilling slices and the larger of overlapping ones shrin
   CHECK(state.spring_rest == before.spring_rest);
 }
 
-TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side too") {
+TEST_CASE("growth: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side too") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
@@ -102,7 +103,7 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   contact[topo.slice_begin[8]] = contact_wall;  // at the wall: holds
   const SimState start = state;
   std::vector<std::uint8_t> changed;
-  CHECK(reference::grow_slices(topo, contact, params, false, state, changed) == 0);
+  CHECK(test::grow_step(topo, contact, params, false, state, changed) == 0);
   const float settle = static_cast<float>(params.settle_shrink_rate * params.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
@@ -110,7 +111,7 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   }
   // Growing, the smaller side of an overlap pauses and the wall holds; the rest grows.
   state = start;
-  reference::grow_slices(topo, contact, params, true, state, changed);
+  test::grow_step(topo, contact, params, true, state, changed);
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
   const float step = static_cast<float>(params.growth_rate * params.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
@@ -120,7 +121,7 @@ TEST_CASE("grow_slices: while settling, nothing grows and every overlapping slic
   }
 }
 
-TEST_CASE("grow_slices: a secondary element keeps its size until secondary_since, and a primary slice ignores it") {
+TEST_CASE("growth: a secondary element keeps its size until secondary_since, and a primary slice ignores it") {
   World w = growth_world();
   Topology& topo = w.topology;
   REQUIRE(topo.element_count() == 2);
@@ -137,7 +138,7 @@ TEST_CASE("grow_slices: a secondary element keeps its size until secondary_since
   contact[topo.slice_begin[6]] = contact_overlap | contact_block | contact_yield;
   const SimState start = state;
   std::vector<std::uint8_t> changed;
-  reference::grow_slices(topo, contact, params, true, state, changed);
+  test::grow_step(topo, contact, params, true, state, changed);
   const float step = static_cast<float>(params.growth_rate * params.dt);
   const float shrink = static_cast<float>(params.shrink_rate * params.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
@@ -148,19 +149,19 @@ TEST_CASE("grow_slices: a secondary element keeps its size until secondary_since
   // Once the secondary elements may grow, they do.
   state = start;
   state.secondary_since = 40;
-  reference::grow_slices(topo, contact, params, true, state, changed);
+  test::grow_step(topo, contact, params, true, state, changed);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     CHECK(same_bits(state.growth[s], s == 6 ? 1.5f - shrink : 1.5f + step));
   }
   // Settling, the primary slice that overlaps only a secondary element does not shrink.
   state = start;
-  reference::grow_slices(topo, contact, params, false, state, changed);
+  test::grow_step(topo, contact, params, false, state, changed);
   CHECK(same_bits(state.growth[1], 1.5f));
   CHECK(state.growth[6] < 1.5f);
 }
 
-TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of its element") {
+TEST_CASE("growth: no slice outgrows growth_ratio × the smallest slice of its element") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.element_count() == 2);
@@ -173,7 +174,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
   contact[topo.slice_begin[2]] = contact_wall;
   std::vector<std::uint8_t> changed;
-  for (int step = 0; step < 40; ++step) reference::grow_slices(topo, contact, params, true, state, changed);
+  for (int step = 0; step < 40; ++step) test::grow_step(topo, contact, params, true, state, changed);
   for (std::int32_t s = topo.element_slice_begin[0]; s < topo.element_slice_begin[1]; ++s) {
     INFO("slice " << s);
     CHECK(state.growth[s] <= 1.3f * state.growth[2]);
@@ -190,7 +191,7 @@ TEST_CASE("grow_slices: no slice outgrows growth_ratio × the smallest slice of 
   contact.assign(topo.vertex_count(), 0);
   contact[topo.slice_begin[topo.element_slice_begin[1]]] = contact_overlap | contact_block;
   for (int step = 0; step < 10; ++step) {
-    reference::grow_slices(topo, contact, params, true, state, changed);
+    test::grow_step(topo, contact, params, true, state, changed);
     float lo = 1e9f, hi = 0.0f;
     for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
       lo = std::min(lo, state.growth[s]), hi = std::max(hi, state.growth[s]);
@@ -229,7 +230,7 @@ TEST_CASE("update_rest_lengths: exactly the springs touching a grown slice chang
   CHECK(changed_elsewhere == 0);
 }
 
-TEST_CASE("grow_slices: no slice outgrows either time neighbour by more than neighbour_growth_ratio") {
+TEST_CASE("growth: no slice outgrows either time neighbour by more than neighbour_growth_ratio") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
@@ -242,7 +243,7 @@ TEST_CASE("grow_slices: no slice outgrows either time neighbour by more than nei
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
   contact[topo.slice_begin[2]] = contact_wall;
   std::vector<std::uint8_t> changed;
-  for (int k = 0; k < 2000; ++k) reference::grow_slices(topo, contact, params, true, state, changed);
+  for (int k = 0; k < 2000; ++k) test::grow_step(topo, contact, params, true, state, changed);
   CHECK(state.growth[2] == 1.0f);
   CHECK(state.growth[1] == Approx(1.03f).epsilon(1e-6));
   CHECK(state.growth[3] == Approx(1.03f).epsilon(1e-6));

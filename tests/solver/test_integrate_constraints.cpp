@@ -19,7 +19,7 @@ ForceField field(std::vector<Vec3f> forces) {
   return f;
 }
 
-test::World loose_points(int n) {
+test::TinyWorld loose_points(int n) {
   WorldBuilder b;
   test::Ring ring;
   for (int i = 0; i < n; ++i) ring.push_back({0.5f, 0.5f});
@@ -33,7 +33,7 @@ TEST_CASE("integrate: velocity first, then position from the new velocity") {
   Params p = test::paper_params();
   p.dt = 0.5;           // exact in float, so the expected values are exact
   p.velocity_cap = 10;  // cap 5: not reached
-  test::World w = loose_points(1);
+  test::TinyWorld w = loose_points(1);
   w.state.vx[0] = 0.25f;
   integrate(field({{1.0f, -0.5f, 0.25f}}), p, w.state);
   CHECK(w.state.vx[0] == 0.75f);
@@ -49,11 +49,11 @@ TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
   const float cap = static_cast<float>(p.velocity_cap * p.dt);
   std::mt19937 rng(99);
   std::uniform_real_distribution<float> force(-1000.0f, 1000.0f);
-  test::World w = loose_points(200);
+  test::TinyWorld w = loose_points(200);
   std::vector<Vec3f> forces;
   for (int v = 0; v < 200; ++v) forces.push_back({force(rng), force(rng), v % 10 == 0 ? 0.0f : force(rng)});
   forces[0] = {1e-3f, 0.0f, 0.0f};  // slow: untouched by the cap
-  const test::World before = w;
+  const test::TinyWorld before = w;
   integrate(field(forces), p, w.state);
   for (int v = 0; v < 200; ++v) {
     INFO(v);
@@ -75,11 +75,11 @@ TEST_CASE("constraints: end-to-end and simultaneity hold after application, per 
   WorldBuilder b;
   b.add_element(test::square_tube(0.3f, 0.3f, 0.05f, {0.0f, 0.3f, 0.7f, 1.0f}));
   b.add_element(test::square_tube(0.7f, 0.7f, 0.05f, {0.0f, 0.5f, 1.0f}));
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> jitter(-0.05f, 0.05f);
   for (float& t : w.state.t) t += jitter(rng);
-  const test::World jittered = w;
+  const test::TinyWorld jittered = w;
 
   apply_end_to_end(w.topo, w.state, 0);
   apply_simultaneity(w.topo, w.state, 0);
@@ -120,8 +120,8 @@ TEST_CASE("constraints: loop pairs move both ends to their average x, y and keep
     b.add_loop(8 + k, 12 + k);
     b.add_loop(20 + k, 0 + k);
   }
-  test::World w = b.build();
-  const test::World before = w;
+  test::TinyWorld w = b.build();
+  const test::TinyWorld before = w;
   apply_loop(w.topo, w.state);
   for (std::size_t i = 0; i < w.topo.loop_end.size(); ++i) {
     const std::int32_t a = w.topo.loop_end[i], c = w.topo.loop_start[i];

@@ -19,7 +19,7 @@ namespace {
 
 // `elements` rings of 6 vertices, `slices` slices each at jittered times (sometimes out of order, so
 // the pair walk meets flat and reversed pairs), radii in [r0, r1], spread over [0, 1]².
-test::World spread_world(std::uint32_t seed, int elements, int slices, float r0, float r1) {
+test::TinyWorld spread_world(std::uint32_t seed, int elements, int slices, float r0, float r1) {
   std::mt19937 rng(seed);
   auto uniform = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
   WorldBuilder b;
@@ -41,9 +41,9 @@ test::World spread_world(std::uint32_t seed, int elements, int slices, float r0,
   return b.build();
 }
 
-// The box test of point_overlap, written out: e's pair around pt (walked from slice index `start`)
+// The box test of overlap_point, written out: e's pair around pt (walked from slice index `start`)
 // holds pt in its t range and its two slices' boxes meet the query's box.
-bool box_test_accepts(const test::World& w, const SliceBoxes& boxes, std::int32_t e, std::int32_t start, float px,
+bool box_test_accepts(const test::TinyWorld& w, const SliceBoxes& boxes, std::int32_t e, std::int32_t start, float px,
                       float py, float pt, float nx, float ny) {
   const Topology& topo = w.topo;
   const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
@@ -65,7 +65,7 @@ struct Tally {
 
 // One query against the brute-force box test: every accepted element is a candidate, and the
 // candidates increase strictly.
-void check_query(const test::World& w, const SliceBoxes& boxes, const OverlapGrid& grid, std::int32_t start, float px,
+void check_query(const test::TinyWorld& w, const SliceBoxes& boxes, const OverlapGrid& grid, std::int32_t start, float px,
                  float py, float pt, float nx, float ny, Tally& tally) {
   std::vector<std::int32_t> found;
   overlap_candidates(grid, w.topo.element_count(), std::min(px, nx), std::max(px, nx), std::min(py, ny),
@@ -88,7 +88,7 @@ void check_query(const test::World& w, const SliceBoxes& boxes, const OverlapGri
 TEST_CASE("overlap broadphase: every element the box test accepts is a candidate, in increasing order") {
   Tally tally;
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    const test::World w = spread_world(seed, 120, 5, 0.01f, 0.06f);
+    const test::TinyWorld w = spread_world(seed, 120, 5, 0.01f, 0.06f);
     SliceBoxes boxes;
     slice_boxes(w.topo, w.state, boxes);
     OverlapGrid grid;
@@ -126,7 +126,7 @@ TEST_CASE("overlap broadphase: every element the box test accepts is a candidate
 TEST_CASE("overlap broadphase: the overlap test gives the same bits as a walk over every element") {
   long overlapping = 0, inside = 0;
   for (std::uint32_t seed = 5; seed <= 8; ++seed) {
-    const test::World w = spread_world(seed, 80, 6, 0.03f, 0.09f);
+    const test::TinyWorld w = spread_world(seed, 80, 6, 0.03f, 0.09f);
     SliceBoxes boxes;
     slice_boxes(w.topo, w.state, boxes);
     OverlapGrid grid;
@@ -149,7 +149,7 @@ TEST_CASE("overlap broadphase: the overlap test gives the same bits as a walk ov
 }
 
 TEST_CASE("overlap broadphase: a NaN box leaves the grid without cells") {
-  test::World w = spread_world(9, 10, 3, 0.02f, 0.05f);
+  test::TinyWorld w = spread_world(9, 10, 3, 0.02f, 0.05f);
   w.state.x[6] = std::numeric_limits<float>::quiet_NaN();  // the first vertex of slice 1: its box
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);

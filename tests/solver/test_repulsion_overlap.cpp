@@ -14,11 +14,11 @@ namespace {
 
 // Vertex 0 (element 0) at (0.5, 0.5, 0.5); one envelope triangle (element 1) flat in t at `tri_t`,
 // covering (0.5, 0.5) in x, y.
-test::World vertex_and_triangle(float tri_t) {
+test::TinyWorld vertex_and_triangle(float tri_t) {
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
   b.add_element({{{{0.48f, 0.48f}, {0.56f, 0.48f}, {0.48f, 0.56f}}, tri_t}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   w.topo.env_a = {1};
   w.topo.env_b = {2};
   w.topo.env_c = {3};
@@ -30,11 +30,11 @@ struct Query {
   std::vector<std::int32_t> near, far;
 };
 
-Query query(const test::World& w, const CollisionGrid& g, std::int32_t v) {
+Query query(const test::TinyWorld& w, const CollisionGrid& g, std::int32_t v) {
   Query q;
   const Vec3f p{w.state.x[v], w.state.y[v], w.state.t[v]};
-  near_slots(g, p, w.topo.element[v], q.near);
-  far_slots(g, p, w.topo.element[v], q.far);
+  repulsion_near_slots(g, p, w.topo.element[v], q.near);
+  repulsion_far_slots(g, p, w.topo.element[v], q.far);
   return q;
 }
 
@@ -51,7 +51,7 @@ test::Ring diamond(float x, float y, float r) { return {{x, y}, {x + r, y - r}, 
 
 TEST_CASE("repulsion: Eq. 1 from the exact closest point of a near triangle") {
   const Params p = test::paper_params();
-  const test::World w = vertex_and_triangle(0.53125f);  // centroid one cell above in t
+  const test::TinyWorld w = vertex_and_triangle(0.53125f);  // centroid one cell above in t
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
   REQUIRE(q.near.size() == 1);
@@ -70,7 +70,7 @@ TEST_CASE("repulsion: Eq. 1 from the exact closest point of a near triangle") {
 
 TEST_CASE("repulsion: Eq. 1 from the centroid of a far triangle") {
   const Params p = test::paper_params();
-  const test::World w = vertex_and_triangle(0.59375f);  // centroid two cells above in t
+  const test::TinyWorld w = vertex_and_triangle(0.59375f);  // centroid two cells above in t
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
   REQUIRE(q.near.empty());
@@ -91,7 +91,7 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
   b.add_element({{{{0.482f, 0.482f}, {0.494f, 0.482f}, {0.482f, 0.494f}, {0.494f, 0.494f}, {0.506f, 0.482f},
                    {0.494f, 0.494f}}, 0.59375f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   w.topo.env_a = {1, 4};
   w.topo.env_b = {2, 5};
   w.topo.env_c = {3, 6};
@@ -141,7 +141,7 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
   b.add_element({{points, 0.511f}}, false);
   b.add_element({{{{0.49f, 0.49f}, {0.51f, 0.49f}, {0.49f, 0.51f}}, 0.59375f}}, false);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   for (std::int32_t tri = 0; tri < 12; ++tri) {
     w.topo.env_a.push_back(1 + 3 * tri);
     w.topo.env_b.push_back(2 + 3 * tri);
@@ -185,7 +185,7 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
 
 TEST_CASE("repulsion: interior vertices get none") {
   const Params p = test::paper_params();
-  test::World w = vertex_and_triangle(0.53125f);
+  test::TinyWorld w = vertex_and_triangle(0.53125f);
   w.topo.flags[0] = 0;
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
@@ -201,7 +201,7 @@ std::vector<test::TinySlice> moving_square(float x0, float x1, float h) {
   return {{test::square(x0, 0.5f, h), 0.0f}, {test::square(x1, 0.5f, h), 1.0f}};
 }
 
-OverlapResult overlap_at(const test::World& w, std::int32_t v,
+OverlapResult overlap_at(const test::TinyWorld& w, std::int32_t v,
                          std::int32_t interval_points = Params{}.interval_points) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
@@ -211,7 +211,7 @@ OverlapResult overlap_at(const test::World& w, std::int32_t v,
 }
 
 // Two thin bars crossing like a plus sign over 26 slices: element 0 horizontal, element 1 vertical.
-test::World crossing_bars() {
+test::TinyWorld crossing_bars() {
   const auto times = times26();
   const auto bar = [&](float w, float h) {
     std::vector<test::TinySlice> slices;
@@ -234,7 +234,7 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
   b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));  // A: vertex 12·4 + 1 is (0.5, 0.49)
   b.add_element(test::square_tube(0.5f, 0.5f, 0.03f, times));     // B: contains it, boundary 0.02 away
   b.add_element(test::square_tube(0.525f, 0.49f, 0.01f, times));  // C: outside, 0.015 away
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const std::int32_t v = 12 * 4 + 1;
   REQUIRE(w.state.x[v] == 0.5f);
   REQUIRE(w.state.y[v] == 0.49f);
@@ -262,7 +262,7 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
   WorldBuilder without_b;
   without_b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));
   without_b.add_element(test::square_tube(0.525f, 0.49f, 0.01f, times));
-  const test::World w2 = without_b.build();
+  const test::TinyWorld w2 = without_b.build();
   CHECK_FALSE(overlap_at(w2, v).overlap);
 }
 
@@ -275,7 +275,7 @@ TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged
   WorldBuilder b;
   b.add_element(test::square_tube(0.5f, 0.5f, 0.005f, times));  // A: tiny, at the centre
   b.add_element(test::square_tube(0.5f, 0.5f, 0.1f, times));    // B: around it
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   const std::int32_t v = 12 * 4;
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, v);
@@ -292,7 +292,7 @@ TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged
 TEST_CASE("overlap: two elements whose edges cross with no vertex inside are both flagged") {
   // Two thin bars crossing like a plus sign: no corner of either lies inside the other, but a long
   // edge of each crosses the other's outline twice.
-  const test::World w = crossing_bars();
+  const test::TinyWorld w = crossing_bars();
   int inside = 0, flagged = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
     const OverlapResult r = overlap_at(w, v);
@@ -314,7 +314,7 @@ TEST_CASE("overlap: two elements whose edges cross with no vertex inside are bot
 TEST_CASE("overlap: the larger of two overlapping elements yields, the smaller does not") {
   // The crossing bars again, the horizontal one grown larger (g 2 against 1.5) in every slice: its
   // flagged vertices must give way (yield), the vertical bar's only pause. Equal g: both yield.
-  test::World w = crossing_bars();
+  test::TinyWorld w = crossing_bars();
   for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = 1.5f;
   int larger = 0, smaller = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
@@ -336,7 +336,7 @@ TEST_CASE("overlap: a secondary element gives way to a primary one whatever thei
   // The crossing bars, the vertical one secondary (docs/parameters.md, "Secondary elements"): its
   // flagged vertices block and yield even when it is the smaller; the primary bar's are flagged as
   // overlapping (for the forces and the statistics) but neither block nor yield, even when it is the larger.
-  test::World w = crossing_bars();
+  test::TinyWorld w = crossing_bars();
   w.topo.element_secondary = {0, 1};
   for (const float secondary_g : {1.5f, 3.0f}) {
     for (int s = 0; s < 26; ++s) w.state.growth[s] = 2.0f, w.state.growth[26 + s] = secondary_g;
@@ -369,7 +369,7 @@ TEST_CASE("overlap: elements that cross only between two slices are found at the
   WorldBuilder b;
   b.add_element(moving_square(0.4f, 0.6f, 0.04f));
   b.add_element(moving_square(0.6f, 0.4f, 0.05f));
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   for (std::int32_t v = 0; v < 8; ++v) {
     INFO("vertex " << v);
     const OverlapResult r = overlap_at(w, v);
@@ -383,7 +383,7 @@ TEST_CASE("overlap: elements that cross only between two slices are found at the
   WorldBuilder still;
   still.add_element(moving_square(0.4f, 0.4f, 0.04f));
   still.add_element(moving_square(0.6f, 0.6f, 0.05f));
-  const test::World s = still.build();
+  const test::TinyWorld s = still.build();
   for (std::int32_t v = 0; v < s.topo.vertex_count(); ++v) CHECK_FALSE(overlap_at(s, v).overlap);
 }
 
@@ -395,7 +395,7 @@ TEST_CASE("overlap: a pass between the middle and a slice is found at the quarte
   WorldBuilder b;
   b.add_element(moving_square(0.4f, 0.6f, 0.04f));
   b.add_element(moving_square(0.8f, 0.5f, 0.05f));
-  const test::World w = b.build();
+  const test::TinyWorld w = b.build();
   REQUIRE(Params{}.interval_points == 3);
   // Quarter points: the vertices at t = 1 test 0.75 (and 0.5), those at t = 0 test 0.25 and 0.5. At
   // 0.75 A spans x 0.51-0.59 and B 0.525-0.625 (y 0.46-0.54 and 0.45-0.55): A's right corners (5, 6) lie
@@ -423,7 +423,7 @@ TEST_CASE("overlap: the other element's boundary is interpolated linearly betwee
     WorldBuilder b;
     b.add_element({{diamond(0.55f, 0.5f, 0.02f), t}}, false);
     b.add_element(grow);
-    const test::World w = b.build();
+    const test::TinyWorld w = b.build();
     CHECK(overlap_at(w, 0).inside == inside);
   }
 }
@@ -432,7 +432,7 @@ TEST_CASE("overlap: never inside one's own element, and interior vertices are no
   const Params p = test::paper_params();
   WorldBuilder b;
   b.add_element(test::square_tube(0.5f, 0.5f, 0.06f, times26()));
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const std::int32_t v = 12 * 4;
   CHECK_FALSE(overlap_at(w, v).overlap);

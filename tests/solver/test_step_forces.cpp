@@ -22,12 +22,12 @@ std::vector<float> step_times26() {
 
 // Element 0 spans x, y in [0.35, 0.45] × [0.45, 0.55]; element 1 is a square of half-size h1 about
 // (x1, 0.5). Positions are jittered by up to 0.004; element 0 has a target point.
-test::World two_tubes(float x1, float h1, std::uint32_t seed) {
+test::TinyWorld two_tubes(float x1, float h1, std::uint32_t seed) {
   WorldBuilder b;
   b.add_element(test::square_tube(0.4f, 0.5f, 0.05f, step_times26()));
   b.add_element(test::square_tube(x1, 0.5f, h1, step_times26()));
   b.add_target(13 * 4 + 2, 0.45f, 0.55f, 0.5f);
-  test::World w = b.build();
+  test::TinyWorld w = b.build();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> jitter(-0.004f, 0.004f);
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
@@ -44,7 +44,7 @@ bool same(Vec3f a, Vec3f b) { return a.x == b.x && a.y == b.y && a.t == b.t; }
 
 TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its own function") {
   const Params p = test::paper_params();
-  const test::World w = two_tubes(0.52f, 0.05f, 5);  // 0.02 apart
+  const test::TinyWorld w = two_tubes(0.52f, 0.05f, 5);  // 0.02 apart
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   ForceBreakdown parts;
   const StepForces f = step_forces(w.topo, w.state, p, g, &parts);
@@ -63,8 +63,8 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
     CHECK(same(f.total.at(v), again.total.at(v)));
 
     const Vec3f q{w.state.x[v], w.state.y[v], w.state.t[v]};
-    near_slots(g, q, w.topo.element[v], near);
-    far_slots(g, q, w.topo.element[v], far);
+    repulsion_near_slots(g, q, w.topo.element[v], near);
+    repulsion_far_slots(g, q, w.topo.element[v], far);
     CHECK((f.contact[v] & contact_overlap) == 0);
     const RepulsionResult rr = repulsion_force(w.topo, w.state, p, g, v, near, far, false);
     CHECK(same(r, rr.force));
@@ -87,7 +87,7 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
 TEST_CASE("step_forces: a vertex inside another element gets overlap instead of repulsion") {
   const Params p = test::paper_params();
   // Element 1 spans [0.40, 0.54] × [0.43, 0.57]: element 0's two right corners are 0.02 inside it.
-  const test::World w = two_tubes(0.47f, 0.07f, 6);
+  const test::TinyWorld w = two_tubes(0.47f, 0.07f, 6);
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   ForceBreakdown parts;
   const StepForces f = step_forces(w.topo, w.state, p, g, &parts);

@@ -12,6 +12,14 @@
 
 namespace animpak::test {
 
+/// One growth step as both backends take it: each slice's proposal, then the element and neighbour limits.
+inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
+                              bool growing, SimState& state, std::vector<std::uint8_t>& changed) {
+  std::vector<float> proposed;
+  reference::propose_growth(topo, contact, params, growing, state, proposed);
+  return reference::grow_slices(topo, proposed, params, state, changed);
+}
+
 /// The paper's constants as printed (§5), taken literally: round numbers that make the expected values
 /// in these tests checkable by hand. The library's defaults are these converted to the unit container
 /// (docs/parameters.md), which would hide the arithmetic behind factors of 500.
@@ -42,7 +50,7 @@ struct TinySlice {
   float t = 0.0f;
 };
 
-struct World {
+struct TinyWorld {
   Topology topo;
   SimState state;
 };
@@ -137,8 +145,8 @@ class WorldBuilder {
     topo_.container = c;
   }
 
-  World build() const {
-    World w{topo_, state_};
+  TinyWorld build() const {
+    TinyWorld w{topo_, state_};
     const std::int32_t n = topo_.vertex_count();
     // Springs: CSR with each spring at both ends, slots in insertion order.
     std::vector<std::vector<LooseSpring>> slots(n);

@@ -102,12 +102,12 @@ class DeviceBackend final : public OpenclBackend {
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
     timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
     build_overlap_grid();
-    timed(times_.forces, repulsion_.run(queue_, boundary_count_));
+    timed(times_.forces, repulsion_force_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
     timed(times_.integrate, integrate_.run(queue_, world_.vertices));
     timed(times_.constraints, constraints_.run(queue_, world_.slices));
     timed(times_.loop, loop_.run(queue_, world_.loops));
-    timed(times_.constraints, containment_.run(queue_, world_.vertices));
+    timed(times_.constraints, apply_containment_.run(queue_, world_.vertices));
     timed(times_.growth, propose_growth_.run(queue_, world_.slices));
     timed(times_.growth, grow_.run(queue_, world_.slices));
     timed(times_.growth, rest_lengths_.run(queue_, world_.vertices));
@@ -172,7 +172,7 @@ class DeviceBackend final : public OpenclBackend {
     slice_centroids_.run(queue_, world_.slices);
     slice_boxes_.run(queue_, world_.slices);
     build_overlap_grid();
-    repulsion_.run(queue_, boundary_count_);
+    repulsion_force_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
     forces_.set(0, world_);
     reference::StepForces r;
@@ -316,10 +316,10 @@ class DeviceBackend final : public OpenclBackend {
     slice_boxes_ = Kernel(program, "slice_boxes");
     slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, x_, y_, t_, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
                       w.box_t);
-    repulsion_ = Kernel(program, "repulsion");
+    repulsion_force_ = Kernel(program, "repulsion_force");
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ =
-        repulsion_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
+        repulsion_force_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
                         w.cell_start, w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct,
                         w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
                         b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, b.element_secondary,
@@ -342,8 +342,8 @@ class DeviceBackend final : public OpenclBackend {
     constraints_.bind(world_, b.slice_begin, b.slice_element, b.element_slice_begin, t_);
     loop_ = Kernel(program, "loop_constraint");
     loop_.bind(world_, b.loop_end, b.loop_start, x_, y_);
-    containment_ = Kernel(program, "containment");
-    containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
+    apply_containment_ = Kernel(program, "apply_containment");
+    apply_containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                       opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, secondary_since_ == 0 ? 1 : 0, b.slice_begin,
@@ -484,9 +484,9 @@ class DeviceBackend final : public OpenclBackend {
     const OverlapGridInfo info{overlap_grid_.nx,  overlap_grid_.ny,   overlap_grid_.nt,
                                overlap_grid_.x0,  overlap_grid_.y0,   overlap_grid_.t0,
                                overlap_grid_.cell, overlap_grid_.cell_t};
-    repulsion_.set(overlap_grid_arg_, info);
-    repulsion_.set(overlap_grid_arg_ + 1, w.overlap_start);
-    repulsion_.set(overlap_grid_arg_ + 2, w.overlap_elements);
+    repulsion_force_.set(overlap_grid_arg_, info);
+    repulsion_force_.set(overlap_grid_arg_ + 1, w.overlap_start);
+    repulsion_force_.set(overlap_grid_arg_ + 2, w.overlap_elements);
   }
 
   Topology topo_;
@@ -517,8 +517,8 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_, slice_centroids_, forces_,
-      integrate_, constraints_, loop_, containment_, propose_growth_, grow_, rest_lengths_, statistics_;
+      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_force_, slice_centroids_, forces_,
+      integrate_, constraints_, loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
   reference::SliceBoxes boxes_;

@@ -53,7 +53,8 @@ class ReferenceBackend final : public Backend {
     }
     {
       PhaseStopwatch w(times_.growth);
-      grown_ = reference::grow_slices(topo_, forces.contact, params_, state_.settling_since == 0, state_, changed_);
+      reference::propose_growth(topo_, forces.contact, params_, state_.settling_since == 0, state_, proposed_);
+      grown_ = reference::grow_slices(topo_, proposed_, params_, state_, changed_);
       reference::update_rest_lengths(topo_, changed_, state_);
     }
     closest_ = std::move(forces.closest);
@@ -92,6 +93,7 @@ class ReferenceBackend final : public Backend {
   reference::CollisionGrid grid_;
   std::vector<float> closest_;
   std::vector<std::uint8_t> contact_, changed_;
+  std::vector<float> proposed_;
   SliceStatistics slices_;
   std::int32_t grown_ = 0;
   PhaseTimes times_;

@@ -11,28 +11,6 @@
 
 namespace animpak::reference {
 
-bool ray_crosses_segment(float px, float py, float ax, float ay, float bx, float by) {
-  // Half-open in y (one end above, one not) so a ray through a shared vertex counts once.
-  if ((ay > py) == (by > py)) return false;
-  const float xi = (bx - ax) * (py - ay) / (by - ay) + ax;
-  return px < xi;
-}
-
-namespace {
-
-float orient(float ax, float ay, float bx, float by, float cx, float cy) {
-  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-bool opposite(float a, float b) { return (a > 0.0f && b < 0.0f) || (a < 0.0f && b > 0.0f); }
-
-}  // namespace
-
-bool segments_cross(float px, float py, float nx, float ny, float ax, float ay, float bx, float by) {
-  return opposite(orient(ax, ay, bx, by, px, py), orient(ax, ay, bx, by, nx, ny)) &&
-         opposite(orient(px, py, nx, ny, ax, ay), orient(px, py, nx, ny, bx, by));
-}
-
 ContainerQuery container_query(const ContainerGeometry& box, float px, float py, bool nearest) {
   ContainerQuery q;
   const std::size_t segments = box.ax.size();
@@ -88,12 +66,12 @@ bool edge_crosses_container(const ContainerGeometry& box, float px, float py, fl
     for (std::int32_t j = j0; j <= j1; ++j)
       for (std::int32_t k = ix.data[j]; k < ix.data[j + 1]; ++k) {
         const std::int32_t i = ix.data[ix.band_segments + k];
-        if (segments_cross(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
+        if (segments_cross_properly(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
       }
     return false;
   }
   for (std::size_t i = 0; i < segments; ++i)
-    if (segments_cross(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
+    if (segments_cross_properly(px, py, nx, ny, box.ax[i], box.ay[i], box.bx[i], box.by[i])) return true;
   return false;
 }
 

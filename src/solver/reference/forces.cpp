@@ -48,8 +48,8 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     const float px = state.x[v], py = state.y[v];
     if (boundary) {
       const Vec3f q{px, py, state.t[v]};
-      near_slots(grid, q, topo.element[v], near);
-      far_slots(grid, q, topo.element[v], far);
+      repulsion_near_slots(grid, q, topo.element[v], near);
+      repulsion_far_slots(grid, q, topo.element[v], far);
     }
     const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v, params.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);

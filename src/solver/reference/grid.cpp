@@ -124,13 +124,13 @@ void slots_to_triangles(const CollisionGrid& grid, std::vector<std::int32_t>& sl
 
 }  // namespace
 
-void near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
+void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
   collect(grid, q, own_element, 1, 0, out);
 }
 
 void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                     std::vector<std::int32_t>& out) {
-  near_slots(grid, q, own_element, out);
+  repulsion_near_slots(grid, q, own_element, out);
   slots_to_triangles(grid, out);
 }
 
@@ -140,7 +140,7 @@ void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
   slots_to_triangles(grid, out);
 }
 
-void far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
                std::vector<std::int32_t>& out) {
   out.clear();
   for_block_cells(grid, q, 2, 2, [&](std::int32_t c) {

@@ -8,18 +8,14 @@
 
 namespace animpak::reference {
 
-std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                         bool growing, SimState& state, std::vector<std::uint8_t>& changed) {
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
+                    bool growing, const SimState& state, std::vector<float>& proposed) {
   const float step = static_cast<float>(params.growth_rate * params.dt);
   // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
   const float shrink = static_cast<float>((growing ? params.shrink_rate : params.settle_shrink_rate) * params.dt);
   const float cap = static_cast<float>(params.max_growth);
-  const float ratio = static_cast<float>(params.growth_ratio);
-  const float neighbour_ratio = static_cast<float>(params.neighbour_growth_ratio);
   const std::int32_t slices = topo.slice_count();
-
-  // Each slice's own proposal from its contacts.
-  std::vector<float> proposed(slices);
+  proposed.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
     std::uint8_t bits = 0;
     for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) bits |= contact[v];
@@ -40,9 +36,14 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<std::uint8_t>& 
     }
     proposed[s] = next;
   }
+}
 
+std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
+                         SimState& state, std::vector<std::uint8_t>& changed) {
+  const float ratio = static_cast<float>(params.growth_ratio);
+  const float neighbour_ratio = static_cast<float>(params.neighbour_growth_ratio);
   // The element's smallest proposal bounds every slice of it, and each slice's time neighbours bound it.
-  changed.assign(slices, growth_kept);
+  changed.assign(topo.slice_count(), growth_kept);
   std::int32_t grown = 0;
   for (std::int32_t e = 0; e < topo.element_count(); ++e) {
     const std::int32_t first = topo.element_slice_begin[e], end = topo.element_slice_begin[e + 1];
