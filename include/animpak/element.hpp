@@ -11,6 +11,7 @@
 #include "animpak/geometry.hpp"
 #include "animpak/io.hpp"
 #include "animpak/params.hpp"
+#include "animpak/spring_class.hpp"
 
 namespace animpak {
 
@@ -53,10 +54,6 @@ Outline element_outline(const NormalizedArt& art, double offset);
 /// the union of these; docs/quality.md measures frames with it.
 std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
                                               double stroke_width, double tolerance);
-
-enum class SpringClass : std::uint8_t { edge = 0, shear = 1, negative_space = 2, time = 3, target = 4 };
-inline constexpr int spring_class_count = 5;
-const char* spring_class_name(SpringClass c);
 
 using Edge = std::array<int, 2>;      ///< vertex ids, first < second
 using Triangle = std::array<int, 3>;  ///< vertex ids, counter-clockwise in y-up terms

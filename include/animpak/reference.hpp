@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "animpak/closest_point.hpp"
-#include "animpak/element.hpp"
 #include "animpak/params.hpp"
 #include "animpak/simulation.hpp"
+#include "animpak/spring_class.hpp"
 #include "animpak/state.hpp"
 
 namespace animpak::reference {

@@ -34,6 +34,10 @@ struct Container {
 /// index for a missing index, an outline with fewer than 3 points or no area, or a hole outside it.
 Container make_container(const ArtShape& art, const ContainerSpec& spec);
 
+/// Builds box.index, the container query's segment index, for `cells` cells along the longer side of the
+/// segments' bounding box (square cells; a container without segments gets none). container_index.cpp.
+void index_container(ContainerGeometry& box, std::int32_t cells = 32);
+
 /// Blue-noise (Poisson-disk, Bridson) points inside the container, at least `min_distance` apart and
 /// at least `margin` from the boundary, in generation order. Deterministic for the generator's state.
 std::vector<Vec2> poisson_disk(const Container& container, double min_distance, double margin, Rng& rng);

@@ -73,10 +73,6 @@ inline std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
   return static_cast<std::int32_t>(f);
 }
 
-/// Builds box.index for `cells` cells along the longer side of the segments' bounding box (square cells;
-/// a container without segments gets none). src/scene/container_index.cpp.
-void index_container(ContainerGeometry& box, std::int32_t cells = 32);
-
 /// Everything that does not move during a simulation. Vertex ids are global (all elements).
 struct Topology {
   // per vertex

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -118,8 +119,10 @@ struct ValidateOptions {
 /// for bit; 0 when identical, ExitCode::differs when not.
 int validate(const ValidateOptions& options);
 
-/// Parses the command line for this executable's commands (see frontend.hpp) and runs the chosen one;
-/// never throws.
-int run(int argc, char** argv);
+class Frontend;
+
+/// Parses the command line for the shared commands and `frontend`'s own (frontend.hpp) and runs the
+/// chosen one; never throws. Each executable's main() passes its frontend.
+int run(int argc, char** argv, std::unique_ptr<Frontend> frontend);
 
 }  // namespace animpak::cli

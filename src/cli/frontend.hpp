@@ -1,7 +1,8 @@
-// What sets `animpak` and the solver-only `animpak-solve` apart. Both parse their command line in run.cpp;
-// each executable compiles exactly one implementation of make_frontend(): render_commands.cpp (inspect,
-// render, frames after pack, bench --plot; links Cairo and OpenImageIO) or solver_commands.cpp (nothing
-// that draws, so the binary runs where only an OpenCL driver is installed). CMake picks the file, not #ifdefs.
+// What sets `animpak` and the solver-only `animpak-solve` apart. Both parse their command line in run.cpp
+// (the animpak_cli library); each executable's main() hands run() its own Frontend: render_commands.cpp
+// (inspect, render, frames after pack, bench --plot; links Cairo and OpenImageIO) or solver_commands.cpp
+// (nothing that draws, so the binary runs where only an OpenCL driver is installed). CMake picks the file,
+// not #ifdefs, and the library never calls into an executable.
 #pragma once
 
 #include <memory>
@@ -35,7 +36,5 @@ class Frontend {
   /// What bench does with its rows beside the table and JSON; empty when nothing.
   virtual BenchPlotter bench_plotter() const = 0;
 };
-
-std::unique_ptr<Frontend> make_frontend();
 
 }  // namespace animpak::cli

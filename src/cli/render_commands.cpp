@@ -146,6 +146,8 @@ int render(const RenderOptions& options) {
   return 0;
 }
 
-std::unique_ptr<Frontend> make_frontend() { return std::make_unique<RenderingFrontend>(); }
-
 }  // namespace animpak::cli
+
+int main(int argc, char** argv) {
+  return animpak::cli::run(argc, argv, std::make_unique<animpak::cli::RenderingFrontend>());
+}

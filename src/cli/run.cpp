@@ -20,8 +20,7 @@ int fail(const std::string& program, ExitCode code, const std::string& message) 
 
 }  // namespace
 
-int run(int argc, char** argv) {
-  const std::unique_ptr<Frontend> frontend = make_frontend();
+int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   const std::string program = frontend->name();
   CLI::App app{frontend->description(), program};
   app.set_version_flag("--version", program + " 0.1.0 (commit " + std::string(build_commit()) + ")");

@@ -48,6 +48,8 @@ class SolverFrontend final : public Frontend {
 
 }  // namespace
 
-std::unique_ptr<Frontend> make_frontend() { return std::make_unique<SolverFrontend>(); }
-
 }  // namespace animpak::cli
+
+int main(int argc, char** argv) {
+  return animpak::cli::run(argc, argv, std::make_unique<animpak::cli::SolverFrontend>());
+}

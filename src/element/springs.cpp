@@ -5,17 +5,6 @@
 
 namespace animpak {
 
-const char* spring_class_name(SpringClass c) {
-  switch (c) {
-    case SpringClass::edge: return "edge";
-    case SpringClass::shear: return "shear";
-    case SpringClass::negative_space: return "negative_space";
-    case SpringClass::time: return "time";
-    case SpringClass::target: return "target";
-  }
-  return "unknown";
-}
-
 std::size_t SpringCsr::count(SpringClass c) const {
   std::size_t n = 0;
   for (SpringClass k : classes) n += (k == c);

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "animpak/state.hpp"
+#include "animpak/scene.hpp"
 
 namespace animpak {
 

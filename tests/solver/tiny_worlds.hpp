@@ -9,6 +9,7 @@
 
 #include "animpak/element.hpp"
 #include "animpak/reference.hpp"
+#include "animpak/scene.hpp"
 
 namespace animpak::test {
 

@@ -2,7 +2,7 @@
 // here at compile time, and Params is converted to the kernels' floats in exactly one place.
 #include <cstddef>
 
-#include "animpak/element.hpp"
+#include "animpak/spring_class.hpp"
 #include "cl_host.hpp"
 
 namespace animpak::opencl {
