@@ -71,25 +71,6 @@ nlohmann::json worst_json(const WorstError& w, bool whole = false) {
 
 }  // namespace
 
-std::int64_t DeviceValidation::max_ulp() const {
-  double worst = 0.0;
-  for (const ForceComparison& f : forces) worst = std::max(worst, f.ulp.value);
-  return static_cast<std::int64_t>(worst);  // at most 2^32 (compare.hpp), so exact
-}
-
-std::string DeviceValidation::verdict() const {
-  if (!error.empty()) return "error: " + error;
-  if (identical()) return "bit-identical";
-  std::int64_t earliest = -1;
-  for (const ForceComparison& f : forces)
-    if (f.first_state >= 0 && (earliest < 0 || f.first_state < earliest)) earliest = f.first_state;
-  if (earliest < 0) return "DIFFERS: state after step " + std::to_string(first_differing_step);
-  std::string names;
-  for (const ForceComparison& f : forces)
-    if (f.first_state == earliest) names += (names.empty() ? "" : ", ") + f.name;
-  return "DIFFERS: " + names + " (first at state " + std::to_string(earliest) + ")";
-}
-
 void print_table(std::ostream& out, const ValidationHeader& header, const DeviceValidation& v) {
   out << "scene " << header.scene << ": " << header.elements << " elements, " << header.vertices << " vertices, "
       << header.steps << " steps\n"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <fstream>
 
-#include "bench_report.hpp"
+#include "animpak/bench.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
@@ -178,7 +178,7 @@ TEST_CASE("animpak bench --scene with a missing file is bad input naming the fil
 }
 
 TEST_CASE("bench fit: least-squares slope and intercept over one device's rows of one series") {
-  using animpak::cli::BenchRow;
+  using animpak::BenchRow;
   auto row = [](std::string device, std::string series, int vertices, double ms, std::int64_t visits) {
     BenchRow r;
     r.device = std::move(device);
@@ -197,7 +197,7 @@ TEST_CASE("bench fit: least-squares slope and intercept over one device's rows o
                                    row("reference", "constant", 20000, 10.0, 2400000),
                                    row("reference", "scene", 30000, 900.0, 1),
                                    row("reference", "constant", 30000, 18.0, 3300000)};
-  const animpak::cli::LinearFit f = animpak::cli::fit_series(rows, "reference", "constant");
+  const animpak::LinearFit f = animpak::fit_series(rows, "reference", "constant");
   CHECK(f.points == 3);
   CHECK(f.slope_ms_per_kvertex == Approx(0.5));
   CHECK(f.intercept_ms == Approx(2.0));
@@ -206,13 +206,13 @@ TEST_CASE("bench fit: least-squares slope and intercept over one device's rows o
   CHECK(f.cost_ratio == Approx((18.0 / 30000) / (8.0 / 10000)));
   // Forces (half of each step here) per neighbour visit, largest over smallest size.
   CHECK(f.visit_cost_ratio == Approx((9.0 / 3300000) / (4.0 / 1000000)));
-  CHECK(animpak::cli::fit_series(rows, "reference", "dense").points == 1);
+  CHECK(animpak::fit_series(rows, "reference", "dense").points == 1);
 
   // A world with under one visit per vertex costs what its springs and overlap test cost, not its
   // visits: the ratio compares the worlds that visit.
   std::vector<BenchRow> sparse = rows;
   sparse.push_back(row("reference", "constant", 5000, 3.0, 2000));
-  const animpak::cli::LinearFit g = animpak::cli::fit_series(sparse, "reference", "constant");
+  const animpak::LinearFit g = animpak::fit_series(sparse, "reference", "constant");
   CHECK(g.points == 4);
   CHECK(g.min_visits_per_vertex == Approx(0.4));
   CHECK(g.visit_cost_ratio == Approx(f.visit_cost_ratio));
@@ -261,12 +261,12 @@ TEST_CASE("bench: median_round picks the middle round by ms per step, the lower 
     t.phases_ms.forces = forces;
     return t;
   };
-  const StepTiming odd = animpak::cli::median_round({timing(9, 1), timing(3, 2), timing(5, 3)});
+  const StepTiming odd = animpak::median_round({timing(9, 1), timing(3, 2), timing(5, 3)});
   CHECK(odd.ms_per_iter == 5);
   CHECK(odd.phases_ms.forces == 3);  // the phases of that same round
-  CHECK(animpak::cli::median_round({timing(9, 1), timing(3, 2), timing(5, 3), timing(7, 4)}).ms_per_iter == 5);
-  CHECK(animpak::cli::median_round({}).ms_per_iter == 0);
-  CHECK(animpak::cli::median({4.0, 1.0, 2.0, 3.0}) == 2.5);
-  CHECK(animpak::cli::median({3.0, 1.0, 2.0}) == 2.0);
-  CHECK(animpak::cli::median({}) == 0.0);
+  CHECK(animpak::median_round({timing(9, 1), timing(3, 2), timing(5, 3), timing(7, 4)}).ms_per_iter == 5);
+  CHECK(animpak::median_round({}).ms_per_iter == 0);
+  CHECK(animpak::median({4.0, 1.0, 2.0, 3.0}) == 2.5);
+  CHECK(animpak::median({3.0, 1.0, 2.0}) == 2.0);
+  CHECK(animpak::median({}) == 0.0);
 }
