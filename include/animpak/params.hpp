@@ -2,8 +2,8 @@
 // paper's values where they are unit-free; the force constants are the paper's (and the authors'
 // code's) values converted from the authors' 500-unit artboard to the unit container, because taken
 // literally in unit space they give a repulsion that no longer falls off with distance. The
-// conversion and every other difference are in docs/parameters.md. A scene file may override any of them
-// by the name in param_table().
+// conversion and every other difference are in docs/parameters.md. Grouped by the stage that reads them;
+// a scene file may override any of them by its flat name in param_table() ("params": {"k_time": 2}).
 #pragma once
 
 #include <span>
@@ -13,71 +13,93 @@
 namespace animpak {
 
 struct Params {
-  // §3 spacetime elements
-  double offset = 0.04;             ///< Δs, channel of negative space around each element (unit square)
-  double boundary_spacing = 0.15;   ///< longest boundary edge, between samples of the offset outline
-  double boundary_tolerance = 0.008;  ///< largest distance between the boundary polygon and the outline
-  double interior_spacing = 0.15;   ///< minimum distance between interior (Poisson-disk) samples
-  int slices = 100;                 ///< n_s, slices along the time axis
+  /// Reading the art (src/io).
+  struct ArtImport {
+    double flatten_tolerance = 0.1;   ///< largest curve-to-polyline distance when flattening, art units
+  };
 
-  // §4 initial configuration
-  double initial_scale = 0.07;      ///< elements start at 5–10 % of their size
-  double seed_spacing = 0.2;        ///< blue-noise distance between unguided seeds when the scene fills
+  /// §3 spacetime elements (src/element).
+  struct Element {
+    double offset = 0.04;             ///< Δs, channel of negative space around each element (unit square)
+    double boundary_spacing = 0.15;   ///< longest boundary edge, between samples of the offset outline
+    double boundary_tolerance = 0.008;  ///< largest distance between the boundary polygon and the outline
+    double interior_spacing = 0.15;   ///< minimum distance between interior (Poisson-disk) samples
+    int slices = 100;                 ///< n_s, slices along the time axis
+  };
 
-  // §5 forces
-  double k_repulsion = 8e-8;        ///< Eq. 1
-  double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
-  double wall_repulsion = 10.0;     ///< the container's wall repels a boundary vertex like this many Eq. 1 terms
-  double wall_range = 0.08;         ///< ... within this distance of the wall (the 5×5×5 repulsion shell's reach)
-  double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
-  double k_shear = 5000.0;          ///< Eq. 2, shear springs
-  double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
-  double k_time = 5.0;              ///< Eq. 2, time springs
-  double k_target = 500.0;          ///< Eq. 2, target-point springs of guided elements (target slices only)
-  double k_overlap = 5.0;           ///< Eq. 3
-  double k_overlap_depth = 5.0;     ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
-  double k_boundary = 5.0;          ///< Eq. 4
-  double k_torsion = 2e-4;          ///< Eq. 5
-  double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
-  double k_temporal = 1.0;          ///< Eq. 6
-  double dt = 0.05;                 ///< Δt_sim, symplectic Euler step
-  double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
-  double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
-  int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
-  int far_cells = 1;                ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
-                                    ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
-  int interval_points = 3;          ///< the overlap test also checks this many evenly spaced times inside
-                                    ///< every slice interval (1: the middle only; docs/parameters.md)
+  /// §4 initial configuration (src/scene).
+  struct Placement {
+    double initial_scale = 0.07;      ///< elements start at 5–10 % of their size
+    double seed_spacing = 0.2;        ///< blue-noise distance between unguided seeds when the scene fills
+  };
 
-  // §5.3 growth and stopping
-  double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
-  double shrink_rate = 0.01;        ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
-  double growth_ratio = 1.3;        ///< an element's largest g is at most growth_ratio × its smallest
-  double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
-  double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
-  double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
-  int max_iterations = 100000;      ///< hard cap on steps
-  int settle_iterations = 3000;     ///< after the gap test passes, steps without growth to clear overlaps
-  double settle_shrink_rate = 0.04;  ///< while settling, overlapping and spilling slices shrink this fast
-  int stall_window = 1000;          ///< the stall test compares the mean g this many steps apart (0: off)
-  double stall_growth = 0.01;       ///< growth has stalled when the mean g rose by less than this share in a window
-  int check_interval = 10;          ///< NaN/Inf check and statistics every k steps
-  double max_growth = 15.0;         ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
+  /// §5 forces, integration and the spatial queries (src/solver).
+  struct Forces {
+    double k_repulsion = 8e-8;        ///< Eq. 1
+    double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
+    double wall_repulsion = 10.0;     ///< the container's wall repels a boundary vertex like this many Eq. 1 terms
+    double wall_range = 0.08;         ///< ... within this distance of the wall (the 5×5×5 repulsion shell's reach)
+    double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
+    double k_shear = 5000.0;          ///< Eq. 2, shear springs
+    double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
+    double k_time = 5.0;              ///< Eq. 2, time springs
+    double k_target = 500.0;          ///< Eq. 2, target-point springs of guided elements (target slices only)
+    double k_overlap = 5.0;           ///< Eq. 3
+    double k_overlap_depth = 5.0;     ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
+    double k_boundary = 5.0;          ///< Eq. 4
+    double k_torsion = 2e-4;          ///< Eq. 5
+    double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
+    double k_temporal = 1.0;          ///< Eq. 6
+    double dt = 0.05;                 ///< Δt_sim, symplectic Euler step
+    double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
+    double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
+    int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
+    int far_cells = 1;                ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
+                                      ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
+    int interval_points = 3;          ///< the overlap test also checks this many evenly spaced times inside
+                                      ///< every slice interval (1: the middle only; docs/parameters.md)
+  };
 
-  // art import
-  double flatten_tolerance = 0.1;   ///< largest curve-to-polyline distance when flattening, art units
+  /// §5.3 growth (src/solver).
+  struct Growth {
+    double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
+    double shrink_rate = 0.01;        ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
+    double growth_ratio = 1.3;        ///< an element's largest g is at most growth_ratio × its smallest
+    double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
+    double settle_shrink_rate = 0.04;  ///< while settling, overlapping and spilling slices shrink this fast
+    double max_growth = 15.0;         ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
+  };
+
+  /// §5.3 stopping, and how often the run checks (src/solver).
+  struct Stop {
+    double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
+    double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
+    int max_iterations = 100000;      ///< hard cap on steps
+    int settle_iterations = 3000;     ///< after the gap test passes, steps without growth to clear overlaps
+    int stall_window = 1000;          ///< the stall test compares the mean g this many steps apart (0: off)
+    double stall_growth = 0.01;       ///< growth has stalled when the mean g rose by less than this share in a window
+    int check_interval = 10;          ///< NaN/Inf check and statistics every k steps
+  };
+
+  ArtImport art;
+  Element element;
+  Placement placement;
+  Forces forces;
+  Growth growth;
+  Stop stop;
 };
 
 /// One entry of the table of overridable constants.
 struct ParamInfo {
-  std::string_view name;  ///< key in the scene file's "params" object
-  std::variant<double Params::*, int Params::*> member;
+  std::string_view name;  ///< key in the scene file's "params" object, the member's own name
+  std::string_view group;  ///< the Params group holding it: "art", "element", "placement", "forces", "growth", "stop"
+  std::variant<double& (*)(Params&), int& (*)(Params&)> field;  ///< the member, in a given Params
   double min;             ///< smallest valid value (inclusive)
   double max;             ///< largest valid value (inclusive)
   std::string_view meaning;
 };
 
-/// Every member of Params, in declaration order. docs/parameters.md documents each entry.
+/// Every member of Params, group by group in declaration order. docs/parameters.md documents each entry.
 std::span<const ParamInfo> param_table();
 
 /// Reads a constant by its table entry, as a double.

@@ -61,7 +61,7 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
 void fill_slot_elements(const Topology& topo, CollisionGrid& grid);
 
 /// Fills the far-field runs of a built grid (run_next, run_cx/cy/ct; slot_element must be filled) and
-/// sets far_cells; build_collision_grid calls it when params.far_cells is 1, and a device backend's
+/// sets far_cells; build_collision_grid calls it when params.forces.far_cells is 1, and a device backend's
 /// read-back grid too.
 void build_far_runs(CollisionGrid& grid);
 

@@ -1,4 +1,4 @@
-// Running a backend to a stop (paper §5.3), with statistics every params.check_interval steps.
+// Running a backend to a stop (paper §5.3), with statistics every params.stop.check_interval steps.
 #pragma once
 
 #include <atomic>
@@ -21,8 +21,8 @@ struct RunResult {
   double seconds = 0.0;
 };
 
-/// Steps until the largest per-slice gap falls below params.stop_gap, every g passes
-/// params.stop_growth (when set), the iteration count reaches control.max_iterations, an interrupt
+/// Steps until the largest per-slice gap falls below params.stop.stop_gap, every g passes
+/// params.stop.stop_growth (when set), the iteration count reaches control.max_iterations, an interrupt
 /// arrives, or a NaN/Inf appears (then last_good holds the last finite state).
 RunResult run_simulation(Backend& backend, const Params& params, const RunControl& control);
 

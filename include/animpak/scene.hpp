@@ -68,7 +68,7 @@ struct World {
 };
 
 /// Places the elements of `scene` (paper §4): guided elements along their targets, unguided ones on
-/// blue-noise seeds, each shrunk to params.initial_scale; then checks that nothing overlaps and that
+/// blue-noise seeds, each shrunk to params.placement.initial_scale; then checks that nothing overlaps and that
 /// every element is inside the container. InputError names the elements (and slice) at fault.
 World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library);
 

@@ -1,5 +1,5 @@
 // The simulation loop (paper §5): a backend advances the state one step at a time; the Simulation
-// around it checks statistics every params.check_interval steps, stops on the paper's criteria and
+// around it checks statistics every params.stop.check_interval steps, stops on the paper's criteria and
 // keeps the last good state. Backends: the scalar reference (src/solver/reference) and OpenCL.
 #pragma once
 

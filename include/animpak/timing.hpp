@@ -17,7 +17,7 @@ struct StepTiming {
 };
 
 /// Runs `warmup` untimed steps, then `steps` timed ones, calling statistics() every
-/// params.check_interval steps as run_simulation does.
+/// params.stop.check_interval steps as run_simulation does.
 StepTiming time_steps(Backend& backend, const Params& params, int warmup, int steps);
 
 /// Envelope triangles (near block) and far-field slots (far shell: triangles, or cell aggregates with

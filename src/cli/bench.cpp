@@ -67,7 +67,7 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
       SyntheticWorld s = make_synthetic_world(spec);
       const std::string scene = name + "-" + std::to_string(size);
       std::cerr << "animpak: " << scene << ": " << s.elements << " stars x " << s.slices
-                << " slices at initial scale " << s.initial_scale << ", cell_size " << s.world.params.cell_size
+                << " slices at initial scale " << s.initial_scale << ", cell_size " << s.world.params.forces.cell_size
                 << "\n";
       worlds.push_back({scene, name, s.elements, std::move(s.world)});
       print_notes(worlds.back());

@@ -152,7 +152,7 @@ Json element_json(const SpacetimeElement& e, const ArtOutline& outline, const Pa
   for (Vec2 p : e.slice.vertices) ring_box.add(p);
   return {{"scale", e.art.frame.scale},
           {"size", {art_box.width(), art_box.height()}},
-          {"offset", params.offset},
+          {"offset", params.element.offset},
           {"outline_size", {ring_box.width(), ring_box.height()}},
           {"boundary_vertices", e.slice.boundary_count},
           {"slice_vertices", e.vertices_per_slice()},

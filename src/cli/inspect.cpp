@@ -27,7 +27,7 @@ std::vector<Built> build_all(const InspectOptions& options) {
   std::vector<Built> built;
   if (lower_extension(options.file) == ".json") {
     SceneSpec scene = load_scene(options.file);
-    if (options.slices) scene.params.slices = *options.slices;
+    if (options.slices) scene.params.element.slices = *options.slices;
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {
       const LibraryElementSpec& spec = scene.elements[i];
       const ArtShape art = load_art(spec.art);
@@ -36,7 +36,7 @@ std::vector<Built> build_all(const InspectOptions& options) {
     }
   } else {
     Params params;
-    if (options.slices) params.slices = *options.slices;
+    if (options.slices) params.element.slices = *options.slices;
     const ArtShape art = load_art(options.file);
     built.push_back({build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0)),
                      art.warnings});

@@ -123,7 +123,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   std::filesystem::create_directories(out);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value());
   World& world = loaded.world;
-  if (options.max_iterations) world.params.max_iterations = static_cast<int>(*options.max_iterations);
+  if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
   for (const std::string& note : world.notes) std::cerr << "animpak: " << note << "\n";
   std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
             << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
@@ -132,9 +132,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   std::string driver;
   std::unique_ptr<Backend> backend =
       make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
-  Progress progress(static_cast<std::uint64_t>(world.params.max_iterations), world.params.stop_gap);
+  Progress progress(static_cast<std::uint64_t>(world.params.stop.max_iterations), world.params.stop.stop_gap);
   RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(world.params.max_iterations);
+  control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
   control.interrupt = &interrupted;
   control.on_check = [&](const StepStatistics& st) { progress(st); };
   interrupted.store(false);
@@ -170,7 +170,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   if (result.reason == StopReason::unsettled)
     std::cerr << "animpak: warning: " << result.last.overlapping_vertices << " vertices still overlap another element and "
-              << result.last.outside_vertices << " lie outside the container after " << world.params.settle_iterations
+              << result.last.outside_vertices << " lie outside the container after " << world.params.stop.settle_iterations
               << " settling steps; more slices (top-level \"slices\") or a larger params.settle_iterations may help\n";
   if (render_frames && result.reason != StopReason::interrupted) report.quality = render_frames(world, out);
   write_stats(out / "stats.json", report);

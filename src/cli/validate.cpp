@@ -60,7 +60,7 @@ int validate(const ValidateOptions& options) {
   const World world = make_world(scene);
   header.elements = world.elements.size();
   header.vertices = static_cast<std::size_t>(world.topology.vertex_count());
-  header.grid_rebuild_interval = world.params.grid_rebuild_interval;
+  header.grid_rebuild_interval = world.params.forces.grid_rebuild_interval;
   std::vector<DeviceValidation> results;
   for (const DeviceInfo& info : targets) {
     std::cerr << "animpak: validating " << info.name << " (" << info.platform << ") against the reference, "

@@ -9,12 +9,12 @@ namespace animpak {
 SpacetimeElement build_element(const std::string& name, const ArtShape& art, const AnimationSpec& spec,
                                const Params& params, std::uint64_t seed) {
   NormalizedArt normalized = normalize_art(art);
-  Outline outline = element_outline(normalized, params.offset);
+  Outline outline = element_outline(normalized, params.element.offset);
   SliceMesh slice = build_slice(outline, params, seed);
   ArtBinding binding = bind_art(normalized.art, slice);
   std::vector<std::vector<Vec2>> per_slice;
   try {
-    per_slice = animate_slices(slice, outline, normalized.frame, spec, params.slices);
+    per_slice = animate_slices(slice, outline, normalized.frame, spec, params.element.slices);
   } catch (const InputError& e) {
     // The animation's messages name the field; the element and its art file say which scene entry.
     throw InputError("element '" + name + "' (" + art.source.string() + "): " + e.what());

@@ -261,19 +261,19 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
   const std::string name = outline.source.empty() ? std::string("<outline>") : outline.source;
   if (n < 3 || !(std::fabs(signed_area(outline.ring)) > 0.0))
     throw InputError(name + ": the element's outline has fewer than three points or no area");
-  if (!(params.boundary_spacing > 0.0) || !(params.interior_spacing > 0.0))
+  if (!(params.element.boundary_spacing > 0.0) || !(params.element.interior_spacing > 0.0))
     throw InputError(name + ": boundary_spacing and interior_spacing must be positive");
-  if (!(params.boundary_tolerance > 0.0))
+  if (!(params.element.boundary_tolerance > 0.0))
     throw InputError(name + ": boundary_tolerance must be positive");
   const ArcRing arc_ring(outline.ring);
-  double spacing = params.boundary_spacing, tolerance = params.boundary_tolerance;
+  double spacing = params.element.boundary_spacing, tolerance = params.element.boundary_tolerance;
   // A sampling can still cut across a neck narrower than the tolerance and make the boundary polygon
   // cross itself; refine until it is simple (a few rounds at most for any outline offset by Δs).
   for (int attempt = 0; attempt < 12; ++attempt) {
     SliceMesh mesh;
     for (double s : boundary_samples(arc_ring, spacing, tolerance)) mesh.vertices.push_back(arc_ring.at(s));
     mesh.boundary_count = static_cast<int>(mesh.vertices.size());
-    const std::vector<Vec2> interior = interior_samples(mesh.vertices, params.interior_spacing, seed);
+    const std::vector<Vec2> interior = interior_samples(mesh.vertices, params.element.interior_spacing, seed);
     mesh.vertices.insert(mesh.vertices.end(), interior.begin(), interior.end());
     if (mesh.boundary_count >= 3 && triangulate(mesh)) return mesh;
     spacing *= 0.8;

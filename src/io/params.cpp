@@ -8,55 +8,57 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+// The accessor of member M of group G, as a plain function pointer the table can hold.
+template <auto G, auto M>
+constexpr auto field() {
+  return +[](Params& params) -> auto& { return (params.*G).*M; };
+}
+
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
 const std::array<ParamInfo, 42> table{{
-    {"offset", &Params::offset, 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
-    {"boundary_spacing", &Params::boundary_spacing, 0.005, 1.0, "longest edge between boundary samples"},
-    {"boundary_tolerance", &Params::boundary_tolerance, 1e-4, 0.5,
-     "largest distance between the boundary polygon and the offset outline"},
-    {"interior_spacing", &Params::interior_spacing, 0.005, 1.0, "minimum distance between interior samples"},
-    {"slices", &Params::slices, 2, 1000, "n_s: slices along the time axis (§3.1)"},
-    {"initial_scale", &Params::initial_scale, 0.001, 1.0, "size of every element at the start (§4)"},
-    {"seed_spacing", &Params::seed_spacing, 0.01, 1.0, "distance between unguided seeds when filling (§4)"},
-    {"k_repulsion", &Params::k_repulsion, 0.0, inf, "k_rpl, repulsion strength (Eq. 1)"},
-    {"repulsion_epsilon", &Params::repulsion_epsilon, 1e-12, inf, "ε, softening of Eq. 1"},
-    {"wall_repulsion", &Params::wall_repulsion, 0.0, inf, "Eq. 1 terms the container's wall counts as"},
-    {"wall_range", &Params::wall_range, 0.0, 1.0, "distance within which the wall repels"},
-    {"k_edge", &Params::k_edge, 0.0, inf, "k_edg of slice edge springs (Eq. 2)"},
-    {"k_shear", &Params::k_shear, 0.0, inf, "k_edg of shear springs (Eq. 2)"},
-    {"k_negative_space", &Params::k_negative_space, 0.0, inf, "k_edg of negative-space springs (Eq. 2)"},
-    {"k_time", &Params::k_time, 0.0, inf, "k_edg of time springs (Eq. 2)"},
-    {"k_target", &Params::k_target, 0.0, inf, "k_edg of target-point springs (Eq. 2, §4)"},
-    {"k_overlap", &Params::k_overlap, 0.0, inf, "k_ovr, overlap strength (Eq. 3)"},
-    {"k_overlap_depth", &Params::k_overlap_depth, 0.0, inf, "pull of an inside vertex out of the other element"},
-    {"k_boundary", &Params::k_boundary, 0.0, inf, "k_bdr, container strength (Eq. 4)"},
-    {"k_torsion", &Params::k_torsion, 0.0, inf, "k_tor, torsion strength (Eq. 5)"},
-    {"k_target_angle", &Params::k_target_angle, 0.0, inf,
-     "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)"},
-    {"k_temporal", &Params::k_temporal, 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
-    {"dt", &Params::dt, 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)"},
-    {"velocity_cap", &Params::velocity_cap, 0.0, inf, "speeds are capped at velocity_cap · Δt_sim (§5)"},
-    {"cell_size", &Params::cell_size, 0.005, 1.0, "collision grid cell edge (§5.1)"},
-    {"grid_rebuild_interval", &Params::grid_rebuild_interval, 1, 1000, "rebuild the grid every k steps"},
-    {"far_cells", &Params::far_cells, 0, 1, "1: far shell of Eq. 1 by cell aggregates; 0: by every centroid (§5.1)"},
-    {"interval_points", &Params::interval_points, 1, 15,
-     "times the overlap test checks inside each slice interval, evenly spaced (paper §8)"},
-    {"growth_rate", &Params::growth_rate, 0.0, inf, "g += growth_rate · Δt_sim per free step (§5.3)"},
-    {"shrink_rate", &Params::shrink_rate, 0.0, inf, "g -= shrink_rate · Δt_sim per step while overlapping"},
-    {"growth_ratio", &Params::growth_ratio, 1.0, inf, "largest g of an element ≤ growth_ratio × its smallest"},
-    {"neighbour_growth_ratio", &Params::neighbour_growth_ratio, 1.0, inf, "g ≤ this × either time neighbour's g"},
-    {"stop_gap", &Params::stop_gap, 0.0, 1.0, "stop when the largest per-slice gap is below this (§5.3)"},
-    {"stop_growth", &Params::stop_growth, 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
-    {"max_iterations", &Params::max_iterations, 1, 100000000, "hard cap on simulation steps"},
-    {"settle_iterations", &Params::settle_iterations, 0, 100000000, "steps without growth to clear overlaps at the end"},
-    {"settle_shrink_rate", &Params::settle_shrink_rate, 0.0, inf, "g -= settle_shrink_rate · Δt_sim per settling step while overlapping"},
-    {"stall_window", &Params::stall_window, 0, 100000000, "steps between the stall test's comparisons; 0 turns it off"},
-    {"stall_growth", &Params::stall_growth, 0.0, inf, "mean g must rise by this share per window, or growth has stalled"},
-    {"check_interval", &Params::check_interval, 1, 100000, "NaN check and statistics every k steps"},
-    // The two below are not the paper's but shape every result, so they are overridable too.
-    {"max_growth", &Params::max_growth, 1.0, inf, "cap on a slice's growth factor g"},
-    {"flatten_tolerance", &Params::flatten_tolerance, 1e-4, 10.0, "curve flattening tolerance, art units"},
+    {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0, "curve flattening tolerance, art units"},
+    {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5, "Δs: negative-space channel around each element (§3.1)"},
+    {"boundary_spacing", "element", field<&Params::element, &Params::Element::boundary_spacing>(), 0.005, 1.0, "longest edge between boundary samples"},
+    {"boundary_tolerance", "element", field<&Params::element, &Params::Element::boundary_tolerance>(), 1e-4, 0.5, "largest distance between the boundary polygon and the offset outline"},
+    {"interior_spacing", "element", field<&Params::element, &Params::Element::interior_spacing>(), 0.005, 1.0, "minimum distance between interior samples"},
+    {"slices", "element", field<&Params::element, &Params::Element::slices>(), 2, 1000, "n_s: slices along the time axis (§3.1)"},
+    {"initial_scale", "placement", field<&Params::placement, &Params::Placement::initial_scale>(), 0.001, 1.0, "size of every element at the start (§4)"},
+    {"seed_spacing", "placement", field<&Params::placement, &Params::Placement::seed_spacing>(), 0.01, 1.0, "distance between unguided seeds when filling (§4)"},
+    {"k_repulsion", "forces", field<&Params::forces, &Params::Forces::k_repulsion>(), 0.0, inf, "k_rpl, repulsion strength (Eq. 1)"},
+    {"repulsion_epsilon", "forces", field<&Params::forces, &Params::Forces::repulsion_epsilon>(), 1e-12, inf, "ε, softening of Eq. 1"},
+    {"wall_repulsion", "forces", field<&Params::forces, &Params::Forces::wall_repulsion>(), 0.0, inf, "Eq. 1 terms the container's wall counts as"},
+    {"wall_range", "forces", field<&Params::forces, &Params::Forces::wall_range>(), 0.0, 1.0, "distance within which the wall repels"},
+    {"k_edge", "forces", field<&Params::forces, &Params::Forces::k_edge>(), 0.0, inf, "k_edg of slice edge springs (Eq. 2)"},
+    {"k_shear", "forces", field<&Params::forces, &Params::Forces::k_shear>(), 0.0, inf, "k_edg of shear springs (Eq. 2)"},
+    {"k_negative_space", "forces", field<&Params::forces, &Params::Forces::k_negative_space>(), 0.0, inf, "k_edg of negative-space springs (Eq. 2)"},
+    {"k_time", "forces", field<&Params::forces, &Params::Forces::k_time>(), 0.0, inf, "k_edg of time springs (Eq. 2)"},
+    {"k_target", "forces", field<&Params::forces, &Params::Forces::k_target>(), 0.0, inf, "k_edg of target-point springs (Eq. 2, §4)"},
+    {"k_overlap", "forces", field<&Params::forces, &Params::Forces::k_overlap>(), 0.0, inf, "k_ovr, overlap strength (Eq. 3)"},
+    {"k_overlap_depth", "forces", field<&Params::forces, &Params::Forces::k_overlap_depth>(), 0.0, inf, "pull of an inside vertex out of the other element"},
+    {"k_boundary", "forces", field<&Params::forces, &Params::Forces::k_boundary>(), 0.0, inf, "k_bdr, container strength (Eq. 4)"},
+    {"k_torsion", "forces", field<&Params::forces, &Params::Forces::k_torsion>(), 0.0, inf, "k_tor, torsion strength (Eq. 5)"},
+    {"k_target_angle", "forces", field<&Params::forces, &Params::Forces::k_target_angle>(), 0.0, inf, "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)"},
+    {"k_temporal", "forces", field<&Params::forces, &Params::Forces::k_temporal>(), 0.0, inf, "k_tmp, temporal strength (Eq. 6)"},
+    {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)"},
+    {"velocity_cap", "forces", field<&Params::forces, &Params::Forces::velocity_cap>(), 0.0, inf, "speeds are capped at velocity_cap · Δt_sim (§5)"},
+    {"cell_size", "forces", field<&Params::forces, &Params::Forces::cell_size>(), 0.005, 1.0, "collision grid cell edge (§5.1)"},
+    {"grid_rebuild_interval", "forces", field<&Params::forces, &Params::Forces::grid_rebuild_interval>(), 1, 1000, "rebuild the grid every k steps"},
+    {"far_cells", "forces", field<&Params::forces, &Params::Forces::far_cells>(), 0, 1, "1: far shell of Eq. 1 by cell aggregates; 0: by every centroid (§5.1)"},
+    {"interval_points", "forces", field<&Params::forces, &Params::Forces::interval_points>(), 1, 15, "times the overlap test checks inside each slice interval, evenly spaced (paper §8)"},
+    {"growth_rate", "growth", field<&Params::growth, &Params::Growth::growth_rate>(), 0.0, inf, "g += growth_rate · Δt_sim per free step (§5.3)"},
+    {"shrink_rate", "growth", field<&Params::growth, &Params::Growth::shrink_rate>(), 0.0, inf, "g -= shrink_rate · Δt_sim per step while overlapping"},
+    {"growth_ratio", "growth", field<&Params::growth, &Params::Growth::growth_ratio>(), 1.0, inf, "largest g of an element ≤ growth_ratio × its smallest"},
+    {"neighbour_growth_ratio", "growth", field<&Params::growth, &Params::Growth::neighbour_growth_ratio>(), 1.0, inf, "g ≤ this × either time neighbour's g"},
+    {"settle_shrink_rate", "growth", field<&Params::growth, &Params::Growth::settle_shrink_rate>(), 0.0, inf, "g -= settle_shrink_rate · Δt_sim per settling step while overlapping"},
+    {"max_growth", "growth", field<&Params::growth, &Params::Growth::max_growth>(), 1.0, inf, "cap on a slice's growth factor g"},
+    {"stop_gap", "stop", field<&Params::stop, &Params::Stop::stop_gap>(), 0.0, 1.0, "stop when the largest per-slice gap is below this (§5.3)"},
+    {"stop_growth", "stop", field<&Params::stop, &Params::Stop::stop_growth>(), 0.0, inf, "stop when every g exceeds this; 0 turns it off (§5.3)"},
+    {"max_iterations", "stop", field<&Params::stop, &Params::Stop::max_iterations>(), 1, 100000000, "hard cap on simulation steps"},
+    {"settle_iterations", "stop", field<&Params::stop, &Params::Stop::settle_iterations>(), 0, 100000000, "steps without growth to clear overlaps at the end"},
+    {"stall_window", "stop", field<&Params::stop, &Params::Stop::stall_window>(), 0, 100000000, "steps between the stall test's comparisons; 0 turns it off"},
+    {"stall_growth", "stop", field<&Params::stop, &Params::Stop::stall_growth>(), 0.0, inf, "mean g must rise by this share per window, or growth has stalled"},
+    {"check_interval", "stop", field<&Params::stop, &Params::Stop::check_interval>(), 1, 100000, "NaN check and statistics every k steps"},
 }};
 
 }  // namespace
@@ -64,7 +66,8 @@ const std::array<ParamInfo, 42> table{{
 std::span<const ParamInfo> param_table() { return table; }
 
 double param_value(const Params& params, const ParamInfo& info) {
-  return std::visit([&](auto member) { return static_cast<double>(params.*member); }, info.member);
+  Params copy = params;  // the accessors hand out a mutable reference
+  return std::visit([&](auto field) { return static_cast<double>(field(copy)); }, info.field);
 }
 
 }  // namespace animpak

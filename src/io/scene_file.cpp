@@ -247,13 +247,13 @@ OrientationSpec read_orientation(const JsonField& field) {
 void read_param(const JsonField& field, const ParamInfo& info, Params& params) {
   std::visit(
       [&](auto member) {
-        using T = std::remove_reference_t<decltype(params.*member)>;
+        using T = std::remove_reference_t<decltype(member(params))>;
         if constexpr (std::is_same_v<T, int>)
-          params.*member = field.integer_in(static_cast<long long>(info.min), static_cast<long long>(info.max));
+          member(params) = field.integer_in(static_cast<long long>(info.min), static_cast<long long>(info.max));
         else
-          params.*member = field.number_in(info.min, info.max);
+          member(params) = field.number_in(info.min, info.max);
       },
-      info.member);
+      info.field);
 }
 
 const ParamInfo& param_info(std::string_view name) {

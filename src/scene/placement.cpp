@@ -140,7 +140,7 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
       const int key = key_of_slice[s];
       const TargetSample target = sample_targets(g.targets, container, key >= 0 ? g.targets[key].t : t);
-      const double scale = scene.params.initial_scale * target.scale;
+      const double scale = scene.params.placement.initial_scale * target.scale;
       const Vec2 anchor = e.position(s, p.anchor);
       p.scale.push_back(scale);
       p.angle.push_back(target.angle);

@@ -30,13 +30,13 @@ SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
   scene.file = "synthetic-" + std::to_string(spec.target_vertices);
   scene.container.art = "synthetic-square";
   scene.seed = spec.seed;
-  scene.params.slices = spec.slices;
+  scene.params.element.slices = spec.slices;
 
   LibraryElementSpec element;
   element.name = spec.element_art.stem().string();
   element.art = spec.element_art;
   element.animation.preset = AnimationPreset::rotate;
-  const ArtShape art = load_art(spec.element_art, {scene.params.flatten_tolerance});
+  const ArtShape art = load_art(spec.element_art, {scene.params.art.flatten_tolerance});
   std::vector<SpacetimeElement> library;
   library.push_back(build_element(element.name, art, element.animation, scene.params, element_seed(scene.seed, 0)));
 
@@ -60,8 +60,8 @@ SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
       if (miss(n) < miss(count)) count = n;
     const double f = std::sqrt(reference / count);
     scale *= f;
-    scene.params.cell_size = std::min(1.0, scene.params.cell_size * f);
-    scene.params.slices = slices_for(count);
+    scene.params.forces.cell_size = std::min(1.0, scene.params.forces.cell_size * f);
+    scene.params.element.slices = slices_for(count);
     library.front() = build_element(element.name, art, element.animation, scene.params, element_seed(scene.seed, 0));
   }
   element.count = count;
@@ -69,9 +69,9 @@ SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
 
   const Container container = make_container(square_art(), scene.container);
   for (int attempt = 0;; ++attempt) {
-    scene.params.initial_scale = scale;
+    scene.params.placement.initial_scale = scale;
     try {
-      return {build_world(scene, container, library), count, scale, scene.params.slices};
+      return {build_world(scene, container, library), count, scale, scene.params.element.slices};
     } catch (const InputError&) {
       // Blue-noise seeds land a little unevenly; a slightly smaller start always fits eventually.
       if (attempt == 20) throw;

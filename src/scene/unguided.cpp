@@ -67,10 +67,10 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     for (int s = 0; s < e.slice_count; ++s)
       for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(e.position(s, v) - c));
   }
-  const double margin = 1.05 * scene.params.initial_scale * radius;
+  const double margin = 1.05 * scene.params.placement.initial_scale * radius;
 
   std::vector<Vec2> seeds;
-  double spacing = scene.params.seed_spacing;
+  double spacing = scene.params.placement.seed_spacing;
   if (fill) {
     seeds = free_seeds(container, spacing, margin, guided, rng);
   } else if (wanted > 0) {
@@ -84,7 +84,7 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     }
     if (static_cast<int>(seeds.size()) < wanted)
       throw InputError(file + ": count: only " + std::to_string(seeds.size()) + " of " + std::to_string(wanted) +
-                       " elements fit in the container at initial_scale " + std::to_string(scene.params.initial_scale) +
+                       " elements fit in the container at initial_scale " + std::to_string(scene.params.placement.initial_scale) +
                        "; lower count or params.initial_scale");
     shuffle(seeds, rng);
     seeds.resize(wanted);
@@ -124,7 +124,7 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     p.pivot = rest_centroid(e);
     const double angle = orientation(scene.orientation, container, seeds[k], rng);
     p.offset.assign(e.slice_count, seeds[k]);
-    p.scale.assign(e.slice_count, scene.params.initial_scale);
+    p.scale.assign(e.slice_count, scene.params.placement.initial_scale);
     p.angle.assign(e.slice_count, angle);
     const LibraryElementSpec& spec = scene.elements[picks[k]];
     p.secondary = spec.secondary;

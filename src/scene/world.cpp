@@ -143,12 +143,12 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 
   // Envelope-triangle centroids sit a third of a slice gap off each slice; the 3×3×3 block reaches at
   // least one cell, so slices more than three cells apart in t never see each other's envelopes.
-  const double slice_gap = 1.0 / (scene.params.slices - 1);
-  if (slice_gap > 3.0 * scene.params.cell_size)
+  const double slice_gap = 1.0 / (scene.params.element.slices - 1);
+  if (slice_gap > 3.0 * scene.params.forces.cell_size)
     world.notes.push_back("warning: slices are " + std::to_string(slice_gap) + " apart in t, more than three " +
-                          "collision-grid cells (cell_size " + std::to_string(scene.params.cell_size) +
+                          "collision-grid cells (cell_size " + std::to_string(scene.params.forces.cell_size) +
                           "): elements will not see each other; use at least " +
-                          std::to_string(static_cast<int>(std::ceil(1.0 / (3.0 * scene.params.cell_size))) + 1) +
+                          std::to_string(static_cast<int>(std::ceil(1.0 / (3.0 * scene.params.forces.cell_size))) + 1) +
                           " slices or params.cell_size >= " + std::to_string(slice_gap / 3.0));
 
   Rng rng(scene.seed);
@@ -206,11 +206,11 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 }
 
 World make_world(const SceneSpec& scene) {
-  Container container = make_container(load_art(scene.container.art, {scene.params.flatten_tolerance}), scene.container);
+  Container container = make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
   std::vector<SpacetimeElement> library;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const LibraryElementSpec& spec = scene.elements[i];
-    const ArtShape art = load_art(spec.art, {scene.params.flatten_tolerance});
+    const ArtShape art = load_art(spec.art, {scene.params.art.flatten_tolerance});
     library.push_back(build_element(spec.name, art, spec.animation, scene.params, element_seed(scene.seed, i)));
   }
   return build_world(scene, std::move(container), std::move(library));

@@ -23,8 +23,8 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   RunResult result;
   result.last_good = backend.state();
   std::uint64_t iteration = result.last_good.iteration;
-  const auto rebuild = static_cast<std::uint64_t>(params.grid_rebuild_interval);
-  const auto check = static_cast<std::uint64_t>(params.check_interval);
+  const auto rebuild = static_cast<std::uint64_t>(params.forces.grid_rebuild_interval);
+  const auto check = static_cast<std::uint64_t>(params.stop.check_interval);
   for (;;) {
     // An interrupt is honoured on a grid-rebuild boundary, so a resumed run rebuilds the grid at the
     // same steps as an uninterrupted one and stays bit-identical.
@@ -60,14 +60,14 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     // Growth can also stall short of the gap test, in a steady exchange of slices that grow into a
     // neighbour and shrink back: the mean g then no longer rises over a window of stall_window steps.
     bool stalled = false;
-    const auto window = static_cast<std::uint64_t>(params.stall_window);
+    const auto window = static_cast<std::uint64_t>(params.stop.stall_window);
     if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + window) {
       const SimState& mark = result.last_good;
-      stalled = mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stall_growth));
+      stalled = mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stop.stall_growth));
       if (!stalled) mark_progress();
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
-    const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop_gap);
+    const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop.stop_gap);
     if (settling_since == 0 && (stalled || touching)) {
       // Secondary elements (docs/parameters.md, "Secondary elements") wait for the primary ones to stop;
       // then they grow, and the stall test starts a fresh window for them.
@@ -87,11 +87,11 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       result.reason = touching ? StopReason::gap : StopReason::stalled;
       break;
     }
-    if (settling_since != 0 && iteration - settling_since >= static_cast<std::uint64_t>(params.settle_iterations)) {
+    if (settling_since != 0 && iteration - settling_since >= static_cast<std::uint64_t>(params.stop.settle_iterations)) {
       result.reason = StopReason::unsettled;
       break;
     }
-    if (params.stop_growth > 0.0 && result.last.min_growth >= static_cast<float>(params.stop_growth)) {
+    if (params.stop.stop_growth > 0.0 && result.last.min_growth >= static_cast<float>(params.stop.stop_growth)) {
       result.reason = StopReason::growth;
       break;
     }

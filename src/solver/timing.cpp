@@ -17,7 +17,7 @@ PhaseTimes per_step_ms(const PhaseTimes& after, const PhaseTimes& before, int st
 }  // namespace
 
 StepTiming time_steps(Backend& backend, const Params& params, int warmup, int steps) {
-  const auto interval = static_cast<std::uint64_t>(std::max(1, params.check_interval));
+  const auto interval = static_cast<std::uint64_t>(std::max(1, params.stop.check_interval));
   // The statistics check belongs to every real run's cost, so it is timed at run_simulation's rate;
   // the iteration is counted here because reading it back from a device would cost a transfer.
   std::uint64_t iteration = backend.statistics().iteration;

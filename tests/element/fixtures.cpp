@@ -51,7 +51,7 @@ std::string shape_path(const std::string& name) {
 Built build(const ArtShape& art, const Params& params, std::uint64_t seed) {
   Built b;
   b.art = normalize_art(art);
-  b.outline = element_outline(b.art, params.offset);
+  b.outline = element_outline(b.art, params.element.offset);
   b.mesh = build_slice(b.outline, params, seed);
   return b;
 }

@@ -48,8 +48,8 @@ inline void check_boundary_sampling(const Outline& outline, const SliceMesh& mes
   // convex, so the vertices bound it.
   for (Vec2 p : ring) deviation = std::max(deviation, ring_distance(boundary, p));
   INFO("boundary vertices " << b << ", longest edge " << longest << ", deviation " << deviation);
-  CHECK(longest <= params.boundary_spacing * (1.0 + 1e-12));
-  CHECK(deviation <= params.boundary_tolerance + 1e-12);
+  CHECK(longest <= params.element.boundary_spacing * (1.0 + 1e-12));
+  CHECK(deviation <= params.element.boundary_tolerance + 1e-12);
 }
 
 inline void check_slice(const Outline& outline, const SliceMesh& mesh, const Params& params) {

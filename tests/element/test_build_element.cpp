@@ -22,7 +22,7 @@ std::vector<Vec2> slice_positions(const SpacetimeElement& e, int s) {
 TEST_CASE("build_element: bird.path without animation has consistent counts and replays its art") {
   const ArtShape art = load_path_file(test::shape_path("bird"));
   Params params;
-  params.slices = 12;
+  params.element.slices = 12;
   const SpacetimeElement e = build_element("bird", art, AnimationSpec{}, params, 7);
   CHECK(e.name == "bird");
   REQUIRE(e.slice_count == 12);
@@ -42,7 +42,7 @@ TEST_CASE("build_element: bird.path without animation has consistent counts and 
 
 TEST_CASE("build_element: every animal swims and rotates through ARAP without degenerating") {
   Params params;
-  params.slices = 16;
+  params.element.slices = 16;
   for (const std::string& name : test::animal_names()) {
     INFO(name);
     const ArtShape art = load_path_file(test::shape_path(name));

@@ -70,8 +70,8 @@ TEST_CASE("element_outline of synthetic shapes is simple, CCW and Δs around the
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art()}) {
     INFO(art.source);
     const NormalizedArt n = normalize_art(art);
-    const Outline outline = element_outline(n, params.offset);
-    check_outline(n, outline, params.offset);
+    const Outline outline = element_outline(n, params.element.offset);
+    check_outline(n, outline, params.element.offset);
     CHECK(outline.notes.empty());
   }
 }

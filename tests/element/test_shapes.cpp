@@ -35,7 +35,7 @@ TEST_CASE("real shapes: outline around the art, valid slice, art replays", "[ele
       for (const Polyline& line : path.polylines)
         for (Vec2 p : line.points) {
           CHECK(ring_contains(b.outline.ring, p));
-          CHECK(ring_distance(b.outline.ring, p) >= params.offset - offset_tolerance);
+          CHECK(ring_distance(b.outline.ring, p) >= params.element.offset - offset_tolerance);
         }
     check_slice(b.outline, b.mesh, params);
     // The paper's elements have about 16–38 vertices per slice (Table 1). Following the outline within
@@ -49,9 +49,9 @@ TEST_CASE("real shapes: outline around the art, valid slice, art replays", "[ele
 
 TEST_CASE("real shapes: coarser spacings reach the paper's sizes", "[element][shapes]") {
   Params params;
-  params.boundary_spacing = 0.2;
-  params.interior_spacing = 0.15;
-  params.boundary_tolerance = 0.035;  // just inside Δs = 0.04, so the art still lies inside the polygon
+  params.element.boundary_spacing = 0.2;
+  params.element.interior_spacing = 0.15;
+  params.element.boundary_tolerance = 0.035;  // just inside Δs = 0.04, so the art still lies inside the polygon
   for (const std::string& name : animal_names()) {
     INFO(name);
     const Built b = build(load_path_file(shape_path(name)), params);

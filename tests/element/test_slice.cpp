@@ -15,10 +15,10 @@ namespace {
 // exactly the corners, in order from ring[0].
 SliceMesh boundary_only(const std::vector<Vec2>& ring) {
   Params params;
-  params.interior_spacing = 10.0;  // larger than the shape: no interior sample survives
+  params.element.interior_spacing = 10.0;  // larger than the shape: no interior sample survives
   Outline outline;
   outline.ring = ring;
-  params.boundary_spacing = perimeter(ring);
+  params.element.boundary_spacing = perimeter(ring);
   const SliceMesh mesh = build_slice(outline, params, 1);
   REQUIRE(mesh.vertices == ring);
   return mesh;
@@ -29,8 +29,8 @@ SliceMesh boundary_only(const std::vector<Vec2>& ring) {
 TEST_CASE("build_slice makes a valid disc on synthetic shapes", "[element][slice]") {
   // Finer than the defaults so that even the thin bar gets interior samples to check.
   Params params;
-  params.boundary_spacing = 0.1;
-  params.interior_spacing = 0.08;
+  params.element.boundary_spacing = 0.1;
+  params.element.interior_spacing = 0.08;
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art(), two_blobs_art()}) {
     INFO(art.source);
     const Built b = build(art, params);

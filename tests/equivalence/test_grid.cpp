@@ -32,7 +32,7 @@ TEST_CASE("grid: centroids, cells and the stable sort match the reference", "[eq
     shape.max_radius = 0.25f;  // some vertices beyond the cube's faces, clamped into border cells
     const TinyWorld w = random_world(seed, shape);
     Params coarse;
-    coarse.cell_size = 0.3;  // few cells: many triangles share one, so the within-cell order matters
+    coarse.forces.cell_size = 0.3;  // few cells: many triangles share one, so the within-cell order matters
     check_grid(w, Params{}, "seed " + std::to_string(seed));
     check_grid(w, coarse, "seed " + std::to_string(seed) + ", coarse cells");
   }

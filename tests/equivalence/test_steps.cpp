@@ -64,7 +64,7 @@ TEST_CASE("steps: random worlds, 20 steps each", "[equivalence][opencl]") {
     shape.max_radius = 0.15f;
     const TinyWorld w = random_world(seed, shape);
     Params params = paper_params();
-    params.grid_rebuild_interval = static_cast<int>(seed % 3) + 1;  // rebuilding every k steps, alike
+    params.forces.grid_rebuild_interval = static_cast<int>(seed % 3) + 1;  // rebuilding every k steps, alike
     check_steps(w.topo, w.state, params, 20, 1, "seed " + std::to_string(seed));
   }
 }

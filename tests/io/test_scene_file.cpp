@@ -105,10 +105,10 @@ TEST_CASE("parse_scene: a full scene fills every field") {
   CHECK(s.count == 10);
   CHECK(s.seed == 18446744073709551615ull);
   CHECK(s.loop);
-  CHECK(s.params.slices == 50);
-  CHECK(s.params.k_edge == 4);
-  CHECK(s.params.max_iterations == 5000);
-  CHECK(s.params.k_shear == Params{}.k_shear);
+  CHECK(s.params.element.slices == 50);
+  CHECK(s.params.forces.k_edge == 4);
+  CHECK(s.params.stop.max_iterations == 5000);
+  CHECK(s.params.forces.k_shear == Params{}.forces.k_shear);
 }
 
 TEST_CASE("parse_scene: a minimal scene takes every default") {
@@ -125,7 +125,7 @@ TEST_CASE("parse_scene: a minimal scene takes every default") {
   CHECK_FALSE(s.count);
   CHECK(s.seed == 1);
   CHECK(s.loop);
-  CHECK(s.params.slices == 100);
+  CHECK(s.params.element.slices == 100);
 }
 
 TEST_CASE("parse_scene: fixed and constant-field orientations, count fill") {
@@ -338,5 +338,5 @@ TEST_CASE("parse_scene: the example in docs/scene-format.md is valid") {
   CHECK(s.elements.size() == 4);
   CHECK(s.guided.size() == 2);
   CHECK(s.orientation.field == FieldKind::tangential);
-  CHECK(s.params.k_torsion == 0.2);
+  CHECK(s.params.forces.k_torsion == 0.2);
 }

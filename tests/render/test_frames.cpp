@@ -49,6 +49,6 @@ TEST_CASE("element_scale: 1 at library size, s for a uniformly scaled copy, the 
   std::vector<Vec2> scaled = rest.vertices;
   for (Vec2& p : scaled) p = Vec2{0.3, 0.7} + (p - Vec2{0.5, 0.5}) * 0.37;
   CHECK(element_scale(world, 0, scaled) == Approx(0.37).epsilon(1e-9));
-  // At t = 0 the placed copy is the rest slice shrunk to params.initial_scale (float positions).
+  // At t = 0 the placed copy is the rest slice shrunk to params.placement.initial_scale (float positions).
   CHECK(element_scale(world, 0, element_at(world, world.state, 0, 0.0)) == Approx(0.22).epsilon(1e-4));
 }

@@ -15,8 +15,8 @@ inline animpak::World tiny_star_world(int slices = 4, double initial_scale = 0.2
   scene.file = "tiny-star-world";
   scene.container.art = examples + "/shapes/heart-container.path";
   scene.seed = 7;
-  scene.params.slices = slices;
-  scene.params.initial_scale = initial_scale;
+  scene.params.element.slices = slices;
+  scene.params.placement.initial_scale = initial_scale;
   LibraryElementSpec star;
   star.name = "star";
   star.art = examples + "/default/star.svg";

@@ -48,7 +48,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   std::vector<float> times;
   for (int k = 0; k <= 25; ++k) times.push_back(static_cast<float>(k) / 25.0f);
   std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.05f, times);
-  slices[7].ring = test::square(0.95f - p.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
+  slices[7].ring = test::square(0.95f - p.stop.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
   slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                     // slice 9 spills past it
   b.add_element(slices);
   const test::TinyWorld w = b.build();
@@ -67,7 +67,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   }
   SimState state = w.state;
   Params grow = p;
-  grow.growth_ratio = 100.0;
+  grow.growth.growth_ratio = 100.0;
   std::vector<std::uint8_t> changed;
   test::grow_step(w.topo, f.contact, grow, true, state, changed);
   CHECK(changed[7] == growth_kept);
@@ -109,8 +109,8 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
     SimState state = w.state;
     for (float& g_s : state.growth) g_s = 2.0f;
     Params grow = p;
-    grow.growth_ratio = 100.0;
-    grow.neighbour_growth_ratio = 100.0;
+    grow.growth.growth_ratio = 100.0;
+    grow.growth.neighbour_growth_ratio = 100.0;
     std::vector<std::uint8_t> changed;
     test::grow_step(w.topo, f.contact, grow, true, state, changed);
     CHECK((changed[1] & growth_shrank) != 0);
@@ -127,11 +127,11 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
   REQUIRE(w.elements.size() == 1);
   auto backend = make_reference_backend(w.topology, w.state, w.params);
   RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(w.params.max_iterations);
+  control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
   const RunResult r = run_simulation(*backend, w.params, control);
   INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations");
   REQUIRE(r.reason == StopReason::gap);
-  CHECK(r.last.max_growth < static_cast<float>(w.params.max_growth) / 2);
+  CHECK(r.last.max_growth < static_cast<float>(w.params.growth.max_growth) / 2);
   CHECK(r.last.max_growth > 3.0f);  // it did grow to the wall: a tenth of the heart's width at least
   int outside = 0;
   for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v)

@@ -49,11 +49,11 @@ TEST_CASE("springs: a compressed spring pushes the ends apart") {
 
 TEST_CASE("springs: each class uses its own stiffness") {
   const Params p = test::paper_params();
-  const std::pair<SpringClass, double> classes[] = {{SpringClass::edge, p.k_edge},
-                                                    {SpringClass::shear, p.k_shear},
-                                                    {SpringClass::negative_space, p.k_negative_space},
-                                                    {SpringClass::time, p.k_time},
-                                                    {SpringClass::target, p.k_target}};
+  const std::pair<SpringClass, double> classes[] = {{SpringClass::edge, p.forces.k_edge},
+                                                    {SpringClass::shear, p.forces.k_shear},
+                                                    {SpringClass::negative_space, p.forces.k_negative_space},
+                                                    {SpringClass::time, p.forces.k_time},
+                                                    {SpringClass::target, p.forces.k_target}};
   for (const auto& [c, k] : classes) {
     INFO(static_cast<int>(c));
     const test::TinyWorld w = spring_pair({{0.25f, 0.5f}, {0.875f, 0.5f}}, c, 0.5f);
@@ -109,7 +109,7 @@ TEST_CASE("temporal: Eq. 6 pulls a vertex back to its slice's rest time") {
 
 TEST_CASE("boundary: Eq. 4 on a unit-square container") {
   Params p = test::paper_params();
-  p.wall_repulsion = 0.0;  // Eq. 4 alone; the wall's repulsion inside is the next case
+  p.forces.wall_repulsion = 0.0;  // Eq. 4 alone; the wall's repulsion inside is the next case
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}, {1.25f, 0.5f}, {-0.5f, -0.25f}, {1.0f, 0.5f}}, 0.5f}}, false);
   const test::TinyWorld w = b.build();
@@ -128,7 +128,7 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
 
 TEST_CASE("boundary: the wall repels a boundary vertex inside the container like Eq. 1, interior vertices not") {
   Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
-  p.wall_range = 0.2;               // both vertices below are within reach
+  p.forces.wall_range = 0.2;               // both vertices below are within reach
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
@@ -153,19 +153,19 @@ TEST_CASE("boundary: the wall repels only within wall_range, so a wall across th
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
   test::TinyWorld w = b.build();
   // Vertex 0 is 0.125 from the hole's edge, vertex 1 0.1 from the outline.
-  p.wall_range = 0.11;
+  p.forces.wall_range = 0.11;
   const Vec3f far0 = boundary_force(w.topo, w.state, p, 0);
   CHECK((far0.x == 0.0f && far0.y == 0.0f));
   const Vec3f near1 = boundary_force(w.topo, w.state, p, 1);
   CHECK(near1.y == Approx(-100.0 / (1.0 + 0.01)).epsilon(1e-6));
-  p.wall_range = 0.09;
+  p.forces.wall_range = 0.09;
   const Vec3f far1 = boundary_force(w.topo, w.state, p, 1);
   CHECK((far1.x == 0.0f && far1.y == 0.0f));
 }
 
 TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {
   Params p = test::paper_params();
-  p.wall_repulsion = 0.0;
+  p.forces.wall_repulsion = 0.0;
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.5f, 0.5625f}, {0.25f, 0.5f}}, 0.5f}}, false);
@@ -225,7 +225,7 @@ TEST_CASE("torsion: no force at the rest orientation") {
 
 TEST_CASE("torsion: a keyed slice holding its target angle turns back with k_target_angle, others with k_tor") {
   Params p = test::paper_params();
-  p.k_target_angle = 2.0;
+  p.forces.k_target_angle = 2.0;
   const double pi = 3.14159265358979323846;
   // Two slices of a triangle rotated by +10° about their centroids; slice 0 is a guided target's slice
   // with an angle (vertex_hold_angle), slice 1 an ordinary one.
@@ -277,6 +277,6 @@ TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triang
   CHECK((none.x == 0.0f && none.y == 0.0f && none.t == 0.0f));
   // Inside another element: plus k_ovr_depth times the way out.
   const Vec3f d = overlap_force(w.topo, w.state, p, 0, OverlapResult{true, true, 0.25f, -0.5f});
-  CHECK(d.x == Approx(5.0 + p.k_overlap_depth * 0.25).epsilon(1e-6));
-  CHECK(d.y == Approx(5.0 + p.k_overlap_depth * -0.5).epsilon(1e-6));
+  CHECK(d.x == Approx(5.0 + p.forces.k_overlap_depth * 0.25).epsilon(1e-6));
+  CHECK(d.y == Approx(5.0 + p.forces.k_overlap_depth * -0.5).epsilon(1e-6));
 }

@@ -128,7 +128,7 @@ TEST_CASE("grid: near and far queries equal brute force on random worlds") {
   std::mt19937 rng(12345);
   for (const double cell : {0.04, 0.1, 0.3}) {
     Params params;
-    params.cell_size = cell;
+    params.forces.cell_size = cell;
     for (int world = 0; world < 4; ++world) {
       // Sparse worlds leave most cells empty; dense ones fill many.
       const GridWorld w = random_world(rng, 80, world % 2 == 0 ? 40 : 2000, 3);
@@ -150,7 +150,7 @@ TEST_CASE("grid: near and far queries equal brute force on random worlds") {
 TEST_CASE("grid: far runs split each cell into maximal runs of one element, with their mean centroid") {
   std::mt19937 rng(777);
   Params params;
-  params.far_cells = 1;
+  params.forces.far_cells = 1;
   for (int world = 0; world < 4; ++world) {
     // Few elements make long runs; many make runs of one triangle.
     const GridWorld w = random_world(rng, 80, world % 2 == 0 ? 300 : 2000, world < 2 ? 2 : 6);
@@ -190,7 +190,7 @@ TEST_CASE("grid: far slots are the far triangles' slots, or one run head per cel
   std::mt19937 rng(4242);
   for (const int cells_mode : {0, 1}) {
     Params params;
-    params.far_cells = cells_mode;
+    params.forces.far_cells = cells_mode;
     const GridWorld w = random_world(rng, 80, 2000, 3);
     const CollisionGrid g = build_collision_grid(w.topo, w.state, params);
     std::vector<std::int32_t> far, slots;

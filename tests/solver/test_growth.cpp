@@ -30,13 +30,13 @@ TEST_CASE("growth: spilling slices and the larger of overlapping ones shrink, th
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
   Params params = w.params;
-  params.growth_rate = 3.0;  // step 0.15: visible in float at every g used below
-  params.shrink_rate = 2.0;  // 0.1
-  params.max_growth = 2.0;
-  params.growth_ratio = 100.0;  // no ratio limits in this case
-  params.neighbour_growth_ratio = 100.0;
-  const float step = static_cast<float>(params.growth_rate * params.dt);
-  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
+  params.growth.growth_rate = 3.0;  // step 0.15: visible in float at every g used below
+  params.growth.shrink_rate = 2.0;  // 0.1
+  params.growth.max_growth = 2.0;
+  params.growth.growth_ratio = 100.0;  // no ratio limits in this case
+  params.growth.neighbour_growth_ratio = 100.0;
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  const float shrink = static_cast<float>(params.growth.shrink_rate * params.forces.dt);
 
   SimState state = w.state;
   const std::int32_t overlapping = 1, smaller = 2, nearly_full = 3, outside = 4, at_wall = 6, full = 7, at_floor = 8;
@@ -88,10 +88,10 @@ TEST_CASE("growth: while settling, nothing grows and every overlapping slice shr
   const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
-  params.growth_ratio = 100.0;
-  params.neighbour_growth_ratio = 100.0;
-  params.shrink_rate = 0.01;
-  params.settle_shrink_rate = 0.04;
+  params.growth.growth_ratio = 100.0;
+  params.growth.neighbour_growth_ratio = 100.0;
+  params.growth.shrink_rate = 0.01;
+  params.growth.settle_shrink_rate = 0.04;
   SimState state = w.state;
   std::fill(state.growth.begin(), state.growth.end(), 1.5f);
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
@@ -104,7 +104,7 @@ TEST_CASE("growth: while settling, nothing grows and every overlapping slice shr
   const SimState start = state;
   std::vector<std::uint8_t> changed;
   CHECK(test::grow_step(topo, contact, params, false, state, changed) == 0);
-  const float settle = static_cast<float>(params.settle_shrink_rate * params.dt);
+  const float settle = static_cast<float>(params.growth.settle_shrink_rate * params.forces.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     CHECK(same_bits(state.growth[s], s == 2 || s == 5 || s == 7 ? 1.5f - settle : 1.5f));
@@ -112,8 +112,8 @@ TEST_CASE("growth: while settling, nothing grows and every overlapping slice shr
   // Growing, the smaller side of an overlap pauses and the wall holds; the rest grows.
   state = start;
   test::grow_step(topo, contact, params, true, state, changed);
-  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
-  const float step = static_cast<float>(params.growth_rate * params.dt);
+  const float shrink = static_cast<float>(params.growth.shrink_rate * params.forces.dt);
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     const float expected = s == 2 || s == 5 ? 1.5f - shrink : s == 7 || s == 8 ? 1.5f : 1.5f + step;
@@ -127,8 +127,8 @@ TEST_CASE("growth: a secondary element keeps its size until secondary_since, and
   REQUIRE(topo.element_count() == 2);
   topo.element_secondary = {0, 1};  // slices 5..9 are the secondary element's
   Params params = w.params;
-  params.growth_ratio = 100.0;
-  params.neighbour_growth_ratio = 100.0;
+  params.growth.growth_ratio = 100.0;
+  params.growth.neighbour_growth_ratio = 100.0;
   SimState state = w.state;
   std::fill(state.growth.begin(), state.growth.end(), 1.5f);
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
@@ -139,8 +139,8 @@ TEST_CASE("growth: a secondary element keeps its size until secondary_since, and
   const SimState start = state;
   std::vector<std::uint8_t> changed;
   test::grow_step(topo, contact, params, true, state, changed);
-  const float step = static_cast<float>(params.growth_rate * params.dt);
-  const float shrink = static_cast<float>(params.shrink_rate * params.dt);
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  const float shrink = static_cast<float>(params.growth.shrink_rate * params.forces.dt);
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     const float expected = s < 5 ? 1.5f + step : s == 6 ? 1.5f - shrink : 1.5f;
@@ -166,9 +166,9 @@ TEST_CASE("growth: no slice outgrows growth_ratio × the smallest slice of its e
   const Topology& topo = w.topology;
   REQUIRE(topo.element_count() == 2);
   Params params = w.params;
-  params.growth_rate = 1.0;  // 0.05 per step
-  params.growth_ratio = 1.3;
-  params.neighbour_growth_ratio = 100.0;  // the element-wide limit alone; the next case has this one
+  params.growth.growth_rate = 1.0;  // 0.05 per step
+  params.growth.growth_ratio = 1.3;
+  params.growth.neighbour_growth_ratio = 100.0;  // the element-wide limit alone; the next case has this one
   SimState state = w.state;
   // Element 0's slice 2 sits at the wall for good; its other slices may grow up to 1.3 × its g.
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
@@ -234,9 +234,9 @@ TEST_CASE("growth: no slice outgrows either time neighbour by more than neighbou
   const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
-  params.neighbour_growth_ratio = 1.03;
-  params.growth_ratio = 100.0;
-  const float step = static_cast<float>(params.growth_rate * params.dt);
+  params.growth.neighbour_growth_ratio = 1.03;
+  params.growth.growth_ratio = 100.0;
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   SimState state = w.state;
   // Element 0's slice 2 (of 0..4) sits at the wall for good: its neighbours stop at 1.03, theirs at
   // about 1.03², so the size falls off smoothly towards the slice that is held.

@@ -31,8 +31,8 @@ test::TinyWorld loose_points(int n) {
 
 TEST_CASE("integrate: velocity first, then position from the new velocity") {
   Params p = test::paper_params();
-  p.dt = 0.5;           // exact in float, so the expected values are exact
-  p.velocity_cap = 10;  // cap 5: not reached
+  p.forces.dt = 0.5;           // exact in float, so the expected values are exact
+  p.forces.velocity_cap = 10;  // cap 5: not reached
   test::TinyWorld w = loose_points(1);
   w.state.vx[0] = 0.25f;
   integrate(field({{1.0f, -0.5f, 0.25f}}), p, w.state);
@@ -46,7 +46,7 @@ TEST_CASE("integrate: velocity first, then position from the new velocity") {
 
 TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
   const Params p = test::paper_params();
-  const float cap = static_cast<float>(p.velocity_cap * p.dt);
+  const float cap = static_cast<float>(p.forces.velocity_cap * p.forces.dt);
   std::mt19937 rng(99);
   std::uniform_real_distribution<float> force(-1000.0f, 1000.0f);
   test::TinyWorld w = loose_points(200);
@@ -66,7 +66,7 @@ TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
           Approx(1.0).margin(1e-6));
     const double moved = std::hypot(w.state.x[v] - before.state.x[v], w.state.y[v] - before.state.y[v],
                                     w.state.t[v] - before.state.t[v]);
-    CHECK(moved <= cap * p.dt * (1.0 + 1e-4));
+    CHECK(moved <= cap * p.forces.dt * (1.0 + 1e-4));
   }
   CHECK(w.state.vx[0] == 1e-3f * 0.01f);
 }

@@ -133,8 +133,8 @@ TEST_CASE("overlap broadphase: the overlap test gives the same bits as a walk ov
     build_overlap_grid(w.topo, boxes, grid);
     const OverlapGrid every;  // no cells: every query tries every element
     for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
-      const OverlapResult a = overlap_test(w.topo, w.state, boxes, grid, v, Params{}.interval_points);
-      const OverlapResult b = overlap_test(w.topo, w.state, boxes, every, v, Params{}.interval_points);
+      const OverlapResult a = overlap_test(w.topo, w.state, boxes, grid, v, Params{}.forces.interval_points);
+      const OverlapResult b = overlap_test(w.topo, w.state, boxes, every, v, Params{}.forces.interval_points);
       INFO("seed " << seed << ", vertex " << v);
       CHECK(a.overlap == b.overlap);
       CHECK(a.inside == b.inside);

@@ -102,7 +102,7 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
     out[0] += ux * s, out[1] += uy * s, out[2] += ut * s;
   };
 
-  p.far_cells = 0;  // the paper: each centroid
+  p.forces.far_cells = 0;  // the paper: each centroid
   const CollisionGrid each = build_collision_grid(w.topo, w.state, p);
   Query q = query(w, each, 0);
   REQUIRE(q.far.size() == 2);
@@ -112,7 +112,7 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
   CHECK(r0.force.x == Approx(expected0[0]).epsilon(1e-5));
   CHECK(r0.force.t == Approx(expected0[2]).epsilon(1e-5));
 
-  p.far_cells = 1;  // one aggregate for the cell and element
+  p.forces.far_cells = 1;  // one aggregate for the cell and element
   const CollisionGrid cells = build_collision_grid(w.topo, w.state, p);
   q = query(w, cells, 0);
   REQUIRE(q.far.size() == 1);
@@ -156,7 +156,7 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
   const RepulsionResult r = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, false);
 
   const auto pt = [&](std::int32_t i) { return Vec3f{w.state.x[i], w.state.y[i], w.state.t[i]}; };
-  const float eps = static_cast<float>(p.repulsion_epsilon);
+  const float eps = static_cast<float>(p.forces.repulsion_epsilon);
   const auto add = [&](float ux, float uy, float ut, float count, float out[3]) {
     const float d2 = ux * ux + uy * uy + ut * ut;
     const float s = 1.0f / std::sqrt(d2) * (1.0f / (eps + d2)) * count;
@@ -175,7 +175,7 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
   const float count = static_cast<float>(g.run_next[k] - k);
   add(0.5f - g.run_cx[k], 0.5f - g.run_cy[k], 0.5f - g.run_ct[k], count, expected);
   add(0.5f - g.run_cx[k], 0.5f - g.run_cy[k], 0.5f - g.run_ct[k], count, plain);
-  const float kr = static_cast<float>(p.k_repulsion);
+  const float kr = static_cast<float>(p.forces.k_repulsion);
   CHECK(r.force.x == kr * expected[0]);
   CHECK(r.force.y == kr * expected[1]);
   CHECK(r.force.t == kr * expected[2]);
@@ -202,7 +202,7 @@ std::vector<test::TinySlice> moving_square(float x0, float x1, float h) {
 }
 
 OverlapResult overlap_at(const test::TinyWorld& w, std::int32_t v,
-                         std::int32_t interval_points = Params{}.interval_points) {
+                         std::int32_t interval_points = Params{}.forces.interval_points) {
   SliceBoxes boxes;
   slice_boxes(w.topo, w.state, boxes);
   OverlapGrid grid;
@@ -286,7 +286,7 @@ TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged
   // The depth term of the overlap force grows with depth: it points to B's outline, 0.095 away.
   const Vec3f f = overlap_force(w.topo, w.state, p, v, r);
   const Vec3f eq3 = overlap_force(w.topo, w.state, p, v, OverlapResult{true, false});
-  CHECK(std::hypot(f.x - eq3.x, f.y - eq3.y) == Approx(p.k_overlap_depth * 0.095).epsilon(1e-4));
+  CHECK(std::hypot(f.x - eq3.x, f.y - eq3.y) == Approx(p.forces.k_overlap_depth * 0.095).epsilon(1e-4));
 }
 
 TEST_CASE("overlap: two elements whose edges cross with no vertex inside are both flagged") {
@@ -396,7 +396,7 @@ TEST_CASE("overlap: a pass between the middle and a slice is found at the quarte
   b.add_element(moving_square(0.4f, 0.6f, 0.04f));
   b.add_element(moving_square(0.8f, 0.5f, 0.05f));
   const test::TinyWorld w = b.build();
-  REQUIRE(Params{}.interval_points == 3);
+  REQUIRE(Params{}.forces.interval_points == 3);
   // Quarter points: the vertices at t = 1 test 0.75 (and 0.5), those at t = 0 test 0.25 and 0.5. At
   // 0.75 A spans x 0.51-0.59 and B 0.525-0.625 (y 0.46-0.54 and 0.45-0.55): A's right corners (5, 6) lie
   // inside B, the edges from 4 and 6 cross B's left edge, and B's left edge (from 15) crosses A's.

@@ -59,10 +59,10 @@ StepStatistics growing(double mean, float gap, std::int64_t overlapping) {
 
 Params run_params() {
   Params p;
-  p.check_interval = 10;
-  p.stall_window = 100;
-  p.stall_growth = 0.01;
-  p.settle_iterations = 300;
+  p.stop.check_interval = 10;
+  p.stop.stall_window = 100;
+  p.stop.stall_growth = 0.01;
+  p.stop.settle_iterations = 300;
   return p;
 }
 
@@ -110,8 +110,8 @@ TEST_CASE("run: settling that never comes clean ends as unsettled after settle_i
 
 TEST_CASE("run: a stall window of 0 turns the stall test off") {
   Params p = run_params();
-  p.stall_window = 0;
-  p.max_iterations = 1000;
+  p.stop.stall_window = 0;
+  p.stop.max_iterations = 1000;
   ScriptedBackend b([](std::uint64_t, bool) { return growing(2.0, 0.02f, 0); });
   RunControl control;
   control.max_iterations = 1000;

@@ -26,21 +26,21 @@ inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8
 /// (docs/parameters.md), which would hide the arithmetic behind factors of 500.
 inline animpak::Params paper_params() {
   animpak::Params p;
-  p.k_repulsion = 10.0;
-  p.repulsion_epsilon = 1.0;
-  p.k_edge = 10.0;
-  p.k_shear = 10.0;
-  p.k_negative_space = 0.1;
-  p.k_time = 0.01;
-  p.k_target = 10.0;
-  p.k_overlap = 5.0;
-  p.k_boundary = 5.0;
-  p.k_torsion = 0.1;
-  p.k_temporal = 1.0;
-  p.dt = 0.01;
-  p.velocity_cap = 10.0;
-  p.growth_rate = 0.001;
-  p.far_cells = 0;  // the paper's far shell: every triangle's centroid (Params{} covers the cell aggregates)
+  p.forces.k_repulsion = 10.0;
+  p.forces.repulsion_epsilon = 1.0;
+  p.forces.k_edge = 10.0;
+  p.forces.k_shear = 10.0;
+  p.forces.k_negative_space = 0.1;
+  p.forces.k_time = 0.01;
+  p.forces.k_target = 10.0;
+  p.forces.k_overlap = 5.0;
+  p.forces.k_boundary = 5.0;
+  p.forces.k_torsion = 0.1;
+  p.forces.k_temporal = 1.0;
+  p.forces.dt = 0.01;
+  p.forces.velocity_cap = 10.0;
+  p.growth.growth_rate = 0.001;
+  p.forces.far_cells = 0;  // the paper's far shell: every triangle's centroid (Params{} covers the cell aggregates)
   return p;
 }
 

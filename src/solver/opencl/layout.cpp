@@ -32,29 +32,29 @@ static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
 
 ForceParams force_params(const Params& params) {
   ForceParams p{};
-  p.k_repulsion = static_cast<float>(params.k_repulsion);
-  p.repulsion_epsilon = static_cast<float>(params.repulsion_epsilon);
-  p.k_wall = static_cast<float>(params.wall_repulsion * params.k_repulsion);
+  p.k_repulsion = static_cast<float>(params.forces.k_repulsion);
+  p.repulsion_epsilon = static_cast<float>(params.forces.repulsion_epsilon);
+  p.k_wall = static_cast<float>(params.forces.wall_repulsion * params.forces.k_repulsion);
   for (int c = 0; c < AP_SPRING_CLASSES; ++c) p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
-  p.k_target = static_cast<float>(params.k_target);
-  p.k_overlap = static_cast<float>(params.k_overlap);
-  p.k_overlap_depth = static_cast<float>(params.k_overlap_depth);
-  p.k_boundary = static_cast<float>(params.k_boundary);
-  p.k_torsion = static_cast<float>(params.k_torsion);
-  p.k_temporal = static_cast<float>(params.k_temporal);
-  p.dt = static_cast<float>(params.dt);
+  p.k_target = static_cast<float>(params.forces.k_target);
+  p.k_overlap = static_cast<float>(params.forces.k_overlap);
+  p.k_overlap_depth = static_cast<float>(params.forces.k_overlap_depth);
+  p.k_boundary = static_cast<float>(params.forces.k_boundary);
+  p.k_torsion = static_cast<float>(params.forces.k_torsion);
+  p.k_temporal = static_cast<float>(params.forces.k_temporal);
+  p.dt = static_cast<float>(params.forces.dt);
   // Products in double first, then one conversion (integrate.cpp, growth.cpp).
-  p.velocity_cap = static_cast<float>(params.velocity_cap * params.dt);
-  p.growth_step = static_cast<float>(params.growth_rate * params.dt);
-  p.shrink_step = static_cast<float>(params.shrink_rate * params.dt);
-  p.settle_shrink_step = static_cast<float>(params.settle_shrink_rate * params.dt);
-  p.growth_ratio = static_cast<float>(params.growth_ratio);
-  p.neighbour_growth_ratio = static_cast<float>(params.neighbour_growth_ratio);
-  p.max_growth = static_cast<float>(params.max_growth);
-  p.stop_gap = static_cast<float>(params.stop_gap);
-  p.k_target_angle = static_cast<float>(params.k_target_angle);
-  p.wall_range2 = static_cast<float>(params.wall_range * params.wall_range);
-  p.interval_points = params.interval_points;
+  p.velocity_cap = static_cast<float>(params.forces.velocity_cap * params.forces.dt);
+  p.growth_step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  p.shrink_step = static_cast<float>(params.growth.shrink_rate * params.forces.dt);
+  p.settle_shrink_step = static_cast<float>(params.growth.settle_shrink_rate * params.forces.dt);
+  p.growth_ratio = static_cast<float>(params.growth.growth_ratio);
+  p.neighbour_growth_ratio = static_cast<float>(params.growth.neighbour_growth_ratio);
+  p.max_growth = static_cast<float>(params.growth.max_growth);
+  p.stop_gap = static_cast<float>(params.stop.stop_gap);
+  p.k_target_angle = static_cast<float>(params.forces.k_target_angle);
+  p.wall_range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
+  p.interval_points = params.forces.interval_points;
   return p;
 }
 
@@ -65,11 +65,11 @@ ContainerIndexInfo container_index_info(const ContainerIndex& index) {
 
 GridInfo grid_info(const Params& params, std::int32_t triangles) {
   GridInfo g{};
-  g.n = reference::grid_cells_per_axis(params.cell_size);
-  g.cell = static_cast<float>(params.cell_size);
+  g.n = reference::grid_cells_per_axis(params.forces.cell_size);
+  g.cell = static_cast<float>(params.forces.cell_size);
   g.triangles = triangles;
   g.cells = g.n * g.n * g.n;
-  g.far_cells = params.far_cells != 0 ? 1 : 0;
+  g.far_cells = params.forces.far_cells != 0 ? 1 : 0;
   return g;
 }
 

@@ -59,7 +59,7 @@ class DeviceBackend final : public OpenclBackend {
       : topo_(topology), info_(info), iteration_(initial.iteration), settling_since_(initial.settling_since),
         secondary_since_(initial.secondary_since),
         mark_iteration_(initial.mark_iteration), mark_growth_(initial.mark_growth),
-        rebuild_(params.grid_rebuild_interval),
+        rebuild_(params.forces.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
     validate(topo_);
     const cl::Program program = create_queue();

@@ -75,7 +75,7 @@ DeviceValidation validate_device(const Topology& topology, const SimState& initi
   // evaluate_forces rebuilds the device's grid; between two scheduled rebuilds that would hand the device's
   // next step a fresher grid than the reference's. So forces are compared where both sides rebuild
   // anyway, and at the last state, after which nothing steps.
-  const auto rebuild = static_cast<std::uint64_t>(params.grid_rebuild_interval);
+  const auto rebuild = static_cast<std::uint64_t>(params.forces.grid_rebuild_interval);
   SimState ref_state = initial;
   for (int k = 0;; ++k) {
     if (k == steps || ref_state.iteration % rebuild == 0) compare_forces(v, topology, params, ref_state, *device);

@@ -23,7 +23,7 @@ class ReferenceBackend final : public Backend {
   // One step: grid, forces, integration, constraints (§5.2, then containment), growth (§5.3); each
   // phase is timed on its own.
   void step() override {
-    if (state_.iteration % static_cast<std::uint64_t>(params_.grid_rebuild_interval) == 0 || grid_.n == 0) {
+    if (state_.iteration % static_cast<std::uint64_t>(params_.forces.grid_rebuild_interval) == 0 || grid_.n == 0) {
       PhaseStopwatch w(times_.grid);
       grid_ = reference::build_collision_grid(topo_, state_, params_);
     }

@@ -27,8 +27,8 @@ Vec3f envelope_centroid(const Topology& topo, const SimState& state, std::int32_
 
 CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, const Params& params) {
   CollisionGrid g;
-  g.n = grid_cells_per_axis(params.cell_size);
-  g.cell = static_cast<float>(params.cell_size);
+  g.n = grid_cells_per_axis(params.forces.cell_size);
+  g.cell = static_cast<float>(params.forces.cell_size);
   const std::int32_t count = topo.envelope_count();
   const std::int32_t cells = g.n * g.n * g.n;
   g.cx.resize(count);
@@ -49,7 +49,7 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
   }
   counting_sort(g.triangle_cell, cells, g.cell_start, g.sorted_triangles);
   fill_slot_elements(topo, g);
-  if (params.far_cells != 0) build_far_runs(g);
+  if (params.forces.far_cells != 0) build_far_runs(g);
   return g;
 }
 

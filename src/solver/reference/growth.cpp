@@ -10,10 +10,10 @@ namespace animpak::reference {
 
 void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
                     bool growing, const SimState& state, std::vector<float>& proposed) {
-  const float step = static_cast<float>(params.growth_rate * params.dt);
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
-  const float shrink = static_cast<float>((growing ? params.shrink_rate : params.settle_shrink_rate) * params.dt);
-  const float cap = static_cast<float>(params.max_growth);
+  const float shrink = static_cast<float>((growing ? params.growth.shrink_rate : params.growth.settle_shrink_rate) * params.forces.dt);
+  const float cap = static_cast<float>(params.growth.max_growth);
   const std::int32_t slices = topo.slice_count();
   proposed.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
@@ -40,8 +40,8 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
 
 std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
                          SimState& state, std::vector<std::uint8_t>& changed) {
-  const float ratio = static_cast<float>(params.growth_ratio);
-  const float neighbour_ratio = static_cast<float>(params.neighbour_growth_ratio);
+  const float ratio = static_cast<float>(params.growth.growth_ratio);
+  const float neighbour_ratio = static_cast<float>(params.growth.neighbour_growth_ratio);
   // The element's smallest proposal bounds every slice of it, and each slice's time neighbours bound it.
   changed.assign(topo.slice_count(), growth_kept);
   std::int32_t grown = 0;

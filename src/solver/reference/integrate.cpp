@@ -15,8 +15,8 @@
 namespace animpak::reference {
 
 void integrate(const ForceField& force, const Params& params, SimState& state) {
-  const float dt = static_cast<float>(params.dt);
-  const float cap = static_cast<float>(params.velocity_cap * params.dt);
+  const float dt = static_cast<float>(params.forces.dt);
+  const float cap = static_cast<float>(params.forces.velocity_cap * params.forces.dt);
   const std::size_t n = state.x.size();
   for (std::size_t v = 0; v < n; ++v) {
     float vx = state.vx[v] + force.x[v] * dt;

@@ -35,7 +35,7 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
   RepulsionResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const Vec3f x{state.x[v], state.y[v], state.t[v]};
-  const float eps = static_cast<float>(params.repulsion_epsilon);
+  const float eps = static_cast<float>(params.forces.repulsion_epsilon);
   Vec3f part[4];
   float closest2 = std::numeric_limits<float>::infinity();
   for (const std::int32_t k : near) {
@@ -65,7 +65,7 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
   // The closest distance feeds the stop test even while the vertex overlaps.
   r.closest = std::sqrt(closest2);
   if (overlapping) return r;
-  const float k = static_cast<float>(params.k_repulsion);
+  const float k = static_cast<float>(params.forces.k_repulsion);
   r.force = {k * sum.x, k * sum.y, k * sum.t};
   return r;
 }

@@ -9,11 +9,11 @@ namespace animpak::reference {
 
 float spring_stiffness(const Params& params, SpringClass c) {
   switch (c) {
-    case SpringClass::edge: return static_cast<float>(params.k_edge);
-    case SpringClass::shear: return static_cast<float>(params.k_shear);
-    case SpringClass::negative_space: return static_cast<float>(params.k_negative_space);
-    case SpringClass::time: return static_cast<float>(params.k_time);
-    case SpringClass::target: return static_cast<float>(params.k_target);
+    case SpringClass::edge: return static_cast<float>(params.forces.k_edge);
+    case SpringClass::shear: return static_cast<float>(params.forces.k_shear);
+    case SpringClass::negative_space: return static_cast<float>(params.forces.k_negative_space);
+    case SpringClass::time: return static_cast<float>(params.forces.k_time);
+    case SpringClass::target: return static_cast<float>(params.forces.k_target);
   }
   return 0.0f;
 }

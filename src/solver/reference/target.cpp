@@ -18,7 +18,7 @@ Vec3f target_force(const Topology& topo, const SimState& state, const Params& pa
   const float len = std::sqrt(d2);
   const float inv_len = 1.0f / len;
   // Eq. 2 with ℓ = 0: s = +1 and (|u| − ℓ)² = |u|².
-  const float w = static_cast<float>(params.k_target) * inv_len * (len * len);
+  const float w = static_cast<float>(params.forces.k_target) * inv_len * (len * len);
   return {ux * w, uy * w, ut * w};
 }
 

@@ -5,7 +5,7 @@
 namespace animpak::reference {
 
 Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
-  return {0.0f, 0.0f, static_cast<float>(params.k_temporal) * (topo.rest_t[v] - state.t[v])};
+  return {0.0f, 0.0f, static_cast<float>(params.forces.k_temporal) * (topo.rest_t[v] - state.t[v])};
 }
 
 }  // namespace animpak::reference

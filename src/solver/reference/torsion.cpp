@@ -44,7 +44,7 @@ Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& p
   // the centroid or one without a rest direction, since cross is 0 there.
   if (cross == 0.0f) return {};
   const float inv_len = 1.0f / std::sqrt(ux * ux + uy * uy);
-  const float k = static_cast<float>((topo.flags[v] & vertex_hold_angle) != 0 ? params.k_target_angle : params.k_torsion);
+  const float k = static_cast<float>((topo.flags[v] & vertex_hold_angle) != 0 ? params.forces.k_target_angle : params.forces.k_torsion);
   const float signed_k = cross > 0.0f ? -k : k;
   return {signed_k * (-uy * inv_len), signed_k * (ux * inv_len), 0.0f};
 }
