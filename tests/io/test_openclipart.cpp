@@ -12,6 +12,8 @@
 
 #include "animpak/error.hpp"
 #include "animpak/io.hpp"
+#include "openclipart.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,11 +40,10 @@ std::vector<fs::path> sample_files(const fs::path& root) {
 }  // namespace
 
 TEST_CASE("openclipart: a sample from every category imports or is refused by name", "[svg][openclipart]") {
-  const fs::path root = "/usr/share/openclipart/svg";
-  if (!fs::is_directory(root)) {
-    WARN("skipped: " << root << " is absent (Debian package openclipart-svg); no openclipart file was tried");
-    return;
-  }
+  const fs::path root = animpak::test::openclipart_root();
+  if (!fs::is_directory(root))
+    return animpak::test::skip(root.string() + " is absent (Debian package openclipart-svg); no openclipart file "
+                               "was tried");
   const auto files = sample_files(root);
   REQUIRE(files.size() >= 40);
   int imported = 0;

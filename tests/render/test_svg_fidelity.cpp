@@ -19,6 +19,8 @@
 #include "animpak/io.hpp"
 #include "animpak/render.hpp"
 #include "golden.hpp"
+#include "openclipart.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -181,10 +183,11 @@ const std::vector<std::pair<std::string, std::string>>& hand_written() {
 
 TEST_CASE("svg fidelity: the preview's alpha matches rsvg-convert's on openclipart and hand-written files",
           "[svg][fidelity]") {
-  if (!have_rsvg()) {
-    WARN("skipped: rsvg-convert is absent (Debian package librsvg2-bin); nothing was compared");
-    return;
-  }
+  if (!have_rsvg())
+    return animpak::test::skip("rsvg-convert is not on PATH (Debian package librsvg2-bin); nothing was compared");
+  const fs::path root = animpak::test::openclipart_root();
+  if (!fs::is_directory(root))
+    return animpak::test::skip(root.string() + " is absent (Debian package openclipart-svg); nothing was compared");
   const animpak::test::TempDir temp("animpak-fidelity-");
   const fs::path& dir = temp.path();
   std::vector<fs::path> files;
@@ -192,16 +195,11 @@ TEST_CASE("svg fidelity: the preview's alpha matches rsvg-convert's on openclipa
     std::ofstream(dir / name) << text;
     files.push_back(dir / name);
   }
-  const fs::path root = "/usr/share/openclipart/svg";
-  if (fs::is_directory(root)) {
-    std::vector<fs::path> all;
-    for (const auto& entry : fs::recursive_directory_iterator(root))
-      if (entry.is_regular_file() && entry.path().extension() == ".svg") all.push_back(entry.path());
-    std::sort(all.begin(), all.end());
-    for (std::size_t i = 0; i < all.size(); i += kStride) files.push_back(all[i]);
-  } else {
-    WARN("openclipart is absent (Debian package openclipart-svg): only the hand-written files were compared");
-  }
+  std::vector<fs::path> all;
+  for (const auto& entry : fs::recursive_directory_iterator(root))
+    if (entry.is_regular_file() && entry.path().extension() == ".svg") all.push_back(entry.path());
+  std::sort(all.begin(), all.end());
+  for (std::size_t i = 0; i < all.size(); i += kStride) files.push_back(all[i]);
 
   int compared = 0;
   std::ostringstream report;
@@ -222,5 +220,5 @@ TEST_CASE("svg fidelity: the preview's alpha matches rsvg-convert's on openclipa
   report << compared << " of " << files.size() << " files compared";
   for (const auto& [why, count] : skips) report << "; " << count << " skipped for " << why;
   WARN(report.str());
-  if (fs::is_directory(root)) CHECK(compared >= 30);
+  CHECK(compared >= 30);
 }
