@@ -20,6 +20,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kFilesPerCategory = 3;
+// The share of the sample that must import: nearly all of it, so that a change that refuses more than a
+// few files fails, naming them.
+constexpr double kMinImported = 0.95;
 
 std::vector<fs::path> sample_files(const fs::path& root) {
   std::vector<fs::path> categories, picked;
@@ -49,7 +52,7 @@ TEST_CASE("openclipart: a sample from every category imports or is refused by na
   int imported = 0;
   std::map<std::string, int> refusals;
   std::vector<std::pair<double, std::string>> times;
-  std::ostringstream report;
+  std::ostringstream report, refused;
   for (const auto& file : files) {
     const auto start = std::chrono::steady_clock::now();
     try {
@@ -66,6 +69,7 @@ TEST_CASE("openclipart: a sample from every category imports or is refused by na
       const std::string reason = what.substr(colon == std::string::npos ? 0 : colon + 2);
       ++refusals[reason.substr(0, reason.find(';'))];
       report << "  refused " << file.string() << ": " << what << "\n";
+      refused << "  " << what << "\n";
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     times.emplace_back(ms, file.string());
@@ -77,4 +81,6 @@ TEST_CASE("openclipart: a sample from every category imports or is refused by na
   for (size_t i = 0; i < std::min<size_t>(3, times.size()); ++i)
     report << " " << times[i].second << " (" << times[i].first << " ms)";
   WARN(report.str());
+  INFO("fewer than " << kMinImported * 100 << " % of the files imported; refused:\n" << refused.str());
+  CHECK(imported >= kMinImported * static_cast<double>(files.size()));
 }
