@@ -110,16 +110,20 @@ inline std::string breakdown_difference(const reference::ForceBreakdown& ref, co
   return out;
 }
 
-/// Compares every array of two states; returns all differences, one line each.
+/// Compares every array and scalar of two states bit for bit; returns all differences, one line each.
 inline std::string state_difference(const SimState& ref, const SimState& dev) {
   std::string out;
   for (const NamedStateArray& a : state_arrays) {
     const std::string d = bit_difference(a.name, ref.*a.array, dev.*a.array);
     if (!d.empty()) out += d + "\n";
   }
-  if (ref.iteration != dev.iteration) out += "iteration differs\n";
-  if (ref.settling_since != dev.settling_since) out += "settling_since differs\n";
-  if (ref.mark_iteration != dev.mark_iteration || ref.mark_growth != dev.mark_growth) out += "progress mark differs\n";
+  for (const NamedStateScalar& s : state_scalars) {
+    if (s.bits(ref) == s.bits(dev)) continue;
+    std::ostringstream line;
+    line.precision(17);
+    line << s.name << ": reference " << s.value(ref) << " device " << s.value(dev) << "\n";
+    out += line.str();
+  }
   return out;
 }
 
