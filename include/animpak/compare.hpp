@@ -1,12 +1,13 @@
 // Comparing the reference with a device, number by number: the ULP distance and worst errors of two
-// float arrays, and the named arrays of a ForceBreakdown and of a SimState, listed once so that the
-// equivalence suite and `animpak validate` walk the same ones in the same order.
+// float arrays, and the named arrays of a ForceBreakdown and the named arrays and scalars of a SimState,
+// listed once so that the equivalence suite and `animpak validate` walk the same ones in the same order.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include "animpak/reference.hpp"
@@ -56,5 +57,22 @@ struct NamedStateArray {
 
 /// Every float array of a SimState: x, y, t, vx, vy, vt, spring_rest, growth.
 extern const std::array<NamedStateArray, 8> state_arrays;
+
+/// One scalar of a SimState: a counter of the run, or its progress mark's mean g.
+struct NamedStateScalar {
+  const char* name;
+  std::variant<std::uint64_t SimState::*, double SimState::*> field;
+
+  /// The field's bits: two states agree on it when these are equal, the test the float arrays get
+  /// (so a double's -0 and +0 differ, and a NaN equals the same NaN).
+  std::uint64_t bits(const SimState& s) const;
+  /// Its value, for a report.
+  double value(const SimState& s) const;
+};
+
+/// Every scalar of a SimState: iteration, settling_since, secondary_since, mark_iteration, mark_growth.
+/// With state_arrays it covers every member: compare.cpp fails to compile when one is added to SimState
+/// but to neither table.
+extern const std::array<NamedStateScalar, 5> state_scalars;
 
 }  // namespace animpak

@@ -29,12 +29,12 @@ struct ForceComparison {
   WorstError abs, rel, ulp;
 };
 
-/// One SimState array that differs after the first differing step.
+/// One SimState array or scalar (index "scalar": size 1, ulp 0) that differs after the first differing step.
 struct StateMismatch {
   std::string array, index;  ///< e.g. "vx", "vertex"
   std::size_t count = 0, size = 0;
   std::size_t first = 0;     ///< the first differing entry
-  float reference = 0.0f, device = 0.0f;
+  double reference = 0.0, device = 0.0;  ///< a float array's entry, or the scalar (a counter is exact)
   std::int64_t ulp = 0;
 };
 

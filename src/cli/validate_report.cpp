@@ -82,13 +82,17 @@ void print_table(std::ostream& out, const ValidationHeader& header, const Device
                     cell(number(f.rel.value), f.rel), cell(integer(f.ulp.value), f.ulp)});
   print_rows(out, rows, "  ");
   if (v.first_differing_step < 0) {
-    out << "state (x, y, t, vx, vy, vt, spring_rest, growth): identical for " << v.steps << " steps\n";
+    out << "state (x, y, t, vx, vy, vt, spring_rest, growth and the counters): identical for " << v.steps
+        << " steps\n";
   } else {
     out << "state: first differs after step " << v.first_differing_step << ":\n";
     out.precision(9);
     for (const StateMismatch& m : v.mismatches)
-      out << "  " << m.array << "[" << m.first << "] (" << m.index << "): reference " << m.reference << ", device "
-          << m.device << ", " << m.ulp << " ulp; " << m.count << " of " << m.size << " differ\n";
+      if (m.index == "scalar")
+        out << "  " << m.array << ": reference " << m.reference << ", device " << m.device << "\n";
+      else
+        out << "  " << m.array << "[" << m.first << "] (" << m.index << "): reference " << m.reference
+            << ", device " << m.device << ", " << m.ulp << " ulp; " << m.count << " of " << m.size << " differ\n";
   }
   out << "verdict: " << v.verdict() << "\n";
 }

@@ -60,4 +60,24 @@ const std::array<NamedStateArray, 8> state_arrays = {{{"x", &SimState::x, "verte
                                                       {"spring_rest", &SimState::spring_rest, "slot"},
                                                       {"growth", &SimState::growth, "slice"}}};
 
+const std::array<NamedStateScalar, 5> state_scalars = {{{"iteration", &SimState::iteration},
+                                                        {"settling_since", &SimState::settling_since},
+                                                        {"secondary_since", &SimState::secondary_since},
+                                                        {"mark_iteration", &SimState::mark_iteration},
+                                                        {"mark_growth", &SimState::mark_growth}}};
+
+// SimState's members are all 8-byte aligned, so it has no padding and its size is the sum of its
+// members': a member added to it, and to neither table above, breaks this sum.
+static_assert(sizeof(SimState) == std::tuple_size_v<decltype(state_arrays)> * sizeof(std::vector<float>) +
+                                      std::tuple_size_v<decltype(state_scalars)> * sizeof(std::uint64_t),
+              "a SimState member is missing from state_arrays or state_scalars");
+
+std::uint64_t NamedStateScalar::bits(const SimState& s) const {
+  return std::visit([&](auto member) { return std::bit_cast<std::uint64_t>(s.*member); }, field);
+}
+
+double NamedStateScalar::value(const SimState& s) const {
+  return std::visit([&](auto member) { return static_cast<double>(s.*member); }, field);
+}
+
 }  // namespace animpak

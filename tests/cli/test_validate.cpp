@@ -11,6 +11,7 @@
 #include "animpak/opencl.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -31,6 +32,8 @@ class Scene {
   animpak::test::TempDir dir_;
 };
 
+constexpr const char* no_pocl = "PoCL is not installed (Debian package pocl-opencl-icd); validate is not tested on it";
+
 bool have_pocl() {
   try {
     return !animpak::choose_device("pocl").reference;
@@ -42,10 +45,7 @@ bool have_pocl() {
 }  // namespace
 
 TEST_CASE("animpak validate --device pocl: identical to the reference, exit 0") {
-  if (!have_pocl()) {
-    WARN("PoCL is not installed; validate is not tested on it");
-    return;
-  }
+  if (!have_pocl()) return animpak::test::skip(no_pocl);
   const Scene scene;
   const CommandResult r = run_animpak("validate " + scene.file() + " --device pocl --steps 5");
   INFO(r.out << r.err);
@@ -58,10 +58,9 @@ TEST_CASE("animpak validate --device pocl: identical to the reference, exit 0") 
 
 TEST_CASE("animpak validate --all-devices --json: one row per OpenCL device") {
   const auto devices = animpak::list_devices();
-  if (devices.empty()) {
-    WARN("no OpenCL device; --all-devices has nothing to validate");
-    return;
-  }
+  if (devices.empty())
+    return animpak::test::skip("no OpenCL device (Debian package pocl-opencl-icd): --all-devices has nothing to "
+                               "validate");
   const Scene scene;
   const CommandResult r = run_animpak("validate " + scene.file() + " --all-devices --json --steps 2");
   INFO(r.out << r.err);
@@ -81,10 +80,7 @@ TEST_CASE("animpak validate --all-devices --json: one row per OpenCL device") {
 }
 
 TEST_CASE("animpak validate: a spring kernel reassociated in one line differs, exit 4, named springs") {
-  if (!have_pocl()) {
-    WARN("PoCL is not installed; validate is not tested on it");
-    return;
-  }
+  if (!have_pocl()) return animpak::test::skip(no_pocl);
   const Scene scene;
   const fs::path kernels = scene.dir() / "kernels";
   fs::copy(fs::path(ANIMPAK_SOURCE_DIR) / "kernels", kernels);

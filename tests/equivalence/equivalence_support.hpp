@@ -7,7 +7,6 @@
 
 #include <cstdint>
 #include <cstdlib>
-#include <iostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -15,6 +14,7 @@
 
 #include "animpak/compare.hpp"
 #include "animpak/opencl.hpp"
+#include "skip.hpp"
 #include "solver/tiny_worlds.hpp"
 
 namespace animpak::test {
@@ -53,15 +53,12 @@ inline std::uint64_t seed_stride() {
   return stride >= 1 ? static_cast<std::uint64_t>(stride) : 1;
 }
 
-/// The line ctest's SKIP_REGULAR_EXPRESSION looks for (tests/CMakeLists.txt), so that a run with no
-/// device to compare shows its tests as skipped, not as passed.
-inline constexpr const char* no_device_skip = "skipped: no OpenCL device";
-
-/// True, after printing the skip line, when there is no device to test (none installed, or none that
-/// ANIMPAK_TEST_DEVICE names); the caller returns at once.
+/// True, after skipping the test (tests/skip.hpp), when there is no device to test (none installed, or
+/// none that ANIMPAK_TEST_DEVICE names); the caller returns at once.
 inline bool skip_without_devices(const std::vector<DeviceChoice>& devices) {
   if (!devices.empty()) return false;
-  std::cout << no_device_skip << " (or none matching ANIMPAK_TEST_DEVICE): nothing was compared\n";
+  skip("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE; Debian package pocl-opencl-icd): "
+       "nothing was compared");
   return true;
 }
 
@@ -113,16 +110,20 @@ inline std::string breakdown_difference(const reference::ForceBreakdown& ref, co
   return out;
 }
 
-/// Compares every array of two states; returns all differences, one line each.
+/// Compares every array and scalar of two states bit for bit; returns all differences, one line each.
 inline std::string state_difference(const SimState& ref, const SimState& dev) {
   std::string out;
   for (const NamedStateArray& a : state_arrays) {
     const std::string d = bit_difference(a.name, ref.*a.array, dev.*a.array);
     if (!d.empty()) out += d + "\n";
   }
-  if (ref.iteration != dev.iteration) out += "iteration differs\n";
-  if (ref.settling_since != dev.settling_since) out += "settling_since differs\n";
-  if (ref.mark_iteration != dev.mark_iteration || ref.mark_growth != dev.mark_growth) out += "progress mark differs\n";
+  for (const NamedStateScalar& s : state_scalars) {
+    if (s.bits(ref) == s.bits(dev)) continue;
+    std::ostringstream line;
+    line.precision(17);
+    line << s.name << ": reference " << s.value(ref) << " device " << s.value(dev) << "\n";
+    out += line.str();
+  }
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "frame_writers.hpp"
 #include "golden.hpp"
 #include "lottie_schema.hpp"
+#include "skip.hpp"
 #include "temp_dir.hpp"
 #include "tiny_world.hpp"
 #ifdef ANIMPAK_HAVE_RLOTTIE
@@ -157,7 +158,8 @@ TEST_CASE("lottie schema check: broken documents fail, each error naming its JSO
 
 TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames, alpha IoU at least 0.97") {
 #ifndef ANIMPAK_HAVE_RLOTTIE
-  WARN("skipped: rlottie is absent (Debian package librlottie-dev); nothing was compared");
+  animpak::test::skip("rlottie was not found when the build was configured (Debian package librlottie-dev); "
+                      "nothing was compared");
 #else
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
@@ -178,10 +180,8 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
 }
 
 TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpak's PNG frames, alpha IoU at least 0.97") {
-  if (!have_chromium()) {
-    WARN("skipped: chromium is absent (Debian package chromium); nothing was compared");
-    return;
-  }
+  if (!have_chromium())
+    return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "chromium";

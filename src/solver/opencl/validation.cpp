@@ -53,6 +53,8 @@ std::vector<StateMismatch> compare_states(const SimState& ref, const SimState& d
     out.push_back({a.name, a.index, diff.count, r.size(), diff.first, r[diff.first], d[diff.first],
                    ulp_distance(r[diff.first], d[diff.first])});
   }
+  for (const NamedStateScalar& s : state_scalars)
+    if (s.bits(ref) != s.bits(dev)) out.push_back({s.name, "scalar", 1, 1, 0, s.value(ref), s.value(dev), 0});
   return out;
 }
 
