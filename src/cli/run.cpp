@@ -7,6 +7,7 @@
 
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
+#include "animpak/version.hpp"
 #include "commands.hpp"
 #include "frontend.hpp"
 
@@ -23,7 +24,8 @@ int fail(const std::string& program, ExitCode code, const std::string& message) 
 int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   const std::string program = frontend->name();
   CLI::App app{frontend->description(), program};
-  app.set_version_flag("--version", program + " 0.1.0 (commit " + std::string(build_commit()) + ")");
+  app.set_version_flag("--version",
+                       program + " " + std::string(animpak_version) + " (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
              "that differs from the reference.");

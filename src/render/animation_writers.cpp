@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "animpak/error.hpp"
+#include "animpak/version.hpp"
 #include "frame_writers.hpp"
 
 namespace animpak::frame_writers {
@@ -189,7 +190,8 @@ void write_lottie(const World& world, GeometryLog& log, const FrameOutput& out, 
   const int frames = log.frames(), decimals = std::clamp(out.precision, 0, 12);
 
   json << "{\"v\":\"5.7.4\",\"fr\":" << number(out.fps, 6) << ",\"ip\":0,\"op\":" << frames << ",\"w\":" << width
-       << ",\"h\":" << height << ",\"nm\":\"animpak\",\"ddd\":0,\"assets\":[],\"layers\":[";
+       << ",\"h\":" << height << ",\"nm\":\"animpak\",\"ddd\":0,\"meta\":{\"g\":\"animpak "
+       << animpak_version << "\"},\"assets\":[],\"layers\":[";
   // Lottie draws layers[0] on top: the container (drawn last in the frames), then the elements from the
   // last-drawn one down, then the background.
   int index = 0;

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "animpak/version.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"
 
@@ -14,13 +15,13 @@ TEST_CASE("animpak: --help for the program and every command exits 0 and describ
     CHECK(r.out.find("Usage") != std::string::npos);
   }
   CHECK(run_animpak("--help").out.find("inspect") != std::string::npos);
-  CHECK(run_animpak("--version").out.find("animpak 0.1.0") != std::string::npos);
+  CHECK(run_animpak("--version").out.find("animpak " + std::string(animpak::animpak_version) + " (") != std::string::npos);
 }
 
 TEST_CASE("animpak --version names the commit of the source tree it was built from, read at build time") {
   const std::string version = run_animpak("--version").out;
   std::smatch m;
-  REQUIRE(std::regex_search(version, m, std::regex(R"(animpak 0\.1\.0 \(commit ([0-9a-f]{7,}|unknown)(-dirty)?\))")));
+  REQUIRE(std::regex_search(version, m, std::regex(R"(animpak [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}|unknown)(-dirty)?\))")));
   // The tree's commit now, without the dirty mark: a test file edited since the build may add one. A
   // commit read when the build folder was configured, many commits ago, fails here.
   const CommandResult git = run_command("git -C '" ANIMPAK_SOURCE_DIR "' rev-parse --short=7 HEAD");

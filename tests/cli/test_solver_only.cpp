@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "animpak/version.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
@@ -26,7 +27,7 @@ TEST_CASE("animpak-solve --help: lists the solver commands and none that draw") 
   CHECK(help.out.find("\n  render ") == std::string::npos);
   // The same commit as animpak's, from the same build.
   const std::string version = run_animpak("--version").out;
-  REQUIRE(version.rfind("animpak 0.1.0 (commit ", 0) == 0);
+  REQUIRE(version.rfind("animpak " + std::string(animpak::animpak_version) + " (commit ", 0) == 0);
   CHECK(run_animpak_solve("--version").out == "animpak-solve" + version.substr(std::string("animpak").size()));
 }
 

@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "animpak/version.hpp"
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
 #include "frame_writers.hpp"
@@ -76,6 +77,8 @@ TEST_CASE("lottie: animation.json passes the schema check, one layer per element
   const std::vector<std::string> errors = lottie_schema::errors(doc);
   for (const std::string& e : errors) UNSCOPED_INFO(e);
   CHECK(errors.empty());
+  // The generator names the version a player's user would report (CMakeLists.txt's project version).
+  CHECK(doc["meta"]["g"] == "animpak " + std::string(animpak::animpak_version));
 
   const Image png = read_rgba(dir / "frames" / frame_png(0));
   CHECK(doc["w"] == png.width);
