@@ -4,8 +4,7 @@
 // to the face with barycentric coordinates. Every dot product sums x, then y, then t.
 //
 // Defined here, inline, because the repulsion loop calls it for every near triangle of every boundary
-// vertex: a call into another translation unit cost the reference about 8 % of its step on the
-// aquatic-loop example (docs/architecture.md, "The reference's speed").
+// vertex (docs/architecture.md, "The reference's speed").
 #pragma once
 
 #include "animpak/state.hpp"

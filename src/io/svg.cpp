@@ -1,4 +1,4 @@
-// svgpp glue: the only translation unit that includes svgpp (one takes ~25 s to compile). svgpp walks
+// svgpp glue: the only translation unit that includes svgpp, whose templates are slow to compile. svgpp walks
 // the libxml2 tree, parses attributes, CSS `style`, paths, shapes, transforms and viewports; the
 // contexts below keep the inherited style, compose transforms and emit flattened ArtPaths.
 #include <libxml/tree.h>

@@ -154,7 +154,7 @@ std::string shape_value(const std::vector<Vec2>& pixels, bool closed, int decima
 // Keyframes of one property over the N frames, value(i) at frame i, plus a last key at frame N holding
 // frame 0's value: a linear last interval runs from frame N − 1 back to frame 0, so the loop is seamless.
 // Keys carry no end value ("e"): each interval ends on the next key's start, as Bodymovin 5.5 and later
-// write it (rlottie 0.1 draws such a file exactly as one with end values, at 56 % of its size).
+// write it, and players draw such a file exactly as one with end values.
 // `shape` properties take scalar easing, others one entry per dimension.
 template <class Value>
 void write_keyframes(std::ostream& json, int frames, Interpolation interpolation, bool shape, Value value) {

@@ -284,7 +284,7 @@ TEST_CASE("build_world: a phase starts each copy's animation that many slices on
   REQUIRE(ahead.elements.size() == plain.elements.size());
   for (std::size_t i = 0; i < plain.elements.size(); ++i) {
     INFO("element " << i);
-    // Seeds and orientations are drawn as before.
+    // The animation changes no draw: seeds and orientations are those of the still scene.
     CHECK(ahead.elements[i].position.x == plain.elements[i].position.x);
     CHECK(ahead.elements[i].angle == plain.elements[i].angle);
     const std::vector<double> a = slice_sizes(ahead, int(i)), p = slice_sizes(plain, int(i));

@@ -44,9 +44,8 @@ DeviceChoice default_device(const std::vector<DeviceInfo>& devices) {
     choice.reason = "reference: no OpenCL platform found (install an ICD such as pocl-opencl-icd for OpenCL)";
     return choice;
   }
-  // A simulator may call itself a GPU (Oclgrind does) yet runs kernels far slower (the equivalence suite's
-  // 100 steps of a small scene: seconds on PoCL, unfinished after 12 minutes on Oclgrind): whoever
-  // installs one to check kernels must not get every pack run in it, so only --device chooses one.
+  // A simulator may call itself a GPU (Oclgrind does) yet runs kernels orders of magnitude slower:
+  // whoever installs one to check kernels must not get every pack run in it, so only --device chooses one.
   std::string skipped;
   for (const DeviceInfo& d : devices)
     if (d.simulator) skipped += (skipped.empty() ? "" : ", ") + d.name;
