@@ -118,6 +118,13 @@ struct ValidateOptions {
 /// for bit; 0 when identical, ExitCode::differs when not.
 int validate(const ValidateOptions& options);
 
+struct ParamsOptions {
+  bool markdown = false;  ///< the table of docs/parameters.md, with the paper's values
+};
+
+/// Prints every constant a scene's `params` may override: name, default, range, meaning.
+int params(const ParamsOptions& options);
+
 /// Parses the command line for this executable's commands (see frontend.hpp) and runs the chosen one;
 /// never throws.
 int run(int argc, char** argv);
