@@ -125,6 +125,9 @@ struct ParamsOptions {
 /// Prints every constant a scene's `params` may override: name, default, range, meaning.
 int params(const ParamsOptions& options);
 
+/// Prints the JSON Schema of the scene file (docs/scene.schema.json).
+int schema();
+
 /// Parses the command line for this executable's commands (see frontend.hpp) and runs the chosen one;
 /// never throws.
 int run(int argc, char** argv);

@@ -1,5 +1,6 @@
-// `animpak params`: the table of the code printed as documentation. The table of docs/parameters.md is
-// this command's output (scripts/update-docs.sh), and a test fails when the docs and the code disagree.
+// `animpak params` and `animpak schema`: the tables of the code printed as documentation. The table of
+// docs/parameters.md and docs/scene.schema.json are these commands' output (scripts/update-docs.sh), and
+// tests fail when the docs and the code disagree.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "animpak/params.hpp"
+#include "animpak/scene_spec.hpp"
 #include "commands.hpp"
 
 namespace animpak::cli {
@@ -69,6 +71,11 @@ int params(const ParamsOptions& options) {
     print_markdown();
   else
     print_text();
+  return 0;
+}
+
+int schema() {
+  std::cout << scene_json_schema();
   return 0;
 }
 

@@ -22,7 +22,7 @@ TEST_CASE("animpak: --help for the program and every command exits 0 and describ
 }
 
 // That docs/ holds exactly this output is the `docs:` tests' job (tests/docs/generated_docs.py).
-TEST_CASE("animpak params: the constants a scene may override, from the code's table") {
+TEST_CASE("animpak params and schema: the constants and the scene format, from the code's tables") {
   const CommandResult text = run_animpak("params");
   REQUIRE(text.code == 0);
   CHECK(text.out.rfind("name ", 0) == 0);
@@ -33,6 +33,12 @@ TEST_CASE("animpak params: the constants a scene may override, from the code's t
   REQUIRE(markdown.code == 0);
   CHECK(markdown.out.rfind("| name | default | range | paper | meaning |\n|---|", 0) == 0);
   CHECK_THAT(markdown.out, Contains("| `k_repulsion` | 8e-8 | ≥ 0 | k_rpl = 10 (Eq. 1) |"));
+
+  const CommandResult schema = run_animpak("schema");
+  REQUIRE(schema.code == 0);
+  const nlohmann::json parsed = nlohmann::json::parse(schema.out);
+  CHECK(parsed["$schema"] == "https://json-schema.org/draft/2020-12/schema");
+  CHECK(parsed["required"] == nlohmann::json::array({"container", "elements"}));
 }
 
 TEST_CASE("animpak --version names the commit of the source tree it was built from, read at build time") {
