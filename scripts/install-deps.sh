@@ -16,8 +16,9 @@ packages=(
   # output: vector rasterisation, image files, video
   libcairo2-dev libopenimageio-dev ffmpeg
   # tests: Catch2 v2, the real-world SVG test bed, and rsvg-convert, the renderer `animpak check --png` is held to;
-  # rlottie and Chromium, the players the Lottie and animated SVG exports are held to
-  catch2 openclipart-svg librsvg2-bin librlottie-dev chromium
+  # rlottie and Chromium, the players the Lottie and animated SVG exports are held to; python3-jsonschema,
+  # the validator the example scenes are held to against docs/scene.schema.json
+  catch2 openclipart-svg librsvg2-bin librlottie-dev chromium python3-jsonschema
 )
 
 missing=()

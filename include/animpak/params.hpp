@@ -97,12 +97,17 @@ struct ParamInfo {
   double min;             ///< smallest valid value (inclusive)
   double max;             ///< largest valid value (inclusive)
   std::string_view meaning;
+  std::string_view paper;  ///< what the paper gives, before the conversion to the unit container
 };
 
-/// Every member of Params, group by group in declaration order. docs/parameters.md documents each entry.
+/// Every member of Params, group by group in declaration order. docs/parameters.md documents each entry;
+/// its table is `animpak params --markdown`.
 std::span<const ParamInfo> param_table();
 
 /// Reads a constant by its table entry, as a double.
 double param_value(const Params& params, const ParamInfo& info);
+
+/// Whether the constant is an integer (a scene must give it as one).
+bool param_is_integer(const ParamInfo& info);
 
 }  // namespace animpak

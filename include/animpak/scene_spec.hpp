@@ -13,6 +13,11 @@
 
 namespace animpak {
 
+/// The scene format this program reads: a scene file's optional `"version"` may not be larger. Raised
+/// only when an older animpak would misread a newer file (a field whose meaning changes), not when keys
+/// are added, since an older program already rejects keys it does not know.
+inline constexpr int kSceneFormatVersion = 1;
+
 /// A keyed similarity transform of the whole element, applied about the pivot.
 struct TransformKey {
   double t = 0.0;            ///< animation time in [0, 1]
@@ -111,5 +116,9 @@ SceneSpec load_scene(const std::filesystem::path& file);
 /// Same, from text in memory; relative art paths resolve against `base_dir`.
 SceneSpec parse_scene(const std::string& text, const std::filesystem::path& file_for_messages,
                       const std::filesystem::path& base_dir);
+
+/// The JSON Schema (draft 2020-12) of the scene file, written from the tables the parser checks keys,
+/// types and ranges with; docs/scene.schema.json is its output.
+std::string scene_json_schema();
 
 }  // namespace animpak

@@ -119,6 +119,16 @@ struct ValidateOptions {
 /// for bit; 0 when identical, ExitCode::differs when not.
 int validate(const ValidateOptions& options);
 
+struct ParamsOptions {
+  bool markdown = false;  ///< the table of docs/parameters.md, with the paper's values
+};
+
+/// Prints every constant a scene's `params` may override: name, default, range, meaning.
+int params(const ParamsOptions& options);
+
+/// Prints the JSON Schema of the scene file (docs/scene.schema.json).
+int schema();
+
 class Frontend;
 
 /// Parses the command line for the shared commands and `frontend`'s own (frontend.hpp) and runs the

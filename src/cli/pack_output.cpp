@@ -183,6 +183,7 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
   json seconds = {{"setup", r.setup_seconds}, {"simulation", r.result.seconds}};
   for (const NamedPhase& phase : phase_fields) seconds[phase.name] = r.times.*phase.seconds;
   json stats = {
+      {"format_version", kStatsFormatVersion},
       {"animpak", std::string(animpak_version)},
       {"commit", build_commit()},
       {"scene", r.checkpoint.scene_file.string()},
@@ -212,7 +213,8 @@ bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& c
     if (stats.is_discarded() || !stats.is_object()) return false;
   } else {
     // A folder without stats.json (copied without it): what the checkpoint itself knows.
-    stats = {{"animpak", std::string(animpak_version)},
+    stats = {{"format_version", kStatsFormatVersion},
+             {"animpak", std::string(animpak_version)},
              {"scene", checkpoint.scene_file.string()},
              {"seed", checkpoint.seed},
              {"elements", world.elements.size()},

@@ -29,6 +29,10 @@ struct PackReport {
   std::string driver;  ///< the device's driver and platform version
 };
 
+/// stats.json's `format_version` (docs/quality.md, "stats.json"): raised when a field is renamed, moved or
+/// changes meaning, so that scripts reading the file can tell; adding a field leaves it.
+inline constexpr int kStatsFormatVersion = 1;
+
 void write_stats(const std::filesystem::path& file, const PackReport& report);
 
 /// After `render`: replaces the frame metrics and quality summaries in `file` (stats.json) with those of

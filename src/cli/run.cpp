@@ -97,6 +97,13 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   bench_cmd->add_option("--grid-sort", bench_options.grid_sort,
                         "auto, host or device (see pack --grid-sort), or both: time each OpenCL device with each")
       ->check(CLI::IsMember({"auto", "host", "device", "both"}));
+  ParamsOptions params_options;
+  CLI::App* params_cmd = app.add_subcommand(
+      "params", "List the constants a scene's \"params\" may override, with their defaults and ranges");
+  params_cmd->add_flag("--markdown", params_options.markdown,
+                       "print the table of docs/parameters.md, with the paper's values");
+  CLI::App* schema_cmd =
+      app.add_subcommand("schema", "Print the JSON Schema of the scene file (docs/scene.schema.json)");
   frontend->add_commands(app, *pack_cmd, *bench_cmd);
 
   try {
@@ -118,6 +125,8 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
     if (bench_cmd->parsed()) return bench(bench_options, frontend->bench_plotter());
     if (devices_cmd->parsed()) return devices(devices_options);
     if (validate_cmd->parsed()) return validate(validate_options);
+    if (params_cmd->parsed()) return params(params_options);
+    if (schema_cmd->parsed()) return schema();
     if (const std::optional<int> code = frontend->run_own_command()) return *code;
     return fail(program, ExitCode::usage, "no command given; see " + program + " --help");
   } catch (const UsageError& e) {

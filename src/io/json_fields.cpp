@@ -80,9 +80,8 @@ std::string JsonField::shown() const {
   return text;
 }
 
-void JsonField::check_keys(std::initializer_list<std::string_view> allowed) const {
+void JsonField::check_keys(const std::vector<std::string_view>& names) const {
   if (!value_->is_object()) fail("expected an object, got " + shown());
-  const std::vector<std::string_view> names(allowed);
   for (const auto& [key, value] : value_->items()) {
     if (std::find(names.begin(), names.end(), key) != names.end()) continue;
     const std::string near = closest_name(key, names);
@@ -185,8 +184,8 @@ std::string JsonField::non_empty_string() const {
   return s;
 }
 
-std::size_t JsonField::choice(std::initializer_list<std::string_view> choices) const {
-  const std::vector<std::string_view> names(choices);
+std::size_t JsonField::choice(std::span<const std::string_view> choices) const {
+  const std::vector<std::string_view> names(choices.begin(), choices.end());
   const std::string wanted = "expected one of " + list_of(names) + ", got " + shown();
   if (!value_->is_string()) fail(wanted);
   const std::string s = value_->get<std::string>();

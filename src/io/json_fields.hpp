@@ -3,11 +3,11 @@
 #pragma once
 
 #include <cstdint>
-#include <initializer_list>
-#include <vector>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,7 +33,7 @@ class JsonField {
   [[noreturn]] void fail(const std::string& problem) const;
 
   /// Object access. `check_keys` rejects any key not in `allowed`, suggesting the closest one.
-  void check_keys(std::initializer_list<std::string_view> allowed) const;
+  void check_keys(const std::vector<std::string_view>& allowed) const;
   bool has(std::string_view key) const;
   JsonField required(std::string_view key) const;
   std::optional<JsonField> optional(std::string_view key) const;
@@ -54,7 +54,7 @@ class JsonField {
   std::string string() const;
   std::string non_empty_string() const;
   /// One of `choices`, as its index.
-  std::size_t choice(std::initializer_list<std::string_view> choices) const;
+  std::size_t choice(std::span<const std::string_view> choices) const;
   /// A two-number array `[x, y]`.
   Vec2 point() const;
 

@@ -1,5 +1,7 @@
 #include "scene_animation.hpp"
 
+#include "scene_schema.hpp"
+
 #include <cmath>
 #include <optional>
 #include <string>
@@ -22,9 +24,9 @@ std::string show(Vec2 p) {
 }
 
 /// t of keys[index], checked against the previous key's t.
-double key_time(const JsonField& key, std::size_t index, double previous) {
+double key_time(const JsonField& key, const ObjectSpec& format, std::size_t index, double previous) {
   const JsonField t = key.required("t");
-  const double value = t.number_in(0.0, 1.0);
+  const double value = read_number(t, format.at("t"));
   if (index > 0 && value == previous)
     t.fail("duplicate t " + format_number(value) + "; each key needs its own time");
   if (index > 0 && value < previous)
@@ -37,12 +39,13 @@ std::vector<TransformKey> read_transform_keys(const JsonField& field) {
   std::vector<TransformKey> keys;
   for (std::size_t i = 0, n = field.array_size(); i < n; ++i) {
     const JsonField key = field.item(i);
-    key.check_keys({"t", "translate", "rotate", "scale"});
+    const ObjectSpec& format = kTransformKeyObject;
+    key.check_keys(format.keys());
     TransformKey k;
-    k.t = key_time(key, i, keys.empty() ? 0.0 : keys.back().t);
+    k.t = key_time(key, format, i, keys.empty() ? 0.0 : keys.back().t);
     if (auto f = key.optional("translate")) k.translate = f->point();
-    if (auto f = key.optional("rotate")) k.rotate = f->number();
-    if (auto f = key.optional("scale")) k.scale = f->positive_number();
+    if (auto f = key.optional("rotate")) k.rotate = read_number(*f, format.at("rotate"));
+    if (auto f = key.optional("scale")) k.scale = read_number(*f, format.at("scale"));
     keys.push_back(k);
   }
   return keys;
@@ -54,9 +57,9 @@ std::vector<HandleKey> read_handle_keys(const JsonField& field) {
   if (n == 0) field.fail("a handle needs at least one key");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField key = field.item(i);
-    key.check_keys({"t", "position"});
+    key.check_keys(kHandleKeyObject.keys());
     HandleKey k;
-    k.t = key_time(key, i, keys.empty() ? 0.0 : keys.back().t);
+    k.t = key_time(key, kHandleKeyObject, i, keys.empty() ? 0.0 : keys.back().t);
     k.position = key.required("position").point();
     keys.push_back(k);
   }
@@ -88,10 +91,11 @@ void check_handle_seam(const JsonField& keys_field, const std::vector<HandleKey>
 }  // namespace
 
 AnimationSpec read_animation(const JsonField& field) {
-  field.check_keys({"preset", "turns", "amplitude", "count", "wavelength", "loop", "pivot", "keys", "handles"});
+  const ObjectSpec& format = kAnimationObject;
+  field.check_keys(format.keys());
   AnimationSpec spec;
   if (auto f = field.optional("preset"))
-    spec.preset = static_cast<AnimationPreset>(f->choice({"none", "rotate", "pulse", "swim"}));
+    spec.preset = static_cast<AnimationPreset>(read_choice(*f, format.at("preset")));
 
   // A parameter of another preset is almost always a mistake (a preset changed, its knobs left behind).
   struct Knob {
@@ -110,12 +114,13 @@ AnimationSpec read_animation(const JsonField& field) {
     f->fail("does not apply to preset `" + field.required("preset").string() + "`; remove it or change the preset");
   }
 
-  if (auto f = field.optional("turns")) spec.turns = f->number();
-  // Pulse scales by 1 ± amplitude: at 1 the element would vanish.
-  if (auto f = field.optional("amplitude"))
-    spec.amplitude = f->number_in(0.0, p == AnimationPreset::pulse ? 0.9 : 1.0);
-  if (auto f = field.optional("count")) spec.count = f->integer_in(1, 100);
-  if (auto f = field.optional("wavelength")) spec.wavelength = f->number_in(0.05, 10.0);
+  if (auto f = field.optional("turns")) spec.turns = read_number(*f, format.at("turns"));
+  if (auto f = field.optional("amplitude")) {
+    const Range range = format.at("amplitude").range;
+    spec.amplitude = f->number_in(range.min, p == AnimationPreset::pulse ? kPulseAmplitudeMax : range.max);
+  }
+  if (auto f = field.optional("count")) spec.count = read_integer(*f, format.at("count"));
+  if (auto f = field.optional("wavelength")) spec.wavelength = read_number(*f, format.at("wavelength"));
   if (auto f = field.optional("loop")) spec.loop = f->boolean();
   if (auto f = field.optional("pivot")) spec.pivot = f->point();
 
@@ -126,7 +131,7 @@ AnimationSpec read_animation(const JsonField& field) {
   if (auto f = field.optional("handles")) {
     for (std::size_t i = 0, n = f->array_size(); i < n; ++i) {
       const JsonField handle = f->item(i);
-      handle.check_keys({"point", "keys"});
+      handle.check_keys(kHandleObject.keys());
       HandleSpec h;
       h.point = handle.required("point").point();
       for (std::size_t j = 0; j < spec.handles.size(); ++j)

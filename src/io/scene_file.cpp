@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -16,6 +17,7 @@
 #include "animpak/scene_spec.hpp"
 #include "json_fields.hpp"
 #include "scene_animation.hpp"
+#include "scene_schema.hpp"
 #include "text_file.hpp"
 
 namespace animpak {
@@ -25,12 +27,13 @@ namespace fs = std::filesystem;
 using io_detail::backticked;
 using io_detail::format_number;
 using io_detail::JsonField;
+using io_detail::read_integer;
+using io_detail::read_number;
 using nlohmann::json;
 
 /// How close the end of one guided path must be to the start of the path it loops into, in art units:
 /// far below anything visible, above the rounding of coordinates typed with a few decimals.
 constexpr double kLoopTolerance = 1e-6;
-constexpr int kMaxCount = 100000;
 
 fs::path resolve_art(const JsonField& field, const fs::path& base_dir) {
   const std::string text = field.non_empty_string();
@@ -56,13 +59,14 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir) {
     spec.art = resolve_art(field, base_dir);
     return spec;
   }
-  field.check_keys({"art", "outline", "holes"});
+  const io_detail::ObjectSpec& format = io_detail::kContainerObject;
+  field.check_keys(format.keys());
   spec.art = resolve_art(field.required("art"), base_dir);
-  if (auto f = field.optional("outline")) spec.outline = f->integer_in(0, kMaxCount);
+  if (auto f = field.optional("outline")) spec.outline = read_integer(*f, format.at("outline"));
   if (auto f = field.optional("holes")) {
     std::vector<int> holes;
     for (std::size_t i = 0, n = f->array_size(); i < n; ++i) {
-      const int hole = f->item(i).integer_in(0, kMaxCount);
+      const int hole = read_integer(f->item(i), *format.at("holes").items);
       if (std::find(holes.begin(), holes.end(), hole) != holes.end())
         f->item(i).fail("path " + std::to_string(hole) + " is listed twice");
       if (spec.outline == hole) f->item(i).fail("path " + std::to_string(hole) + " is the outline and cannot be a hole");
@@ -74,12 +78,13 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir) {
 }
 
 std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::path& base_dir) {
+  const io_detail::ObjectSpec& format = io_detail::kElementObject;
   std::vector<LibraryElementSpec> elements;
   const std::size_t n = field.array_size();
   if (n == 0) field.fail("expected at least one element");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField item = field.item(i);
-    item.check_keys({"name", "art", "animation", "count", "weight", "phase", "secondary"});
+    item.check_keys(format.keys());
     LibraryElementSpec e;
     e.art = resolve_art(item.required("art"), base_dir);
     const std::optional<JsonField> name = item.optional("name");
@@ -90,17 +95,21 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
             .fail("name " + backticked(e.name) + (name ? "" : " (the art file's stem)") + " is already used by " +
                   field.item(j).path() + "; give each element a unique `name`");
     if (auto f = item.optional("animation")) e.animation = io_detail::read_animation(*f);
-    if (auto f = item.optional("count")) e.count = f->integer_in(0, kMaxCount);
+    if (auto f = item.optional("count")) e.count = read_integer(*f, format.at("count"));
     if (auto f = item.optional("weight")) {
       if (e.count) f->fail("give either `count` or `weight`, not both");
-      e.weight = f->positive_number();
+      e.weight = read_number(*f, format.at("weight"));
     }
     if (auto f = item.optional("phase")) {
+      const io_detail::FieldSpec& phase = format.at("phase");
+      const std::string_view random = phase.alternative->words.front();
       if (f->json().is_string()) {
-        if (f->string() != "random") f->fail("expected a number in [0, 1] or \"random\", got " + f->shown());
+        if (f->string() != random)
+          f->fail("expected a number in [" + format_number(phase.range.min) + ", " + format_number(phase.range.max) +
+                  "] or \"" + std::string(random) + "\", got " + f->shown());
         e.random_phase = true;
       } else {
-        e.phase = f->number_in(0.0, 1.0);
+        e.phase = read_number(*f, phase);
       }
     }
     if (auto f = item.optional("secondary")) e.secondary = f->boolean();
@@ -127,25 +136,26 @@ std::string unknown_name_problem(const std::string& name, const std::vector<std:
 }
 
 std::vector<TargetSpec> read_targets(const JsonField& field) {
+  const io_detail::ObjectSpec& format = io_detail::kTargetObject;
   std::vector<TargetSpec> targets;
   const std::size_t n = field.array_size();
   if (n < 2) field.fail("expected at least two targets, the first at t = 0 and the last at t = 1");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField item = field.item(i);
-    item.check_keys({"x", "y", "t", "scale", "angle"});
+    item.check_keys(format.keys());
     TargetSpec target;
-    target.x = item.required("x").number();
-    target.y = item.required("y").number();
+    target.x = read_number(item.required("x"), format.at("x"));
+    target.y = read_number(item.required("y"), format.at("y"));
     const JsonField t = item.required("t");
-    target.t = t.number_in(0.0, 1.0);
+    target.t = read_number(t, format.at("t"));
     if (i == 0 && target.t != 0.0) t.fail("the first target must have t = 0, got " + t.shown());
     if (i == n - 1 && target.t != 1.0) t.fail("the last target must have t = 1, got " + t.shown());
     if (i > 0 && target.t <= targets.back().t)
       t.fail(target.t == targets.back().t ? "duplicate t " + t.shown() + "; each target needs its own time"
                                           : "targets out of order: t " + t.shown() + " comes after t " +
                                                 format_number(targets.back().t) + "; list targets by increasing t");
-    if (auto f = item.optional("scale")) target.scale = f->positive_number();
-    if (auto f = item.optional("angle")) target.angle = f->number();
+    if (auto f = item.optional("scale")) target.scale = read_number(*f, format.at("scale"));
+    if (auto f = item.optional("angle")) target.angle = read_number(*f, format.at("angle"));
     targets.push_back(target);
   }
   return targets;
@@ -196,7 +206,7 @@ std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<Li
   std::vector<GuidedSpec> guided;
   for (std::size_t i = 0, n = field.array_size(); i < n; ++i) {
     const JsonField item = field.item(i);
-    item.check_keys({"name", "element", "targets", "loop_to"});
+    item.check_keys(io_detail::kGuidedObject.keys());
     GuidedSpec g;
     const JsonField name = item.required("name");
     g.name = name.non_empty_string();
@@ -218,12 +228,15 @@ std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<Li
 }
 
 OrientationSpec read_orientation(const JsonField& field) {
-  field.check_keys({"mode", "angle", "field"});
+  const io_detail::ObjectSpec& format = io_detail::kOrientationObject;
+  const io_detail::ObjectSpec& field_format = io_detail::kVectorFieldObject;
+  field.check_keys(format.keys());
   OrientationSpec spec;
-  if (auto f = field.optional("mode")) spec.mode = static_cast<OrientationMode>(f->choice({"random", "fixed", "field"}));
+  if (auto f = field.optional("mode"))
+    spec.mode = static_cast<OrientationMode>(io_detail::read_choice(*f, format.at("mode")));
   if (auto f = field.optional("angle")) {
     if (spec.mode != OrientationMode::fixed) f->fail("applies only to mode `fixed`; remove it or set `mode` to \"fixed\"");
-    spec.angle = f->number();
+    spec.angle = read_number(*f, format.at("angle"));
   }
   const std::optional<JsonField> vector_field = field.optional("field");
   if (spec.mode != OrientationMode::field) {
@@ -231,11 +244,12 @@ OrientationSpec read_orientation(const JsonField& field) {
     return spec;
   }
   if (!vector_field) field.fail("mode `field` needs a `field` object ({\"kind\": \"constant\"|\"radial\"|\"tangential\", ...})");
-  vector_field->check_keys({"kind", "angle", "center"});
-  spec.field = static_cast<FieldKind>(vector_field->required("kind").choice({"constant", "radial", "tangential"}));
+  vector_field->check_keys(field_format.keys());
+  spec.field =
+      static_cast<FieldKind>(io_detail::read_choice(vector_field->required("kind"), field_format.at("kind")));
   if (auto f = vector_field->optional("angle")) {
     if (spec.field != FieldKind::constant) f->fail("applies only to kind `constant`; radial and tangential fields use `center`");
-    spec.angle = f->number();
+    spec.angle = read_number(*f, field_format.at("angle"));
   }
   if (auto f = vector_field->optional("center")) {
     if (spec.field == FieldKind::constant) f->fail("applies only to kinds `radial` and `tangential`; a constant field uses `angle`");
@@ -277,10 +291,12 @@ void read_params(const JsonField& field, Params& params) {
 }
 
 void read_count(const JsonField& field, SceneSpec& scene) {
+  const io_detail::FieldSpec& count = io_detail::kSceneObject.at("count");
+  const std::string_view fill = count.alternative->words.front();
   if (field.json().is_string()) {
-    if (field.string() != "fill") field.fail("expected an integer or \"fill\", got " + field.shown());
+    if (field.string() != fill) field.fail("expected an integer or \"" + std::string(fill) + "\", got " + field.shown());
   } else {
-    scene.count = field.integer_in(0, kMaxCount);
+    scene.count = read_integer(field, count);
   }
   if (!scene.count) return;
   int fixed = 0;
@@ -322,7 +338,16 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
   const std::string name = file_for_messages.string();
   const json document = parse_json(text, name);
   const JsonField root(document, name);
-  root.check_keys({"container", "elements", "guided", "orientation", "count", "seed", "loop", "slices", "params"});
+  // Before the keys: a newer format may have keys this program does not know, and the version explains them.
+  if (auto f = root.optional("version")) {
+    const int version = f->integer_in(1, std::numeric_limits<int>::max());
+    if (version > kSceneFormatVersion)
+      f->fail("scene format version " + std::to_string(version) + " is newer than this animpak reads (" +
+              std::to_string(kSceneFormatVersion) + "); upgrade animpak to read this scene");
+  }
+  root.check_keys(io_detail::kSceneObject.keys());
+  // `$schema` only points an editor at docs/scene.schema.json; it must be a string, as JSON Schema says.
+  if (auto f = root.optional("$schema")) f->string();
 
   SceneSpec scene;
   scene.file = file_for_messages;

@@ -1,4 +1,4 @@
-// The collision grid's stable counting sort (paper §5.1; docs/architecture.md, "The collision grid"):
+// The collision grid's stable counting sort (paper §5.1; docs/architecture.md, "One step"):
 // count → exclusive scan → scatter. The reference builds its grid with it, and the OpenCL backend runs
 // it on the host for CPU devices; the device sort (kernels/grid.cl) produces the same arrays.
 #pragma once

@@ -1,11 +1,15 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "animpak/params.hpp"
 #include "animpak/version.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"
+
+using Catch::Matchers::Contains;
 
 TEST_CASE("animpak: --help for the program and every command exits 0 and describes it") {
   for (const std::string args : {"--help", "inspect --help", "devices --help"}) {
@@ -16,6 +20,26 @@ TEST_CASE("animpak: --help for the program and every command exits 0 and describ
   }
   CHECK(run_animpak("--help").out.find("inspect") != std::string::npos);
   CHECK(run_animpak("--version").out.find("animpak " + std::string(animpak::animpak_version) + " (") != std::string::npos);
+}
+
+// That docs/ holds exactly this output is the `docs:` tests' job (tests/docs/generated_docs.py).
+TEST_CASE("animpak params and schema: the constants and the scene format, from the code's tables") {
+  const CommandResult text = run_animpak("params");
+  REQUIRE(text.code == 0);
+  CHECK(text.out.rfind("name ", 0) == 0);
+  CHECK(std::count(text.out.begin(), text.out.end(), '\n') == static_cast<long>(animpak::param_table().size()) + 1);
+  CHECK_THAT(text.out, Contains("\nslices ") && Contains(" 100 ") && Contains("[2, 1000]"));
+
+  const CommandResult markdown = run_animpak("params --markdown");
+  REQUIRE(markdown.code == 0);
+  CHECK(markdown.out.rfind("| name | default | range | paper | meaning |\n|---|", 0) == 0);
+  CHECK_THAT(markdown.out, Contains("| `k_repulsion` | 8e-8 | ≥ 0 | k_rpl = 10 (Eq. 1) |"));
+
+  const CommandResult schema = run_animpak("schema");
+  REQUIRE(schema.code == 0);
+  const nlohmann::json parsed = nlohmann::json::parse(schema.out);
+  CHECK(parsed["$schema"] == "https://json-schema.org/draft/2020-12/schema");
+  CHECK(parsed["required"] == nlohmann::json::array({"container", "elements"}));
 }
 
 TEST_CASE("animpak --version names the commit of the source tree it was built from, read at build time") {

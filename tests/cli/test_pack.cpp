@@ -136,6 +136,7 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
   CHECK_FALSE(fs::exists(frames / "frame_0004.svg"));
 
   const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
+  CHECK(stats["format_version"] == 1);
   CHECK(stats["iterations"] == 20);
   CHECK(stats["stop_reason"] == "max_iterations");
   // The commit that --version names, so that the run can be reproduced from it.
@@ -218,6 +219,7 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   CHECK(stats["iterations"] == 10);
   CHECK(stats["seconds"] == packed["seconds"]);
   CHECK(stats["final_growth"] == packed["final_growth"]);
+  CHECK(stats["format_version"] == packed["format_version"]);
   CHECK_FALSE(fs::exists(out + "/stats.json.tmp"));
 
   // Without stats.json, render writes what the state knows.
@@ -227,6 +229,7 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   CHECK(stats["frames"].size() == 2);
   CHECK(stats["iterations"] == 10);
   CHECK(stats["stop_reason"] == "max_iterations");
+  CHECK(stats["format_version"] == 1);
 
   // A stats.json that is not JSON is left as it is, with a warning.
   write_bytes(out + "/stats.json", "{ not json");

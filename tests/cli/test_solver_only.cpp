@@ -18,7 +18,7 @@ using Catch::Matchers::Contains;
 TEST_CASE("animpak-solve --help: lists the solver commands and none that draw") {
   const CommandResult help = run_animpak_solve("--help");
   REQUIRE(help.code == 0);
-  for (const char* command : {"pack", "devices", "validate", "bench"}) {
+  for (const char* command : {"pack", "devices", "validate", "bench", "params", "schema"}) {
     INFO(command);
     CHECK(help.out.find("\n  " + std::string(command) + " ") != std::string::npos);
   }

@@ -4,8 +4,12 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "animpak/error.hpp"
+#include "animpak/params.hpp"
 #include "animpak/scene_spec.hpp"
 #include "temp_dir.hpp"
 
@@ -339,4 +343,108 @@ TEST_CASE("parse_scene: the example in docs/scene-format.md is valid") {
   CHECK(s.guided.size() == 2);
   CHECK(s.orientation.field == FieldKind::tangential);
   CHECK(s.params.forces.k_torsion == 0.2);
+}
+
+namespace {
+
+/// The JSON pointer of every object in `value`, the value itself first.
+void collect_objects(const nlohmann::json& value, const nlohmann::json::json_pointer& at,
+                     std::vector<nlohmann::json::json_pointer>& out) {
+  if (value.is_object()) out.push_back(at);
+  if (value.is_object())
+    for (const auto& [key, inner] : value.items()) collect_objects(inner, at / key, out);
+  if (value.is_array())
+    for (std::size_t i = 0; i < value.size(); ++i) collect_objects(value[i], at / i, out);
+}
+
+using Pointer = nlohmann::json::json_pointer;
+
+/// The object schema that `schema` (a property's or an array's items') refers to, or null when it
+/// describes no object.
+const nlohmann::json* object_schema(const nlohmann::json& root, const nlohmann::json& schema) {
+  if (schema.contains("$ref")) return &root.at("$defs").at(schema.at("$ref").get<std::string>().substr(8));
+  if (schema.contains("anyOf"))
+    for (const nlohmann::json& either : schema.at("anyOf"))
+      if (const nlohmann::json* found = object_schema(root, either)) return found;
+  return schema.value("type", "") == "object" ? &schema : nullptr;
+}
+
+/// Every (object, key) of `value` that its schema `object` lists as required.
+void collect_required(const nlohmann::json& root, const nlohmann::json& object, const nlohmann::json& value,
+                      const Pointer& at, std::vector<std::pair<Pointer, std::string>>& out) {
+  for (const nlohmann::json& key : object.value("required", nlohmann::json::array()))
+    out.emplace_back(at, key.get<std::string>());
+  for (const auto& [key, inner] : value.items()) {
+    const nlohmann::json& property = object.at("properties").at(key);
+    if (inner.is_object())
+      if (const nlohmann::json* found = object_schema(root, property))
+        collect_required(root, *found, inner, at / key, out);
+    if (inner.is_array() && property.contains("items"))
+      if (const nlohmann::json* found = object_schema(root, property.at("items")))
+        for (std::size_t i = 0; i < inner.size(); ++i) collect_required(root, *found, inner[i], at / key / i, out);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("parse_scene: every key the schema requires, the parser requires") {
+  std::ifstream file(std::string(ANIMPAK_SOURCE_DIR) + "/tests/io/every-object.json");
+  REQUIRE(file.good());
+  const nlohmann::json every = nlohmann::json::parse(file);
+  const nlohmann::json schema = nlohmann::json::parse(scene_json_schema());
+  std::vector<std::pair<Pointer, std::string>> required;
+  collect_required(schema, schema, every, Pointer(), required);
+  CHECK(required.size() >= 10);
+  for (const auto& [at, key] : required) {
+    INFO(at.to_string() << " " << key);
+    nlohmann::json missing = every;
+    missing[at].erase(key);
+    CHECK_THAT(scene_error_of(missing.dump()), Contains("missing required field `" + key + "`"));
+  }
+}
+
+// tests/docs/validate_scenes.py plants the same keys in the same file and checks that the schema rejects them.
+TEST_CASE("parse_scene: an unknown key is an error in every object of the format") {
+  std::ifstream file(std::string(ANIMPAK_SOURCE_DIR) + "/tests/io/every-object.json");
+  REQUIRE(file.good());
+  const nlohmann::json every = nlohmann::json::parse(file);
+  CHECK(scene_error_of(every.dump()) == "(no error)");
+  std::vector<nlohmann::json::json_pointer> objects;
+  collect_objects(every, nlohmann::json::json_pointer(), objects);
+  CHECK(objects.size() >= 12);
+  for (const nlohmann::json::json_pointer& at : objects) {
+    INFO(at.to_string());
+    nlohmann::json planted = every;
+    planted[at]["unknown_key"] = 1;
+    CHECK_THAT(scene_error_of(planted.dump()), Contains("unknown_key: unknown "));
+  }
+}
+
+TEST_CASE("parse_scene: $schema and the format version") {
+  CHECK(scene_error_of(scene(kBird, R"(, "$schema": "../../docs/scene.schema.json", "version": 1)")) == "(no error)");
+  CHECK(scene_error_of(scene(kBird, R"(, "$schema": "")")) == "(no error)");
+  CHECK(scene_error_of(scene(kBird, R"(, "$schema": 1)")) == "scene.json: $schema: expected a string, got 1");
+  CHECK(scene_error_of(scene(kBird, R"(, "version": 0)")) ==
+        "scene.json: version: expected an integer in [1, 2147483647], got 0");
+  CHECK(scene_error_of(scene(kBird, R"(, "version": 1.5)")) ==
+        "scene.json: version: expected an integer in [1, 2147483647], got 1.5");
+  // A newer file's new keys are not reported as unknown: the version explains them.
+  CHECK(scene_error_of(scene(kBird, R"(, "version": 2, "new_field": true)")) ==
+        "scene.json: version: scene format version 2 is newer than this animpak reads (1); upgrade animpak to "
+        "read this scene");
+  static_assert(kSceneFormatVersion == 1, "a new format version needs the messages above and docs/scene-format.md");
+}
+
+TEST_CASE("scene_json_schema: is docs/scene.schema.json, strict where the parser is") {
+  const nlohmann::json schema = nlohmann::json::parse(scene_json_schema());
+  CHECK(schema["additionalProperties"] == false);
+  for (const auto& [name, definition] : schema["$defs"].items()) {
+    INFO(name);
+    CHECK(definition["additionalProperties"] == false);
+  }
+  CHECK(schema["$defs"]["params"]["properties"].size() == param_table().size());
+  CHECK(schema["$defs"]["params"]["properties"]["slices"] ==
+        nlohmann::json::parse(R"j({"description": "n_s: slices along the time axis (§3.1)", "type": "integer",
+                                   "minimum": 2, "maximum": 1000, "default": 100})j"));
+  CHECK(schema["properties"]["version"]["maximum"] == kSceneFormatVersion);
 }

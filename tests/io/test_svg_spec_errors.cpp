@@ -1,6 +1,6 @@
-// SVG as browsers read it (docs/scene-format.md "What the importer forgives"): SVG 2's error handling for
-// path data and `points`, arc flags without separators, degenerate shapes dropped with a warning each,
-// and large traced paths thinned so the element pipeline stays linear.
+// SVG as browsers read it (docs/scene-format.md, "SVG art: what the importer forgives"): SVG 2's error
+// handling for path data and `points`, arc flags without separators, degenerate shapes dropped with a
+// warning each, and large traced paths thinned so the element pipeline stays linear.
 #include <cmath>
 #include <numbers>
 
