@@ -49,6 +49,128 @@ __kernel void slice_boxes(const WorldInfo world,
   box_x0[s] = x0, box_y0[s] = y0, box_x1[s] = x1, box_y1[s] = y1;
 }
 
+/** The candidate lists of the broadphase cells a query box meets at time pt: up to four cells' lists in
+ * begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells) for every element
+ * (reference overlap_candidates). */
+int overlap_candidate_lists(const OverlapGridInfo grid, __global const int* grid_start, float ex0, float ex1,
+                            float ey0, float ey1, float pt, int* begin, int* end, bool* every) {
+  *every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(pt);
+  int lists = 0;
+  if (*every) return 0;
+  const int ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx);
+  const int ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
+  const int iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny);
+  const int iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
+  const int it = grid_axis_cell(pt - grid.t0, grid.cell_t, grid.nt);
+  *every = (ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 4;
+  for (int iy = iy0; !*every && iy <= iy1; ++iy)
+    for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
+      const int c = (it * grid.ny + iy) * grid.nx + ix;
+      begin[lists] = grid_start[c];
+      end[lists] = grid_start[c + 1];
+    }
+  return lists;
+}
+
+/** The candidate after e: e + 1, or the smallest listed element above e; `elements` when none is left. */
+int overlap_next_candidate(int e, int elements, bool every, int lists, int* begin, const int* end,
+                           __global const int* grid_elements) {
+  if (every) return e + 1 < elements ? e + 1 : elements;
+  int next = elements;
+  for (int l = 0; l < lists; ++l) {
+    while (begin[l] < end[l] && grid_elements[begin[l]] <= e) ++begin[l];
+    if (begin[l] < end[l] && grid_elements[begin[l]] < next) next = grid_elements[begin[l]];
+  }
+  return next;
+}
+
+/** Element e's slice pair around pt, searched from slice index `start` (slices stay near their rest
+ * times), whose boxes meet the query box: its lower global slice, with *w the weight of pt between the
+ * two (0 for a flat pair); -1 when pt is outside the pair or the boxes miss (reference
+ * overlap_slice_pair). */
+int overlap_slice_pair(int e, int start, float pt, float ex0, float ex1, float ey0, float ey1,
+                       __global const int* element_slice_begin, __global const int* slice_begin,
+                       __global const float* t, __global const float* box_x0, __global const float* box_y0,
+                       __global const float* box_x1, __global const float* box_y1, float* w) {
+  const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
+  if (count < 2) return -1;
+  int k = start < count - 2 ? start : count - 2;
+  while (k > 0 && pt < t[slice_begin[first + k]]) --k;
+  while (k < count - 2 && pt > t[slice_begin[first + k + 1]]) ++k;
+  const int s = first + k;
+  const float t0 = t[slice_begin[s]], t1 = t[slice_begin[s + 1]];
+  if (!(ap_min(t0, t1) <= pt && pt <= ap_max(t0, t1))) return -1;
+  const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
+  const float by0 = ap_min(box_y0[s], box_y0[s + 1]), by1 = ap_max(box_y1[s], box_y1[s + 1]);
+  if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) return -1;
+  *w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
+  return s;
+}
+
+/** The polygon of the slices whose first vertices are lo and hi, interpolated at w, edge by edge: the
+ * even-odd test of (px, py) into *inside, and into *crosses whether the query edge p → n properly crosses
+ * one of its edges, tried until one is found and only where the two edges' boxes meet (reference
+ * overlap_polygon_walk). */
+void overlap_polygon_walk(__global const float* x, __global const float* y, int lo, int hi, int edges, float w,
+                          float px, float py, float nx, float ny, float ex0, float ex1, float ey0, float ey1,
+                          bool* inside_out, bool* crosses_out) {
+  bool inside = false, crosses = false;
+  int i = 0;
+#ifdef AP_LANES
+  /* Built for a CPU: AP_LANES edges at a time while the last one's end does not wrap to vertex 0.
+   * Each lane does the scalar test's float operations; the parity and the crossing are a count and
+   * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
+   * lanes"). */
+  for (; i + AP_LANES < edges; i += AP_LANES) {
+    const ap_floatv xa = ap_vloadf(0, x + lo + i), ya = ap_vloadf(0, y + lo + i);
+    const ap_floatv xb = ap_vloadf(0, x + lo + i + 1), yb = ap_vloadf(0, y + lo + i + 1);
+    const ap_floatv ax = xa + (ap_vloadf(0, x + hi + i) - xa) * w, ay = ya + (ap_vloadf(0, y + hi + i) - ya) * w;
+    const ap_floatv bx = xb + (ap_vloadf(0, x + hi + i + 1) - xb) * w,
+                    by = yb + (ap_vloadf(0, y + hi + i + 1) - yb) * w;
+    /* ray_crosses_segment */
+    const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
+    inside = inside != ((ap_lane_count(ray) & 1) != 0);
+    if (crosses) continue;
+    /* ap_max / ap_min as select, then segments_cross_properly */
+    const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
+                        select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
+    const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+    const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
+    const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
+    const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
+    const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
+                          ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
+    crosses = any(box && cross);
+  }
+#endif
+  for (; i < edges; ++i) {
+    float ax, ay, bx, by;
+    overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
+    if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
+    if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
+        ap_min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
+      crosses = true;
+  }
+  *inside_out = inside;
+  *crosses_out = crosses;
+}
+
+/** The way out of a point inside the interpolated polygon: its nearest outline point (*qx, *qy), the
+ * first edge reaching the minimum winning; returns the squared distance (reference overlap_way_out). */
+float overlap_way_out(__global const float* x, __global const float* y, int lo, int hi, int edges, float w,
+                      float px, float py, float* qx, float* qy) {
+  float near2 = INFINITY;
+  *qx = px;
+  *qy = py;
+  for (int i = 0; i < edges; ++i) {
+    float ax, ay, bx, by, cx, cy;
+    overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
+    const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
+    if (d2 < near2) near2 = d2, *qx = cx, *qy = cy;
+  }
+  return near2;
+}
+
 /** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
  * `own` that the broadphase lists, in increasing order, each one's slice pair around pt searched from
  * slice index `start` (reference overlap_point and overlap_candidates).
@@ -70,99 +192,23 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
   *near2_out = 0.0f;
   *qx_out = 0.0f;
   *qy_out = 0.0f;
-  /* The cells the query's box meets at pt's cell in t, or every element (no grid, a NaN, a box over
-   * more than 2 x 2 cells). */
-  bool every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(pt);
-  int begin[4], end[4], lists = 0;
-  if (!every) {
-    const int ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx);
-    const int ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
-    const int iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny);
-    const int iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
-    const int it = grid_axis_cell(pt - grid.t0, grid.cell_t, grid.nt);
-    every = (ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 4;
-    for (int iy = iy0; !every && iy <= iy1; ++iy)
-      for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
-        const int c = (it * grid.ny + iy) * grid.nx + ix;
-        begin[lists] = grid_start[c];
-        end[lists] = grid_start[c + 1];
-      }
-  }
-  for (int e = -1;;) {
-    /* The next candidate: e + 1, or the smallest listed element above e. */
-    if (every) {
-      if (++e >= elements) break;
-    } else {
-      int next = elements;
-      for (int l = 0; l < lists; ++l) {
-        while (begin[l] < end[l] && grid_elements[begin[l]] <= e) ++begin[l];
-        if (begin[l] < end[l] && grid_elements[begin[l]] < next) next = grid_elements[begin[l]];
-      }
-      if (next == elements) break;
-      e = next;
-    }
+  int begin[4], end[4];
+  bool every;
+  const int lists = overlap_candidate_lists(grid, grid_start, ex0, ex1, ey0, ey1, pt, begin, end, &every);
+  for (int e = overlap_next_candidate(-1, elements, every, lists, begin, end, grid_elements); e < elements;
+       e = overlap_next_candidate(e, elements, every, lists, begin, end, grid_elements)) {
     if (e == own) continue;
-    const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
-    if (count < 2) continue;
-    int k = start < count - 2 ? start : count - 2;
-    while (k > 0 && pt < t[slice_begin[first + k]]) --k;
-    while (k < count - 2 && pt > t[slice_begin[first + k + 1]]) ++k;
-    const int s = first + k;
-    const float t0 = t[slice_begin[s]], t1 = t[slice_begin[s + 1]];
-    if (!(ap_min(t0, t1) <= pt && pt <= ap_max(t0, t1))) continue;
-    const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
-    const float by0 = ap_min(box_y0[s], box_y0[s + 1]), by1 = ap_max(box_y1[s], box_y1[s + 1]);
-    if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) continue;
-
-    const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
-    const int lo = slice_begin[s], hi = slice_begin[s + 1];
-    const int edges = slice_boundary[s];
-    /* The even-odd test, and the crossing test until one is found and only where the edges' boxes
-     * meet; the way out (the nearest point of the outline) in a second walk, for a point inside only. */
-    bool inside = false, crosses = false;
-    int i = 0;
-#ifdef AP_LANES
-    /* Built for a CPU: AP_LANES edges at a time while the last one's end does not wrap to vertex 0.
-     * Each lane does the scalar test's float operations; the parity and the crossing are a count and
-     * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
-     * lanes"). */
-    for (; i + AP_LANES < edges; i += AP_LANES) {
-      const ap_floatv xa = ap_vloadf(0, x + lo + i), ya = ap_vloadf(0, y + lo + i);
-      const ap_floatv xb = ap_vloadf(0, x + lo + i + 1), yb = ap_vloadf(0, y + lo + i + 1);
-      const ap_floatv ax = xa + (ap_vloadf(0, x + hi + i) - xa) * w, ay = ya + (ap_vloadf(0, y + hi + i) - ya) * w;
-      const ap_floatv bx = xb + (ap_vloadf(0, x + hi + i + 1) - xb) * w,
-                      by = yb + (ap_vloadf(0, y + hi + i + 1) - yb) * w;
-      /* ray_crosses_segment */
-      const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
-      inside = inside != ((ap_lane_count(ray) & 1) != 0);
-      if (crosses) continue;
-      /* ap_max / ap_min as select, then segments_cross_properly */
-      const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
-                          select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
-      const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-      const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
-      const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
-      const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
-      const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
-                            ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
-      crosses = any(box && cross);
-    }
-#endif
-    for (; i < edges; ++i) {
-      float ax, ay, bx, by;
-      overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
-      if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
-          ap_min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
-        crosses = true;
-    }
-    float near2 = INFINITY, cqx = px, cqy = py;
-    for (int i = 0; inside && i < edges; ++i) {
-      float ax, ay, bx, by, cx, cy;
-      overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
-      const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
-      if (d2 < near2) near2 = d2, cqx = cx, cqy = cy;
-    }
+    float w;
+    const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_begin, t, box_x0,
+                                     box_y0, box_x1, box_y1, &w);
+    if (s < 0) continue;
+    const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
+    bool inside, crosses;
+    overlap_polygon_walk(x, y, lo, hi, edges, w, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
+    /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
+     * entered. */
+    float cqx = px, cqy = py;
+    const float near2 = inside ? overlap_way_out(x, y, lo, hi, edges, w, px, py, &cqx, &cqy) : INFINITY;
     if (crosses) overlap = true;
     const bool other_secondary = element_secondary[e] != 0;
     if ((crosses || inside) && !(other_secondary && !own_secondary)) {

@@ -63,106 +63,127 @@ struct ArapSolver::Impl {
     const double theta = std::atan2(c21 - c12, c11 + c22);
     return {std::cos(theta), std::sin(theta)};
   }
+
+  // Marks the handles in free_index (-1), refusing none, one out of range or one given twice.
+  void mark_handles() {
+    const int n = static_cast<int>(rest.size());
+    if (handles.empty())
+      throw InputError("ARAP: no handle vertices; at least one vertex must be pinned to place the shape");
+    free_index.assign(n, 0);
+    for (std::size_t k = 0; k < handles.size(); ++k) {
+      const int v = handles[k];
+      if (v < 0 || v >= n) {
+        std::ostringstream out;
+        out << "ARAP: handle " << k << " names vertex " << v << ", but the slice has " << n << " vertices";
+        throw InputError(out.str());
+      }
+      if (free_index[v] == -1) {
+        std::ostringstream out;
+        out << "ARAP: vertex " << v << " is a handle twice (handle " << k
+            << "); each vertex may be pinned by one handle only";
+        throw InputError(out.str());
+      }
+      free_index[v] = -1;
+    }
+  }
+
+  // The neighbours of every vertex with each edge's weight, accumulated from the one or two triangles
+  // beside it.
+  void weigh_edges(const SliceMesh& mesh) {
+    const int n = static_cast<int>(rest.size());
+    auto key = [n](int a, int b) { return static_cast<long long>(std::min(a, b)) * n + std::max(a, b); };
+    std::vector<std::pair<long long, double>> cot;
+    cot.reserve(mesh.triangles.size() * 3);
+    for (const Triangle& tri : mesh.triangles)
+      for (int c = 0; c < 3; ++c) {
+        const int a = tri[(c + 1) % 3], b = tri[(c + 2) % 3];
+        cot.emplace_back(key(a, b), 0.5 * cotangent(rest[tri[c]], rest[a], rest[b]));
+      }
+    std::sort(cot.begin(), cot.end());
+    neighbors.assign(n, {});
+    for (const Edge& e : mesh.edges) {
+      const long long k = key(e[0], e[1]);
+      auto it = std::lower_bound(cot.begin(), cot.end(), std::make_pair(k, -1e300));
+      double w = 0.0;
+      bool in_triangle = false;
+      for (; it != cot.end() && it->first == k; ++it) {
+        w += it->second;
+        in_triangle = true;
+      }
+      // An edge in no triangle has no cotangent; weight it like a well-shaped triangle edge.
+      w = in_triangle ? std::max(w, min_weight) : 1.0;
+      neighbors[e[0]].push_back({e[1], w});
+      neighbors[e[1]].push_back({e[0], w});
+    }
+  }
+
+  // Numbers the free vertices in free_index and returns their count. Every free vertex must reach a
+  // handle through edges, or its block of the Laplacian is singular.
+  int number_free_vertices() {
+    const int n = static_cast<int>(rest.size());
+    std::vector<char> reached(n, 0);
+    std::vector<int> stack(handles.begin(), handles.end());
+    for (int v : stack) reached[v] = 1;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (const Neighbor& nb : neighbors[v])
+        if (!reached[nb.vertex]) {
+          reached[nb.vertex] = 1;
+          stack.push_back(nb.vertex);
+        }
+    }
+    int free_count = 0;
+    for (int v = 0; v < n; ++v) {
+      if (!reached[v]) {
+        std::ostringstream out;
+        out << "ARAP: vertex " << v << " is not connected to any handle, so its position is undetermined; "
+            << "add a handle on every connected piece of the slice";
+        throw InputError(out.str());
+      }
+      if (free_index[v] != -1) free_index[v] = free_count++;
+    }
+    return free_count;
+  }
+
+  // The free block L_ff of the weighted Laplacian, factored, and its coupling L_fh to the handles.
+  void factor_laplacian(int free_count) {
+    const int n = static_cast<int>(rest.size());
+    std::vector<int> handle_column(n, -1);
+    for (std::size_t k = 0; k < handles.size(); ++k) handle_column[handles[k]] = static_cast<int>(k);
+    std::vector<Eigen::Triplet<double>> ff, fh;
+    for (int v = 0; v < n; ++v) {
+      const int row = free_index[v];
+      if (row < 0) continue;
+      double diagonal = 0.0;
+      for (const Neighbor& nb : neighbors[v]) {
+        diagonal += nb.weight;
+        const int col = free_index[nb.vertex];
+        if (col >= 0) ff.emplace_back(row, col, -nb.weight);
+        else fh.emplace_back(row, handle_column[nb.vertex], -nb.weight);
+      }
+      ff.emplace_back(row, row, diagonal);
+    }
+    Eigen::SparseMatrix<double> lff(free_count, free_count);
+    lff.setFromTriplets(ff.begin(), ff.end());
+    free_handle.resize(free_count, static_cast<int>(handles.size()));
+    free_handle.setFromTriplets(fh.begin(), fh.end());
+    if (free_count > 0) {
+      factor.compute(lff);
+      if (factor.info() != Eigen::Success)
+        throw InputError("ARAP: the slice's system matrix is singular; the slice triangulation is degenerate");
+    }
+  }
 };
 
 ArapSolver::ArapSolver(const SliceMesh& mesh, std::vector<int> handle_vertices) : impl_(new Impl) {
   Impl& m = *impl_;
-  const int n = static_cast<int>(mesh.vertices.size());
   m.rest = mesh.vertices;
   m.handles = std::move(handle_vertices);
-  if (m.handles.empty())
-    throw InputError("ARAP: no handle vertices; at least one vertex must be pinned to place the shape");
-  m.free_index.assign(n, 0);
-  for (std::size_t k = 0; k < m.handles.size(); ++k) {
-    const int v = m.handles[k];
-    if (v < 0 || v >= n) {
-      std::ostringstream out;
-      out << "ARAP: handle " << k << " names vertex " << v << ", but the slice has " << n << " vertices";
-      throw InputError(out.str());
-    }
-    if (m.free_index[v] == -1) {
-      std::ostringstream out;
-      out << "ARAP: vertex " << v << " is a handle twice (handle " << k
-          << "); each vertex may be pinned by one handle only";
-      throw InputError(out.str());
-    }
-    m.free_index[v] = -1;
-  }
-
-  // Weights per undirected edge, accumulated from the one or two triangles beside it.
-  auto key = [n](int a, int b) { return static_cast<long long>(std::min(a, b)) * n + std::max(a, b); };
-  std::vector<std::pair<long long, double>> cot;
-  cot.reserve(mesh.triangles.size() * 3);
-  for (const Triangle& tri : mesh.triangles)
-    for (int c = 0; c < 3; ++c) {
-      const int a = tri[(c + 1) % 3], b = tri[(c + 2) % 3];
-      cot.emplace_back(key(a, b), 0.5 * cotangent(m.rest[tri[c]], m.rest[a], m.rest[b]));
-    }
-  std::sort(cot.begin(), cot.end());
-  m.neighbors.assign(n, {});
-  for (const Edge& e : mesh.edges) {
-    const long long k = key(e[0], e[1]);
-    auto it = std::lower_bound(cot.begin(), cot.end(), std::make_pair(k, -1e300));
-    double w = 0.0;
-    bool in_triangle = false;
-    for (; it != cot.end() && it->first == k; ++it) {
-      w += it->second;
-      in_triangle = true;
-    }
-    // An edge in no triangle has no cotangent; weight it like a well-shaped triangle edge.
-    w = in_triangle ? std::max(w, min_weight) : 1.0;
-    m.neighbors[e[0]].push_back({e[1], w});
-    m.neighbors[e[1]].push_back({e[0], w});
-  }
-
-  // Every free vertex must reach a handle through edges, or its block of the Laplacian is singular.
-  std::vector<char> reached(n, 0);
-  std::vector<int> stack(m.handles.begin(), m.handles.end());
-  for (int v : stack) reached[v] = 1;
-  while (!stack.empty()) {
-    const int v = stack.back();
-    stack.pop_back();
-    for (const Impl::Neighbor& nb : m.neighbors[v])
-      if (!reached[nb.vertex]) {
-        reached[nb.vertex] = 1;
-        stack.push_back(nb.vertex);
-      }
-  }
-  int free_count = 0;
-  for (int v = 0; v < n; ++v) {
-    if (!reached[v]) {
-      std::ostringstream out;
-      out << "ARAP: vertex " << v << " is not connected to any handle, so its position is undetermined; "
-          << "add a handle on every connected piece of the slice";
-      throw InputError(out.str());
-    }
-    if (m.free_index[v] != -1) m.free_index[v] = free_count++;
-  }
-  std::vector<int> handle_column(n, -1);
-  for (std::size_t k = 0; k < m.handles.size(); ++k) handle_column[m.handles[k]] = static_cast<int>(k);
-
-  std::vector<Eigen::Triplet<double>> ff, fh;
-  for (int v = 0; v < n; ++v) {
-    const int row = m.free_index[v];
-    if (row < 0) continue;
-    double diagonal = 0.0;
-    for (const Impl::Neighbor& nb : m.neighbors[v]) {
-      diagonal += nb.weight;
-      const int col = m.free_index[nb.vertex];
-      if (col >= 0) ff.emplace_back(row, col, -nb.weight);
-      else fh.emplace_back(row, handle_column[nb.vertex], -nb.weight);
-    }
-    ff.emplace_back(row, row, diagonal);
-  }
-  Eigen::SparseMatrix<double> lff(free_count, free_count);
-  lff.setFromTriplets(ff.begin(), ff.end());
-  m.free_handle.resize(free_count, static_cast<int>(m.handles.size()));
-  m.free_handle.setFromTriplets(fh.begin(), fh.end());
-  if (free_count > 0) {
-    m.factor.compute(lff);
-    if (m.factor.info() != Eigen::Success)
-      throw InputError("ARAP: the slice's system matrix is singular; the slice triangulation is degenerate");
-  }
+  m.mark_handles();
+  m.weigh_edges(mesh);
+  const int free_count = m.number_free_vertices();
+  m.factor_laplacian(free_count);
 }
 
 ArapSolver::~ArapSolver() = default;

@@ -38,6 +38,68 @@ void shuffle(std::vector<T>& v, Rng& rng) {
   for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
 }
 
+// How far a seed must stay from the wall: the largest rest radius of any library element at
+// initial_scale, with 5 % to spare, keeps a shrunken element inside whatever its orientation.
+double seed_margin(const std::vector<SpacetimeElement>& library, double initial_scale) {
+  double radius = 0.0;
+  for (const SpacetimeElement& e : library) {
+    const Vec2 c = rest_centroid(e);
+    for (int s = 0; s < e.slice_count; ++s)
+      for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(e.position(s, v) - c));
+  }
+  return 1.05 * initial_scale * radius;
+}
+
+// `wanted` seeds for a fixed count (a random subset of the first blue-noise set that holds enough), or
+// every seed at seed_spacing when the scene fills; `spacing` is the spacing used.
+std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& container,
+                                 const std::vector<Placement>& guided, bool fill, int wanted, double margin,
+                                 Rng& rng, double& spacing) {
+  const std::string file = scene.file.string();
+  std::vector<Vec2> seeds;
+  spacing = scene.params.placement.seed_spacing;
+  if (fill) return free_seeds(container, spacing, margin, guided, rng);
+  if (wanted <= 0) return seeds;
+  // Start looser than `wanted` discs can fill and tighten in small steps, so the first spacing that
+  // fits gives only a few extra seeds: dropping many random extras would leave holes.
+  spacing = std::sqrt(1.6 * container.area() / wanted);
+  for (int attempt = 0; attempt < 120; ++attempt, spacing *= 0.97) {
+    Rng trial = rng.split();
+    seeds = free_seeds(container, spacing, margin, guided, trial);
+    if (static_cast<int>(seeds.size()) >= wanted) break;
+  }
+  if (static_cast<int>(seeds.size()) < wanted)
+    throw InputError(file + ": count: only " + std::to_string(seeds.size()) + " of " + std::to_string(wanted) +
+                     " elements fit in the container at initial_scale " +
+                     std::to_string(scene.params.placement.initial_scale) + "; lower count or params.initial_scale");
+  shuffle(seeds, rng);
+  seeds.resize(wanted);
+  return seeds;
+}
+
+// The library element of each of `seeds` seeds: every fixed count, then the rest by weight; shuffled so
+// kinds mix in space.
+std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& weighted, std::size_t seeds,
+                               Rng& rng) {
+  std::vector<int> picks;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i)
+    for (int k = 0; k < scene.elements[i].count.value_or(0); ++k) picks.push_back(static_cast<int>(i));
+  double total_weight = 0.0;
+  for (int i : weighted) total_weight += scene.elements[i].weight;
+  while (picks.size() < seeds) {
+    double u = rng.uniform() * total_weight;
+    int pick = weighted.back();
+    for (int i : weighted)
+      if ((u -= scene.elements[i].weight) < 0) {
+        pick = i;
+        break;
+      }
+    picks.push_back(pick);
+  }
+  shuffle(picks, rng);
+  return picks;
+}
+
 }  // namespace
 
 std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
@@ -60,57 +122,14 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     throw InputError(file + ": count: " + std::to_string(wanted) + " differs from the sum of the elements' counts (" +
                      std::to_string(fixed) + ") and no element has a weight to fill the rest");
 
-  // The margin keeps a shrunken element inside the container whatever its orientation.
-  double radius = 0.0;
-  for (const SpacetimeElement& e : library) {
-    const Vec2 c = rest_centroid(e);
-    for (int s = 0; s < e.slice_count; ++s)
-      for (int v = 0; v < e.slice.boundary_count; ++v) radius = std::max(radius, norm(e.position(s, v) - c));
-  }
-  const double margin = 1.05 * scene.params.placement.initial_scale * radius;
-
-  std::vector<Vec2> seeds;
-  double spacing = scene.params.placement.seed_spacing;
-  if (fill) {
-    seeds = free_seeds(container, spacing, margin, guided, rng);
-  } else if (wanted > 0) {
-    // Start looser than `wanted` discs can fill and tighten in small steps, so the first spacing that
-    // fits gives only a few extra seeds: dropping many random extras would leave holes.
-    spacing = std::sqrt(1.6 * container.area() / wanted);
-    for (int attempt = 0; attempt < 120; ++attempt, spacing *= 0.97) {
-      Rng trial = rng.split();
-      seeds = free_seeds(container, spacing, margin, guided, trial);
-      if (static_cast<int>(seeds.size()) >= wanted) break;
-    }
-    if (static_cast<int>(seeds.size()) < wanted)
-      throw InputError(file + ": count: only " + std::to_string(seeds.size()) + " of " + std::to_string(wanted) +
-                       " elements fit in the container at initial_scale " + std::to_string(scene.params.placement.initial_scale) +
-                       "; lower count or params.initial_scale");
-    shuffle(seeds, rng);
-    seeds.resize(wanted);
-  }
+  double spacing = 0.0;
+  const double margin = seed_margin(library, scene.params.placement.initial_scale);
+  const std::vector<Vec2> seeds = unguided_seeds(scene, container, guided, fill, wanted, margin, rng, spacing);
   if (static_cast<int>(seeds.size()) < fixed)
     throw InputError(file + ": the elements' counts ask for " + std::to_string(fixed) + " elements but only " +
                      std::to_string(seeds.size()) + " seeds fit at params.seed_spacing " + std::to_string(spacing) +
                      "; lower the counts or the spacing");
-
-  // Library picks: every fixed count, then the rest by weight; shuffled so kinds mix in space.
-  std::vector<int> picks;
-  for (std::size_t i = 0; i < scene.elements.size(); ++i)
-    for (int k = 0; k < scene.elements[i].count.value_or(0); ++k) picks.push_back(static_cast<int>(i));
-  double total_weight = 0.0;
-  for (int i : weighted) total_weight += scene.elements[i].weight;
-  while (picks.size() < seeds.size()) {
-    double u = rng.uniform() * total_weight;
-    int pick = weighted.back();
-    for (int i : weighted)
-      if ((u -= scene.elements[i].weight) < 0) {
-        pick = i;
-        break;
-      }
-    picks.push_back(pick);
-  }
-  shuffle(picks, rng);
+  const std::vector<int> picks = library_picks(scene, weighted, seeds.size(), rng);
 
   std::vector<Placement> out;
   std::vector<int> per_library(library.size(), 0);

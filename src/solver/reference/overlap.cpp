@@ -211,11 +211,67 @@ struct PointOverlap {
   float qx = 0.0f, qy = 0.0f;  // that way out, a point of the other element's outline
 };
 
+// Element e's slice pair around pt, searched from slice index `start` (slices stay near their rest times),
+// whose boxes meet the query box: its lower global slice, with w the weight of pt between the two (0 for
+// a flat pair, which takes the lower slice's polygon); -1 when pt is outside the pair or the boxes miss.
+std::int32_t overlap_slice_pair(const Topology& topo, const SimState& state, const SliceBoxes& boxes, std::int32_t e,
+                                std::int32_t start, float pt, float ex0, float ex1, float ey0, float ey1, float& w) {
+  const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
+  if (count < 2) return -1;
+  std::int32_t k = std::min(start, count - 2);
+  while (k > 0 && pt < slice_t(topo, state, first + k)) --k;
+  while (k < count - 2 && pt > slice_t(topo, state, first + k + 1)) ++k;
+  const std::int32_t s = first + k;
+  const float t0 = slice_t(topo, state, s), t1 = slice_t(topo, state, s + 1);
+  if (!(std::min(t0, t1) <= pt && pt <= std::max(t0, t1))) return -1;
+  // The interpolated polygon lies in the union of the two slices' boxes.
+  const float bx0 = std::min(boxes.x0[s], boxes.x0[s + 1]), bx1 = std::max(boxes.x1[s], boxes.x1[s + 1]);
+  const float by0 = std::min(boxes.y0[s], boxes.y0[s + 1]), by1 = std::max(boxes.y1[s], boxes.y1[s + 1]);
+  if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) return -1;
+  w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
+  return s;
+}
+
+// The polygon at weight w between the slices whose first vertices are lo and hi, edge by edge: the
+// even-odd test of p, and whether the query edge p → n properly crosses one of its edges (touching does
+// not count), tried only until one is found and only where the two edges' boxes meet (disjoint boxes
+// cannot cross).
+void overlap_polygon_walk(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t edges, float w,
+                          float px, float py, float nx, float ny, float ex0, float ex1, float ey0, float ey1,
+                          bool& inside, bool& crosses) {
+  inside = false;
+  crosses = false;
+  for (std::int32_t i = 0; i < edges; ++i) {
+    float ax, ay, bx, by;
+    overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
+    if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
+    if (!crosses && std::max(ax, bx) >= ex0 && std::min(ax, bx) <= ex1 && std::max(ay, by) >= ey0 &&
+        std::min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
+      crosses = true;
+  }
+}
+
+// The way out of a point inside that polygon: its nearest outline point (qx, qy), the first edge reaching
+// the minimum winning; returns the squared distance.
+float overlap_way_out(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t edges, float w, float px,
+                      float py, float& qx, float& qy) {
+  float near2 = std::numeric_limits<float>::infinity();
+  qx = px;
+  qy = py;
+  for (std::int32_t i = 0; i < edges; ++i) {
+    float ax, ay, bx, by, cx, cy;
+    overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
+    const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
+    if (d2 < near2) near2 = d2, qx = cx, qy = cy;
+  }
+  return near2;
+}
+
 // The query point against every element but `own` that the broadphase lists, in increasing order, each
 // one's slice pair around pt searched from slice index `start` of that element.
 PointOverlap overlap_point(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t own, float own_g, std::int32_t start, float px, float py, float pt,
-                           float nx, float ny) {
+                           const OverlapGrid& grid, std::int32_t own, float own_g, std::int32_t start, float px,
+                           float py, float pt, float nx, float ny) {
   PointOverlap r;
   const bool own_secondary = topo.secondary(own);
   const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
@@ -224,46 +280,17 @@ PointOverlap overlap_point(const Topology& topo, const SimState& state, const Sl
   overlap_candidates(grid, topo.element_count(), ex0, ex1, ey0, ey1, pt, candidates);
   for (const std::int32_t e : candidates) {
     if (e == own) continue;
-    const std::int32_t first = topo.element_slice_begin[e], count = topo.element_slice_begin[e + 1] - first;
-    if (count < 2) continue;
-    // The pair of e's slices around pt: start at the query's own slice index (slices stay near their
-    // rest times), then walk down or up.
-    std::int32_t k = std::min(start, count - 2);
-    while (k > 0 && pt < slice_t(topo, state, first + k)) --k;
-    while (k < count - 2 && pt > slice_t(topo, state, first + k + 1)) ++k;
-    const std::int32_t s = first + k;
-    const float t0 = slice_t(topo, state, s), t1 = slice_t(topo, state, s + 1);
-    if (!(std::min(t0, t1) <= pt && pt <= std::max(t0, t1))) continue;
-    // The interpolated polygon lies in the union of the two slices' boxes.
-    const float bx0 = std::min(boxes.x0[s], boxes.x0[s + 1]), bx1 = std::max(boxes.x1[s], boxes.x1[s + 1]);
-    const float by0 = std::min(boxes.y0[s], boxes.y0[s + 1]), by1 = std::max(boxes.y1[s], boxes.y1[s + 1]);
-    if (ex1 < bx0 || ex0 > bx1 || ey1 < by0 || ey0 > by1) continue;
-
-    // Equal slice times (a flat pair) take the lower slice's polygon.
-    const float w = t1 != t0 ? (pt - t0) / (t1 - t0) : 0.0f;
-    const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
-    const std::int32_t edges = topo.slice_boundary[s];
-    // The polygon at pt, edge by edge: the even-odd test, and a proper crossing of the query's boundary
-    // edge with this edge (touching does not count), tried only until one is found and only where the
-    // two edges' boxes meet (disjoint boxes cannot cross).
-    bool inside = false, crosses = false;
-    for (std::int32_t i = 0; i < edges; ++i) {
-      float ax, ay, bx, by;
-      overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
-      if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-      if (!crosses && std::max(ax, bx) >= ex0 && std::min(ax, bx) <= ex1 && std::max(ay, by) >= ey0 &&
-          std::min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
-        crosses = true;
-    }
-    // Only a point inside needs its way out, the nearest point of the outline: a second walk, since
-    // most elements tried are near and not entered.
-    float near2 = std::numeric_limits<float>::infinity(), qx = px, qy = py;
-    for (std::int32_t i = 0; inside && i < edges; ++i) {
-      float ax, ay, bx, by, cx, cy;
-      overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
-      const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
-      if (d2 < near2) near2 = d2, qx = cx, qy = cy;
-    }
+    float w;
+    const std::int32_t s = overlap_slice_pair(topo, state, boxes, e, start, pt, ex0, ex1, ey0, ey1, w);
+    if (s < 0) continue;
+    const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1], edges = topo.slice_boundary[s];
+    bool inside, crosses;
+    overlap_polygon_walk(state, lo, hi, edges, w, px, py, nx, ny, ex0, ex1, ey0, ey1, inside, crosses);
+    // Only a point inside needs its way out: a second walk, since most elements tried are near and not
+    // entered.
+    float qx = px, qy = py;
+    const float near2 =
+        inside ? overlap_way_out(state, lo, hi, edges, w, px, py, qx, qy) : std::numeric_limits<float>::infinity();
     if (crosses) r.overlap = true;
     // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, between
     // its two slices as its polygon is. A secondary element gives way to a primary one whatever their
