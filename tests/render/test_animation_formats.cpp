@@ -199,7 +199,7 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
 #endif
 }
 
-TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpak's PNG frames, alpha IoU at least 0.97") {
+TEST_CASE("svg-anim and Chromium: paused at five frames' times, at slices and between them, it covers animpak's PNG frames, alpha IoU at least 0.97") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
   const World world = big_star_world();
@@ -208,7 +208,8 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
   const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
   write_frames(world, world.state, out);
   const std::string svg = text_of(dir / "animation.svg");
-  for (int i : {0, kFrames / 3, 2 * kFrames / 3}) {
+  // Frames 1 and 3 lie between two slices.
+  for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
     const Image ours = read_rgba(dir / "frames" / frame_png(i));
     // The SVG inline, so that the page's script reaches its timeline: paused at frame i's time.
     const fs::path page = dir / ("frame" + std::to_string(i) + ".html"), shot = dir / ("chromium" + std::to_string(i) + ".png");
