@@ -70,7 +70,8 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
   std::vector<double> frames, scales;
   for (std::size_t k = 0; k + 1 < keys.frames.size(); ++k) {
     frames.push_back(keys.frames[k]), scales.push_back(keys.stroke_scales[k]);
-    const double a = keys.frames[k], b = keys.frames[k + 1], sa = keys.stroke_scales[k], sb = keys.stroke_scales[k + 1];
+    const double a = keys.frames[k], b = keys.frames[k + 1];
+    const double sa = keys.stroke_scales[k], sb = keys.stroke_scales[k + 1];
     std::vector<double> inner_frames, inner_scales;
     bool straight = true;
     for (int i = int(std::floor(a)) + 1; i < b && i < out.count; ++i) {
@@ -344,7 +345,8 @@ SvgView svg_view(const World& world, const FrameOutput& out) {
   return view;
 }
 
-void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path, const std::vector<std::vector<Vec2>>& lines) {
+void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path,
+                         const std::vector<std::vector<Vec2>>& lines) {
   bool first = true;
   for (std::size_t q = 0; q < path.polylines.size(); ++q) {
     if (!drawn(path.polylines[q])) continue;

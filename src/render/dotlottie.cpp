@@ -50,7 +50,8 @@ std::string zip(const std::vector<ZipEntry>& entries, const std::filesystem::pat
     put32(common, crc), put32(common, std::uint32_t(packed.size())), put32(common, std::uint32_t(e.data.size()));
     put16(common, std::uint32_t(e.name.size()));
     put32(directory, 0x02014b50), put16(directory, 20), directory += common;
-    put16(directory, 0), put16(directory, 0), put16(directory, 0), put16(directory, 0);  // extra, comment, disk, attributes
+    // No extra field or comment, disk 0, no internal or external attributes.
+    put16(directory, 0), put16(directory, 0), put16(directory, 0), put16(directory, 0);
     put32(directory, 0), put32(directory, std::uint32_t(body.size())), directory += e.name;
     put32(body, 0x04034b50), body += common, put16(body, 0), body += e.name, body += packed;
   }
@@ -67,7 +68,7 @@ void write_dotlottie(const World& world, const SimState& state, const FrameOutpu
                      const std::vector<std::string>& ids, const std::filesystem::path& file) {
   std::ostringstream document;
   write_lottie(world, state, out, ids, document, file);
-  const std::string manifest = std::string("{\"version\":\"1\",\"generator\":\"animpak ") + std::string(animpak_version) +
+  const std::string manifest = "{\"version\":\"1\",\"generator\":\"animpak " + std::string(animpak_version) +
                                "\",\"author\":\"animpak\",\"revision\":1,\"activeAnimationId\":\"animation\","
                                "\"animations\":[{\"id\":\"animation\",\"loop\":true,\"autoplay\":true,\"speed\":1,"
                                "\"direction\":1,\"playMode\":\"normal\"}]}\n";
