@@ -188,18 +188,18 @@ int decimals_for(int precision, double pixels_per_unit) {
   return std::clamp(static_cast<int>(std::ceil(precision + std::log10(std::max(pixels_per_unit, 1e-12)) - 1e-9)), 0, 12);
 }
 
-
 // The Lottie layers, written top first (Lottie draws layers[0] on top). Coordinates are the PNG frames'
 // pixels (draw_frame's size, margin and fit), so frame i here is frame_i.png.
 class LottieLayers {
  public:
   LottieLayers(std::ostream& json, const World& world, const FrameOutput& out)
-      : json_(json), interpolation_(out.interpolation), decimals_(std::clamp(out.precision, 0, 12)) {
-    const Box box = world.container.bounds();
-    height_ = out.style.size, width_ = raster_width(box, height_);
-    fit_ = fit_to_picture(width_, height_, box, 0.02 * height_);
-    frames_ = out.count;
-  }
+      : json_(json),
+        interpolation_(out.interpolation),
+        decimals_(std::clamp(out.precision, 0, 12)),
+        width_(raster_width(world.container.bounds(), out.style.size)),
+        height_(out.style.size),
+        frames_(out.count),
+        fit_(fit_to_picture(width_, height_, world.container.bounds(), 0.02 * height_)) {}
   void document_head(double fps) {
     json_ << "{\"v\":\"5.7.4\",\"fr\":" << number(fps, 6) << ",\"ip\":0,\"op\":" << frames_ << ",\"w\":" << width_
           << ",\"h\":" << height_ << ",\"nm\":\"animpak\",\"ddd\":0,\"meta\":{\"g\":\"animpak " << animpak_version
