@@ -92,11 +92,19 @@ int raster_width(const Box& box, int height);
 /// frame 0), i / (count − 1) otherwise.
 std::vector<double> frame_times(int count, bool loop);
 
+/// How the frames draw the container: its outline and holes as a thin grey line over the elements, its own
+/// art painted under them (as its file paints it), or not at all.
+enum class ContainerDrawing { outline, fill, none };
+
 struct FrameStyle {
-  int size = 512;                  ///< picture height in pixels; the width follows the container's aspect
+  int size = 512;  ///< picture height in pixels; the width follows the container's aspect
+  /// Alpha 0 draws no background: transparent PNG pixels, no Lottie background layer, no SVG backdrop.
   Rgba background{1, 1, 1, 1};
-  bool draw_container = true;      ///< the outline and holes, thin grey
+  ContainerDrawing container = ContainerDrawing::outline;
 };
+
+/// The art's own coordinates, as draw_art takes them: the art drawn where it is.
+ArtPoints own_points(const ArtShape& art);
 
 /// One element's art at one frame time: replayed on its interpolated slice (element_at, replay_art), and
 /// the factor its stroke widths are drawn at (element_scale).
@@ -104,6 +112,9 @@ struct ElementArt {
   ArtPoints points;
   double stroke_scale = 1.0;
 };
+
+/// Element `element`'s art replayed on these slice vertex positions, and its stroke scale there.
+ElementArt element_art(const World& world, int element, const std::vector<Vec2>& positions);
 
 /// Every element's art at frame time tf, in element order: the one geometry every frame writer (PNG,
 /// SVG frames, Lottie, animated SVG) and the frame metrics use.
@@ -208,11 +219,12 @@ struct PackingQuality {
   std::vector<FrameMetrics> between_slices;
 };
 
-/// lottie: animation.json, a Lottie (Bodymovin) document; svg_anim: animation.svg, paths animated with SMIL
-/// (docs/animation-formats.md).
-enum class FrameFormat { png, gif, mp4, svg, lottie, svg_anim };
+/// lottie: animation.json, a Lottie (Bodymovin) document; dotlottie: animation.lottie, the same document in
+/// a dotLottie zip; svg_anim: animation.svg, paths animated with SMIL (docs/animation-formats.md).
+enum class FrameFormat { png, gif, mp4, svg, lottie, dotlottie, svg_anim };
 
-/// How the animated vector formats move a path between two frames.
+/// How the animated vector formats move a path. linear: keys at the element's own slice times, straight
+/// in between, which is the motion itself (paper §6); hold: keys at the frames, each held until the next.
 enum class Interpolation { linear, hold };
 
 struct FrameOutput {
@@ -225,7 +237,8 @@ struct FrameOutput {
   Interpolation interpolation = Interpolation::linear;
 };
 
-/// The file name of an animated format (animation.json, animation.svg), empty for the others.
+/// The file name of an animated format (animation.json, animation.lottie, animation.svg), empty for the
+/// others.
 std::string animation_file_name(FrameFormat format);
 
 /// Writes `count` frames one at a time (never all in memory): frames/frame_NNNN.png (and .svg), then

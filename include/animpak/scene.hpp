@@ -17,6 +17,7 @@ struct Container {
   std::vector<Vec2> outline;
   std::vector<std::vector<Vec2>> holes;
   ArtFrame frame;  ///< container art coordinates → unit square (targets, field centres use it)
+  ArtShape art;    ///< the container's art in unit coordinates (stroke widths too), for drawing it
 
   /// Inside the outline and outside every hole.
   bool contains(Vec2 p) const;

@@ -46,7 +46,9 @@ struct FrameOptions {
   int size = 512;
   double fps = 25.0;
   std::vector<std::string> formats{"png", "gif"};
-  bool draw_container = true;
+  std::string background = "white";  ///< white, none (transparent) or #rrggbb
+  std::string container = "outline";  ///< outline, fill (its art's paint) or none
+  bool no_container = false;          ///< --no-container: container none
   int precision = 2;                      ///< lottie, svg-anim: decimals of a pixel
   std::string interpolation = "linear";  ///< lottie, svg-anim: linear or hold
 };

@@ -2,6 +2,8 @@
 // frames after pack, bench --plot). Only this executable compiles this file and links animpak_render.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <iostream>
 
@@ -18,8 +20,24 @@ FrameFormat parse_format(const std::string& name) {
   if (name == "mp4") return FrameFormat::mp4;
   if (name == "svg") return FrameFormat::svg;
   if (name == "lottie") return FrameFormat::lottie;
+  if (name == "dotlottie") return FrameFormat::dotlottie;
   if (name == "svg-anim") return FrameFormat::svg_anim;
-  throw UsageError("--format " + name + ": expected png, gif, mp4, svg, lottie or svg-anim");
+  throw UsageError("--format " + name + ": expected png, gif, mp4, svg, lottie, dotlottie or svg-anim");
+}
+
+Rgba parse_background(const std::string& text) {
+  if (text == "white") return {1, 1, 1, 1};
+  if (text == "none") return {1, 1, 1, 0};
+  const auto hex_digit = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+  if (text.size() != 7 || text[0] != '#' || !std::all_of(text.begin() + 1, text.end(), hex_digit))
+    throw UsageError("--background " + text + ": expected white, none or a colour #rrggbb (e.g. #1e1e1e)");
+  auto channel = [&](int at) { return std::stoi(text.substr(at, 2), nullptr, 16) / 255.0; };
+  return {channel(1), channel(3), channel(5), 1};
+}
+
+ContainerDrawing parse_container(const FrameOptions& options) {
+  if (options.no_container || options.container == "none") return ContainerDrawing::none;
+  return options.container == "fill" ? ContainerDrawing::fill : ContainerDrawing::outline;
 }
 
 /// Writes the frames in the requested formats into `dir` and returns their quality.
@@ -29,11 +47,15 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   out.count = options.frames;
   out.fps = options.fps;
   out.style.size = options.size;
-  out.style.draw_container = options.draw_container;
+  out.style.background = parse_background(options.background);
+  out.style.container = parse_container(options);
   out.formats.clear();
   out.precision = options.precision;
   out.interpolation = options.interpolation == "hold" ? Interpolation::hold : Interpolation::linear;
   for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
+  if (out.style.background.a < 1 && std::count(out.formats.begin(), out.formats.end(), FrameFormat::mp4))
+    throw UsageError("--background " + options.background + ": MP4 (H.264) has no transparency; give the MP4 a "
+                     "colour (--background white or #rrggbb) or leave mp4 out of --format");
   PackingQuality quality = write_frames(world, world.state, out);
   for (FrameFormat f : out.formats) {
     const std::string name = animation_file_name(f);
@@ -50,15 +72,25 @@ void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
   cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")->check(CLI::Range(1.0, 240.0));
   cmd.add_option("--format", f.formats,
-                 "png, gif, mp4, svg (frames), lottie (animation.json), svg-anim (animation.svg); several allowed")
+                 "png, gif, mp4, svg (frames), lottie (animation.json), dotlottie (animation.lottie), svg-anim "
+                 "(animation.svg); several allowed")
       ->delimiter(',')
-      ->check(CLI::IsMember({"png", "gif", "mp4", "svg", "lottie", "svg-anim"}));
+      ->check(CLI::IsMember({"png", "gif", "mp4", "svg", "lottie", "dotlottie", "svg-anim"}));
   cmd.add_option("--precision", f.precision,
                  "decimals of a pixel kept in lottie and svg-anim coordinates (of a --size picture)")
       ->check(CLI::Range(0, 6));
-  cmd.add_option("--interpolation", f.interpolation, "how lottie and svg-anim move between frames: linear or hold")
+  cmd.add_option("--interpolation", f.interpolation,
+                 "how lottie and svg-anim move: linear (keyed at the slices, straight between them: the motion "
+                 "itself) or hold (keyed at the frames, each shown until the next)")
       ->check(CLI::IsMember({"linear", "hold"}));
-  cmd.add_flag("!--no-container", f.draw_container, "do not draw the container outline");
+  cmd.add_option("--background", f.background,
+                 "white, none (transparent PNG and GIF, no Lottie background layer, no SVG backdrop) or #rrggbb");
+  CLI::Option* container =
+      cmd.add_option("--container", f.container,
+                     "outline (a thin grey line over the elements), fill (the container art painted under them) "
+                     "or none")
+          ->check(CLI::IsMember({"outline", "fill", "none"}));
+  cmd.add_flag("--no-container", f.no_container, "the same as --container none")->excludes(container);
 }
 
 class RenderingFrontend final : public Frontend {

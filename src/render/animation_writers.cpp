@@ -1,92 +1,16 @@
-// The animated vector formats: a Lottie document and an SVG animated with SMIL, both keyed from the frames'
-// own replayed art (frame_art) through a scratch file of its coordinates. docs/animation-formats.md
-// describes both documents.
+// The animated vector formats: a Lottie document and an SVG animated with SMIL, both keyed per element from
+// the packed state (element_keys): at the element's own slice times, between which the motion is linear, or
+// at the frames when held. docs/animation-formats.md describes both documents.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 
 #include "animpak/error.hpp"
 #include "animpak/version.hpp"
 #include "frame_writers.hpp"
 
 namespace animpak::frame_writers {
-
-GeometryLog::GeometryLog(const World& world, std::filesystem::path file) : world_(world), file_(std::move(file)) {
-  for (const ElementInstance& e : world.elements) {
-    const ArtShape& art = world.library[e.library].art.art;
-    scale_at_.push_back(stride_++);
-    auto& paths = line_at_.emplace_back(art.paths.size());
-    for (std::size_t p = 0; p < art.paths.size(); ++p)
-      for (const Polyline& line : art.paths[p].polylines) {
-        paths[p].push_back(stride_);
-        stride_ += 2 * line.points.size();
-      }
-  }
-  io_.open(file_, std::ios::in | std::ios::out | std::ios::binary | std::ios::trunc);
-  if (!io_) throw InputError(file_.string() + ": cannot create the scratch file; check that the folder is writable");
-}
-
-GeometryLog::~GeometryLog() {
-  io_.close();
-  std::error_code ignored;  // a scratch file left behind costs disk space only
-  std::filesystem::remove(file_, ignored);
-}
-
-void GeometryLog::append(const std::vector<ElementArt>& art, int frame) {
-  if (frame != frames_ || art.size() != world_.elements.size())
-    throw std::logic_error("GeometryLog::append: frames must come in order, every element in each");
-  numbers_.assign(stride_, 0.0);
-  for (std::size_t e = 0; e < art.size(); ++e) {
-    const ArtShape& shape = world_.library[world_.elements[e].library].art.art;
-    const std::string where = "element " + world_.elements[e].name + ", frame " + std::to_string(frame);
-    const std::string why = ": Lottie and animated SVG key each path from frame to frame, so every frame needs the art's "
-                            "own paths and point counts";
-    if (art[e].points.size() != shape.paths.size())
-      throw InputError(where + ": " + std::to_string(art[e].points.size()) + " paths replayed, the art has " +
-                       std::to_string(shape.paths.size()) + why);
-    numbers_[scale_at_[e]] = art[e].stroke_scale;
-    for (std::size_t p = 0; p < shape.paths.size(); ++p) {
-      const auto& lines = shape.paths[p].polylines;
-      const auto& replayed = art[e].points[p];
-      if (replayed.size() != lines.size())
-        throw InputError(where + ", path " + shape.paths[p].id + ": " + std::to_string(replayed.size()) +
-                         " polylines replayed, the art has " + std::to_string(lines.size()) + why);
-      for (std::size_t q = 0; q < lines.size(); ++q) {
-        if (replayed[q].size() != lines[q].points.size())
-          throw InputError(where + ", path " + shape.paths[p].id + ", polyline " + std::to_string(q) + ": " +
-                           std::to_string(replayed[q].size()) + " points replayed, the art has " +
-                           std::to_string(lines[q].points.size()) + why);
-        double* at = &numbers_[line_at_[e][p][q]];
-        for (const Vec2& v : replayed[q]) *at++ = v.x, *at++ = v.y;
-      }
-    }
-  }
-  io_.seekp(static_cast<std::streamoff>(frame) * static_cast<std::streamoff>(stride_ * sizeof(double)));
-  io_.write(reinterpret_cast<const char*>(numbers_.data()), static_cast<std::streamsize>(stride_ * sizeof(double)));
-  if (!io_) throw InputError(file_.string() + ": writing the scratch file failed; check free disk space");
-  ++frames_;
-}
-
-void GeometryLog::read(int frame, std::size_t offset, std::size_t count) {
-  numbers_.resize(count);
-  io_.seekg(static_cast<std::streamoff>((static_cast<std::size_t>(frame) * stride_ + offset) * sizeof(double)));
-  io_.read(reinterpret_cast<char*>(numbers_.data()), static_cast<std::streamsize>(count * sizeof(double)));
-  if (!io_) throw InputError(file_.string() + ": reading the scratch file back failed");
-}
-
-double GeometryLog::stroke_scale(int frame, int element) {
-  read(frame, scale_at_[element], 1);
-  return numbers_[0];
-}
-
-const std::vector<Vec2>& GeometryLog::points(int frame, int element, int path, int line) {
-  const std::size_t n = world_.library[world_.elements[element].library].art.art.paths[path].polylines[line].points.size();
-  read(frame, line_at_[element][path][line], 2 * n);
-  points_.resize(n);
-  for (std::size_t k = 0; k < n; ++k) points_[k] = {numbers_[2 * k], numbers_[2 * k + 1]};
-  return points_;
-}
-
 namespace {
 
 // v with `decimals` decimals, trailing zeros dropped ("12.5", "3", never "-0").
@@ -114,12 +38,95 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-void check_written(const std::ofstream& out, const std::filesystem::path& file) {
+void check_written(const std::ostream& out, const std::filesystem::path& file) {
   if (!out) throw InputError(file.string() + ": writing failed; check free disk space");
 }
 
 // Polylines with no point draw nothing (Picture::draw_art skips them); the formats leave them out too.
 bool drawn(const Polyline& line) { return !line.points.empty(); }
+
+// Key times are kept to a ten-thousandth of a frame, and keys closer than that are one key.
+constexpr int key_decimals = 4;
+
+// Half the last decimal kept (--precision) of the element's widest stroke, in stroke-scale units: 0 when it
+// strokes nothing.
+double stroke_tolerance(const World& world, int element, const FrameOutput& out) {
+  const Box box = world.container.bounds();
+  const int height = out.style.size;
+  const double pixels = fit_to_picture(raster_width(box, height), height, box, 0.02 * height).scale;
+  double widest = 0.0;
+  for (const ArtPath& path : world.library[world.elements[element].library].art.art.paths)
+    if (path.stroke.enabled) widest = std::max(widest, path.stroke_width * pixels);
+  return widest > 0 ? 0.5 * std::pow(10.0, -std::clamp(out.precision, 0, 12)) / widest : 0.0;
+}
+
+// The stroke scale is the square root of the element's area ratio (element_scale), and the area is quadratic
+// between two slices: where straight keys between two slices would miss a frame's stroke width by more than
+// the precision kept, that interval's frames are keyed too, so every frame's width is the PNG frame's.
+void add_stroke_keys(const World& world, const SimState& state, int element, const FrameOutput& out,
+                     double frames_per_unit, ElementKeys& keys) {
+  const double tolerance = stroke_tolerance(world, element, out);
+  if (tolerance == 0) return;
+  std::vector<double> frames, scales;
+  for (std::size_t k = 0; k + 1 < keys.frames.size(); ++k) {
+    frames.push_back(keys.frames[k]), scales.push_back(keys.stroke_scales[k]);
+    const double a = keys.frames[k], b = keys.frames[k + 1];
+    const double sa = keys.stroke_scales[k], sb = keys.stroke_scales[k + 1];
+    std::vector<double> inner_frames, inner_scales;
+    bool straight = true;
+    for (int i = int(std::floor(a)) + 1; i < b && i < out.count; ++i) {
+      const double scale = element_scale(world, element, element_at(world, state, element, i / frames_per_unit));
+      straight = straight && std::abs(scale - (sa + (sb - sa) * (i - a) / (b - a))) <= tolerance;
+      inner_frames.push_back(i), inner_scales.push_back(scale);
+    }
+    if (straight) continue;
+    frames.insert(frames.end(), inner_frames.begin(), inner_frames.end());
+    scales.insert(scales.end(), inner_scales.begin(), inner_scales.end());
+  }
+  frames.push_back(keys.frames.back()), scales.push_back(keys.stroke_scales.back());
+  keys.stroke_frames = std::move(frames), keys.stroke_scales = std::move(scales);
+}
+
+}  // namespace
+
+// Frame i shows t = i / N when looping, i / (N − 1) otherwise (frame_times). Between two slices every
+// vertex moves straight (element_at) and every art point is a fixed barycentric combination of three
+// vertices of one triangle (replay_art), so the art moves straight too: keys at the slices, interpolated
+// linearly, are the motion itself. The first slice is at t = 0 and the last at t = 1 (the end-to-end
+// constraint), so linear keys span the document, the last at frame N when looping.
+ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out) {
+  ElementKeys keys;
+  auto add = [&](double frame, const std::vector<Vec2>& positions) {
+    const ElementArt art = element_art(world, element, positions);
+    keys.frames.push_back(frame), keys.points.push_back(art.points);
+    keys.stroke_frames.push_back(frame), keys.stroke_scales.push_back(art.stroke_scale);
+  };
+  const int frames = out.count;
+  if (out.interpolation == Interpolation::hold || frames == 1) {
+    const std::vector<double> times = frame_times(frames, world.loop);
+    for (int i = 0; i < frames; ++i) add(i, element_at(world, state, element, times[i]));
+    return keys;
+  }
+  const ElementInstance& inst = world.elements[element];
+  const SpacetimeElement& lib = world.library[inst.library];
+  const int P = lib.vertices_per_slice();
+  const double frames_per_unit = world.loop ? frames : frames - 1, steps = std::pow(10.0, key_decimals);
+  std::vector<Vec2> positions(P);
+  for (int s = 0; s < lib.slice_count; ++s) {
+    const int first = inst.vertex_begin + s * P;
+    const double frame = std::round(state.t[first] * frames_per_unit * steps) / steps;
+    // Time springs keep slices apart; two at one time would be a jump, which no pair of keys draws.
+    if (!keys.frames.empty() && frame <= keys.frames.back()) continue;
+    for (int v = 0; v < P; ++v) positions[v] = {state.x[first + v], state.y[first + v]};
+    add(frame, positions);
+  }
+  // A document that does not loop shows its last slice through its last frame, up to op = N.
+  if (keys.frames.back() < frames) add(frames, positions);
+  add_stroke_keys(world, state, element, out, frames_per_unit, keys);
+  return keys;
+}
+
+namespace {
 
 // ---- Lottie -------------------------------------------------------------------------------------------
 
@@ -151,24 +158,28 @@ std::string shape_value(const std::vector<Vec2>& pixels, bool closed, int decima
   return "{\"i\":" + zeros + ",\"o\":" + zeros + ",\"v\":" + v + ",\"c\":" + (closed ? "true" : "false") + "}";
 }
 
-// Keyframes of one property over the N frames, value(i) at frame i, plus a last key at frame N holding
-// frame 0's value: a linear last interval runs from frame N − 1 back to frame 0, so the loop is seamless.
-// Keys carry no end value ("e"): each interval ends on the next key's start, as Bodymovin 5.5 and later
-// write it, and players draw such a file exactly as one with end values.
-// `shape` properties take scalar easing, others one entry per dimension.
+// Keyframes of one property, value(k) at frames[k]. Linear keys ease linearly (a straight line between two
+// keys), hold keys ("h": 1) show their value until the next. Keys carry no end value ("e"): each interval
+// ends on the next key's start, as Bodymovin 5.5 and later write it, and players draw such a file exactly
+// as one with end values. `shape` properties take scalar easing, others one entry per dimension.
 template <class Value>
-void write_keyframes(std::ostream& json, int frames, Interpolation interpolation, bool shape, Value value) {
-  if (frames == 1) {
+void write_keyframes(std::ostream& json, const std::vector<double>& frames, Interpolation interpolation, bool shape,
+                     Value value) {
+  if (frames.size() == 1) {
     json << still(value(0));
     return;
   }
   const std::string easing = shape ? "\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}"
                                    : "\"i\":{\"x\":[1],\"y\":[1]},\"o\":{\"x\":[0],\"y\":[0]}";
+  const bool hold = interpolation == Interpolation::hold;
   json << "{\"a\":1,\"k\":[";
-  for (int i = 0; i < frames; ++i)
-    json << "{\"t\":" << i << ",\"s\":[" << value(i) << "],"
-         << (interpolation == Interpolation::hold ? "\"h\":1" : easing) << "},";
-  json << "{\"t\":" << frames << ",\"s\":[" << value(0) << "]}]}";
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    json << (k ? ",{\"t\":" : "{\"t\":") << number(frames[k], key_decimals) << ",\"s\":[" << value(k) << "]";
+    if (hold) json << ",\"h\":1";
+    else if (k + 1 < frames.size()) json << "," << easing;
+    json << "}";
+  }
+  json << "]}";
 }
 
 // The decimals that keep a coordinate within 10^−precision pixels when one unit is `pixels_per_unit`
@@ -177,102 +188,132 @@ int decimals_for(int precision, double pixels_per_unit) {
   return std::clamp(static_cast<int>(std::ceil(precision + std::log10(std::max(pixels_per_unit, 1e-12)) - 1e-9)), 0, 12);
 }
 
-}  // namespace
+// The Lottie layers, written top first (Lottie draws layers[0] on top). Coordinates are the PNG frames'
+// pixels (draw_frame's size, margin and fit), so frame i here is frame_i.png.
+class LottieLayers {
+ public:
+  LottieLayers(std::ostream& json, const World& world, const FrameOutput& out)
+      : json_(json),
+        interpolation_(out.interpolation),
+        decimals_(std::clamp(out.precision, 0, 12)),
+        width_(raster_width(world.container.bounds(), out.style.size)),
+        height_(out.style.size),
+        frames_(out.count),
+        fit_(fit_to_picture(width_, height_, world.container.bounds(), 0.02 * height_)) {}
+  void document_head(double fps) {
+    json_ << "{\"v\":\"5.7.4\",\"fr\":" << number(fps, 6) << ",\"ip\":0,\"op\":" << frames_ << ",\"w\":" << width_
+          << ",\"h\":" << height_ << ",\"nm\":\"animpak\",\"ddd\":0,\"meta\":{\"g\":\"animpak " << animpak_version
+          << "\"},\"assets\":[],\"layers\":[";
+  }
+  void document_tail() { json_ << "\n]}\n"; }
 
-void write_lottie(const World& world, GeometryLog& log, const FrameOutput& out, const std::vector<std::string>& ids,
-                  const std::filesystem::path& file) {
-  std::ofstream json(file);
-  if (!json) throw InputError(file.string() + ": cannot write; check that the folder is writable");
-  // The PNG frames' pixels: the same size, margin and fit (draw_frame), so frame i here is frame_i.png.
-  const Box box = world.container.bounds();
-  const int height = out.style.size, width = raster_width(box, height);
-  const PixelFit fit = fit_to_picture(width, height, box, 0.02 * height);
-  const int frames = log.frames(), decimals = std::clamp(out.precision, 0, 12);
-
-  json << "{\"v\":\"5.7.4\",\"fr\":" << number(out.fps, 6) << ",\"ip\":0,\"op\":" << frames << ",\"w\":" << width
-       << ",\"h\":" << height << ",\"nm\":\"animpak\",\"ddd\":0,\"meta\":{\"g\":\"animpak "
-       << animpak_version << "\"},\"assets\":[],\"layers\":[";
-  // Lottie draws layers[0] on top: the container (drawn last in the frames), then the elements from the
-  // last-drawn one down, then the background.
-  int index = 0;
-  auto layer_head = [&](int type, const std::string& name) {
-    json << (index ? ",\n" : "\n");
-    json << "{\"ddd\":0,\"ind\":" << ++index << ",\"ty\":" << type
-         << ",\"nm\":" << json_string(name) << ",\"sr\":1,\"ks\":" << identity_layer_transform << ",\"ao\":0";
-  };
-  auto layer_tail = [&] { json << ",\"ip\":0,\"op\":" << frames << ",\"st\":0,\"bm\":0}"; };
-
-  if (out.style.draw_container) {
-    layer_head(4, "container");
-    json << ",\"shapes\":[{\"ty\":\"gr\",\"nm\":\"outline\",\"it\":[";
-    std::vector<std::vector<Vec2>> rings{world.container.outline};
-    rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
+  // draw_frame's grey line over the outline and holes, max(1, size / 400) pixels wide.
+  void container_outline(const Container& container) {
+    head(4, "container");
+    json_ << ",\"shapes\":[{\"ty\":\"gr\",\"nm\":\"outline\",\"it\":[";
+    std::vector<std::vector<Vec2>> rings{container.outline};
+    rings.insert(rings.end(), container.holes.begin(), container.holes.end());
     for (const auto& ring : rings) {
       std::vector<Vec2> pixels;
-      for (Vec2 p : ring) pixels.push_back(fit.to_pixel(p));
-      json << "{\"ty\":\"sh\",\"ks\":" << still(shape_value(pixels, true, decimals)) << "},";
+      for (Vec2 p : ring) pixels.push_back(fit_.to_pixel(p));
+      json_ << "{\"ty\":\"sh\",\"ks\":" << still(shape_value(pixels, true, decimals_)) << "},";
     }
-    // draw_frame's grey line, max(1, size / 400) pixels wide.
-    json << "{\"ty\":\"st\",\"c\":" << still(colour({0.55, 0.55, 0.55, 1})) << ",\"o\":" << still("100")
-         << ",\"w\":" << still(number(std::max(1.0, out.style.size / 400.0), 3))
-         << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"}," << identity_group_transform << "]}]";
-    layer_tail();
+    json_ << "{\"ty\":\"st\",\"c\":" << still(colour({0.55, 0.55, 0.55, 1})) << ",\"o\":" << still("100")
+          << ",\"w\":" << still(number(std::max(1.0, height_ / 400.0), 3))
+          << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"}," << identity_group_transform << "]}]";
+    tail();
   }
 
+  // One shape layer of art moving through `keys`; within it, too, the first item is on top: the paths
+  // from the last-painted one down.
+  void art_layer(const std::string& name, const ArtShape& art, const ElementKeys& keys) {
+    head(4, name);
+    json_ << ",\"shapes\":[";
+    for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
+      json_ << (p + 1 < int(art.paths.size()) ? ",\n" : "\n");
+      path_group(art.paths[p], p, keys);
+    }
+    json_ << "]";
+    tail();
+  }
+
+  void background(Rgba colour) {
+    head(1, "background");
+    json_ << ",\"sc\":" << json_string(hex(colour)) << ",\"sw\":" << width_ << ",\"sh\":" << height_;
+    tail();
+  }
+
+ private:
+  void head(int type, const std::string& name) {
+    json_ << (index_ ? ",\n" : "\n");
+    json_ << "{\"ddd\":0,\"ind\":" << ++index_ << ",\"ty\":" << type
+          << ",\"nm\":" << json_string(name) << ",\"sr\":1,\"ks\":" << identity_layer_transform << ",\"ao\":0";
+  }
+  void tail() { json_ << ",\"ip\":0,\"op\":" << frames_ << ",\"st\":0,\"bm\":0}"; }
+
+  // A group's fill and stroke paint every shape above them in it as one path, so holes and even–odd
+  // fills come out as in the frames; the later-painted of the two comes first.
+  void path_group(const ArtPath& path, int p, const ElementKeys& keys) {
+    json_ << "{\"ty\":\"gr\",\"nm\":" << json_string(path.id) << ",\"it\":[";
+    for (int q = 0; q < int(path.polylines.size()); ++q) {
+      if (!drawn(path.polylines[q])) continue;
+      json_ << "{\"ty\":\"sh\",\"nm\":\"polyline " << q << "\",\"ks\":";
+      write_keyframes(json_, keys.frames, interpolation_, true, [&](std::size_t k) {
+        std::vector<Vec2> pixels = keys.points[k][p][q];
+        for (Vec2& v : pixels) v = fit_.to_pixel(v);
+        return shape_value(pixels, path.polylines[q].closed, decimals_);
+      });
+      json_ << "},";
+    }
+    const bool fills = path.fill.enabled, strokes = path.stroke.enabled && path.stroke_width > 0;
+    if (path.paint_order == PaintOrder::fill_then_stroke) {
+      if (strokes) stroke(path, keys);
+      if (fills) fill(path);
+    } else {
+      if (fills) fill(path);
+      if (strokes) stroke(path, keys);
+    }
+    json_ << identity_group_transform << "]}";
+  }
+  void fill(const ArtPath& path) {
+    json_ << "{\"ty\":\"fl\",\"c\":" << still(colour(path.fill.color))
+          << ",\"o\":" << still(number(100 * std::clamp(path.fill.color.a, 0.0, 1.0), 2))
+          << ",\"r\":" << (path.fill_rule == FillRule::evenodd ? "2" : "1") << ",\"nm\":\"fill\"},";
+  }
+  // The width follows the element's scale, keyed with its points; round joins and caps, as draw_art.
+  void stroke(const ArtPath& path, const ElementKeys& keys) {
+    json_ << "{\"ty\":\"st\",\"c\":" << still(colour(path.stroke.color))
+          << ",\"o\":" << still(number(100 * std::clamp(path.stroke.color.a, 0.0, 1.0), 2)) << ",\"w\":";
+    write_keyframes(json_, keys.stroke_frames, interpolation_, false, [&](std::size_t k) {
+      return number(path.stroke_width * keys.stroke_scales[k] * fit_.scale, decimals_);
+    });
+    json_ << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"},";
+  }
+
+  std::ostream& json_;
+  Interpolation interpolation_;
+  int decimals_, width_ = 0, height_ = 0, frames_ = 0, index_ = 0;
+  PixelFit fit_;
+};
+
+}  // namespace
+
+// The layers from the top: the container's outline (drawn last in the frames), the elements from the
+// last-drawn one down, the container's art (drawn first), the background.
+void write_lottie(const World& world, const SimState& state, const FrameOutput& out,
+                  const std::vector<std::string>& ids, std::ostream& json, const std::filesystem::path& file) {
+  LottieLayers layers(json, world, out);
+  layers.document_head(out.fps);
+  if (out.style.container == ContainerDrawing::outline) layers.container_outline(world.container);
   for (int e = int(world.elements.size()) - 1; e >= 0; --e) {
     const ArtShape& art = world.library[world.elements[e].library].art.art;
-    layer_head(4, ids[e]);
-    json << ",\"shapes\":[";
-    // Within a layer, too, the first item is on top: the paths from the last-painted one down.
-    for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
-      const ArtPath& path = art.paths[p];
-      json << (p + 1 < int(art.paths.size()) ? ",\n" : "\n") << "{\"ty\":\"gr\",\"nm\":" << json_string(path.id)
-           << ",\"it\":[";
-      for (int q = 0; q < int(path.polylines.size()); ++q) {
-        if (!drawn(path.polylines[q])) continue;
-        json << "{\"ty\":\"sh\",\"nm\":\"polyline " << q << "\",\"ks\":";
-        write_keyframes(json, frames, out.interpolation, true, [&](int i) {
-          std::vector<Vec2> pixels = log.points(i, e, p, q);
-          for (Vec2& v : pixels) v = fit.to_pixel(v);
-          return shape_value(pixels, path.polylines[q].closed, decimals);
-        });
-        json << "},";
-      }
-      // A group's fill and stroke paint every shape above them in it as one path; the later of the two is
-      // painted first.
-      const std::string fill = "{\"ty\":\"fl\",\"c\":" + still(colour(path.fill.color)) + ",\"o\":" +
-                               still(number(100 * std::clamp(path.fill.color.a, 0.0, 1.0), 2)) +
-                               ",\"r\":" + (path.fill_rule == FillRule::evenodd ? "2" : "1") + ",\"nm\":\"fill\"},";
-      auto stroke = [&] {
-        json << "{\"ty\":\"st\",\"c\":" << still(colour(path.stroke.color))
-             << ",\"o\":" << still(number(100 * std::clamp(path.stroke.color.a, 0.0, 1.0), 2)) << ",\"w\":";
-        write_keyframes(json, frames, out.interpolation, false, [&](int i) {
-          return number(path.stroke_width * log.stroke_scale(i, e) * fit.scale, decimals);
-        });
-        // Round joins and caps, as draw_art strokes.
-        json << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"},";
-      };
-      const bool fills = path.fill.enabled, strokes = path.stroke.enabled && path.stroke_width > 0;
-      if (path.paint_order == PaintOrder::fill_then_stroke) {
-        if (strokes) stroke();
-        if (fills) json << fill;
-      } else {
-        if (fills) json << fill;
-        if (strokes) stroke();
-      }
-      json << identity_group_transform << "]}";
-    }
-    json << "]";
-    layer_tail();
+    layers.art_layer(ids[e], art, element_keys(world, state, e, out));
     check_written(json, file);
   }
-
-  if (out.style.background.a > 0) {
-    layer_head(1, "background");
-    json << ",\"sc\":" << json_string(hex(out.style.background)) << ",\"sw\":" << width << ",\"sh\":" << height;
-    layer_tail();
-  }
-  json << "\n]}\n";
+  if (out.style.container == ContainerDrawing::fill)
+    layers.art_layer("container", world.container.art, {{0.0}, {own_points(world.container.art)}, {0.0}, {1.0}});
+  if (out.style.background.a > 0) layers.background(out.style.background);
+  layers.document_tail();
   check_written(json, file);
 }
 
@@ -280,114 +321,144 @@ void write_lottie(const World& world, GeometryLog& log, const FrameOutput& out, 
 
 namespace {
 
-void write_svg_path_data(std::ostream& svg, GeometryLog& log, int frame, int element, int path_index, const ArtPath& path,
-                         const ArtFrame& art_frame, int decimals) {
+// The container art's coordinates, as the SVG frames; the view box is exactly the PNG frames' picture (the
+// same pixel fit as draw_frame), so that frame i at time i / fps matches frame_i.png.
+struct SvgView {
+  explicit SvgView(const ArtFrame& art_frame) : frame(art_frame) {}
+  const ArtFrame& frame;
+  int width = 0, height = 0, decimals = 0;
+  double pixels_per_art_unit = 1.0;
+  Vec2 min;
+  double w = 0.0, h = 0.0;
+  std::string n(double v) const { return number(v, decimals); }
+};
+
+SvgView svg_view(const World& world, const FrameOutput& out) {
+  SvgView view(world.container.frame);
+  const Box box = world.container.bounds();
+  view.height = out.style.size, view.width = raster_width(box, view.height);
+  const PixelFit fit = fit_to_picture(view.width, view.height, box, 0.02 * view.height);
+  view.pixels_per_art_unit = fit.scale * view.frame.scale;
+  view.min = view.frame.to_art((Vec2{0, 0} - fit.offset) * (1.0 / fit.scale));
+  view.w = view.width / view.pixels_per_art_unit, view.h = view.height / view.pixels_per_art_unit;
+  view.decimals = decimals_for(out.precision, view.pixels_per_art_unit);
+  return view;
+}
+
+void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path,
+                         const std::vector<std::vector<Vec2>>& lines) {
   bool first = true;
-  for (int q = 0; q < int(path.polylines.size()); ++q) {
+  for (std::size_t q = 0; q < path.polylines.size(); ++q) {
     if (!drawn(path.polylines[q])) continue;
-    const std::vector<Vec2>& points = log.points(frame, element, path_index, q);
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Vec2 a = art_frame.to_art(points[k]);
-      svg << (k ? " L" : (first ? "M" : " M")) << number(a.x, decimals) << ' ' << number(a.y, decimals);
+    for (std::size_t k = 0; k < lines[q].size(); ++k) {
+      const Vec2 a = view.frame.to_art(lines[q][k]);
+      svg << (k ? " L" : (first ? "M" : " M")) << view.n(a.x) << ' ' << view.n(a.y);
     }
     if (path.polylines[q].closed) svg << " Z";
     first = false;
   }
 }
 
-}  // namespace
-
-void write_svg_animation(const World& world, GeometryLog& log, const FrameOutput& out,
-                         const std::vector<std::string>& ids, const std::filesystem::path& file) {
-  std::ofstream svg(file);
-  if (!svg) throw InputError(file.string() + ": cannot write; check that the folder is writable");
-  // The container art's coordinates, as the SVG frames; the view box is exactly the PNG frames' picture
-  // (the same pixel fit as draw_frame), so that frame i at time i / fps matches frame_i.png.
-  const ArtFrame& art_frame = world.container.frame;
-  const Box box = world.container.bounds();
-  const int height = out.style.size, width = raster_width(box, height);
-  const PixelFit fit = fit_to_picture(width, height, box, 0.02 * height);
-  const double pixels_per_art_unit = fit.scale * art_frame.scale;
-  const Vec2 view_min = art_frame.to_art((Vec2{0, 0} - fit.offset) * (1.0 / fit.scale));
-  const double view_w = width / pixels_per_art_unit, view_h = height / pixels_per_art_unit;
-  const int decimals = decimals_for(out.precision, pixels_per_art_unit);
-  const int frames = log.frames();
-  auto n = [&](double v) { return number(v, decimals); };
-
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << number(view_min.x, decimals + 2) << ' '
-      << number(view_min.y, decimals + 2) << ' ' << number(view_w, decimals + 2) << ' ' << number(view_h, decimals + 2)
-      << "\" width=\"" << width << "\" height=\"" << height << "\">\n";
-  svg << "<rect id=\"background\" x=\"" << n(view_min.x) << "\" y=\"" << n(view_min.y) << "\" width=\"" << n(view_w)
-      << "\" height=\"" << n(view_h) << "\" fill=\"" << hex(out.style.background) << "\"";
-  if (out.style.background.a < 1) svg << " fill-opacity=\"" << number(out.style.background.a, 4) << "\"";
-  svg << "/>\n";
-
+// The backdrop (none when the background is transparent), the container's art when it is filled, and the
+// container's path, stroked grey when it is outlined: the SVG frames' order.
+void write_svg_head(std::ostream& svg, const SvgView& view, const World& world, const FrameStyle& style) {
+  const int d = view.decimals + 2;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << number(view.min.x, d) << ' ' << number(view.min.y, d)
+      << ' ' << number(view.w, d) << ' ' << number(view.h, d) << "\" width=\"" << view.width << "\" height=\""
+      << view.height << "\">\n";
+  if (style.background.a > 0) {
+    svg << "<rect id=\"background\" x=\"" << view.n(view.min.x) << "\" y=\"" << view.n(view.min.y) << "\" width=\""
+        << view.n(view.w) << "\" height=\"" << view.n(view.h) << "\" fill=\"" << hex(style.background) << "\"";
+    if (style.background.a < 1) svg << " fill-opacity=\"" << number(style.background.a, 4) << "\"";
+    svg << "/>\n";
+  }
+  if (style.container == ContainerDrawing::fill) {
+    const ArtShape& art = world.container.art;
+    const ArtPoints points = own_points(art);
+    svg << "<g id=\"container-art\">\n";
+    for (std::size_t p = 0; p < art.paths.size(); ++p) {
+      svg << "<path d=\"";
+      write_svg_path_data(svg, view, art.paths[p], points[p]);
+      svg << "\"" << svg_paint(art.paths[p], view.n(art.paths[p].stroke_width / view.frame.scale)) << "/>\n";
+    }
+    svg << "</g>\n";
+  }
   std::vector<std::vector<Vec2>> rings{world.container.outline};
   rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
   svg << "<path id=\"container\" d=\"";
   for (std::size_t r = 0; r < rings.size(); ++r) {
     for (std::size_t k = 0; k < rings[r].size(); ++k) {
-      const Vec2 a = art_frame.to_art(rings[r][k]);
-      svg << (k ? " L" : (r ? " M" : "M")) << n(a.x) << ' ' << n(a.y);
+      const Vec2 a = view.frame.to_art(rings[r][k]);
+      svg << (k ? " L" : (r ? " M" : "M")) << view.n(a.x) << ' ' << view.n(a.y);
     }
     svg << " Z";
   }
   svg << "\" fill-rule=\"evenodd\" fill=\"none\"";
-  if (out.style.draw_container)
-    svg << " stroke=\"#8c8c8c\" stroke-width=\"" << n(std::max(1.0, out.style.size / 400.0) / pixels_per_art_unit) << "\"";
+  if (style.container == ContainerDrawing::outline)
+    svg << " stroke=\"#8c8c8c\" stroke-width=\"" << view.n(std::max(1.0, style.size / 400.0) / view.pixels_per_art_unit)
+        << "\"";
   else svg << " stroke=\"none\"";
   svg << "/>\n";
+}
 
-  // One cycle lasts N / fps seconds; frame i shows at i / fps. Linear: N + 1 values, the last frame 0
-  // again, so the path moves from frame N − 1 back to frame 0 as between any two frames. Discrete: N
-  // values, each held for one frame.
-  const bool linear = out.interpolation == Interpolation::linear;
-  const int values = linear ? frames + 1 : frames;
+// One cycle lasts N / fps seconds and frame i shows at i / fps, so a key at frame f has keyTime f / N.
+// Linear keys end at frame N (element_keys), as calcMode="linear" needs a last keyTime of 1; held ones
+// (calcMode="discrete") are the N frames.
+std::string smil_timing(const std::vector<double>& frames, int count, double fps, Interpolation interpolation) {
   std::string key_times;
-  for (int i = 0; i < values; ++i) {
-    if (i) key_times += ';';
-    key_times += number(double(i) / frames, 6);
+  for (double f : frames) {
+    if (!key_times.empty()) key_times += ';';
+    key_times += number(f / count, key_decimals + 6);
   }
-  const std::string timing = "dur=\"" + number(frames / out.fps, 6) + "s\" repeatCount=\"indefinite\" calcMode=\"" +
-                             (linear ? "linear" : "discrete") + "\" keyTimes=\"" + key_times + "\"";
-  const double art_per_unit = 1.0 / art_frame.scale;
+  return "dur=\"" + number(count / fps, 6) + "s\" repeatCount=\"indefinite\" calcMode=\"" +
+         (interpolation == Interpolation::linear ? "linear" : "discrete") + "\" keyTimes=\"" + key_times + "\"";
+}
 
+// A path's own d and stroke width are its first key's, what a reader without SMIL shows; <animate> moves
+// them through the keys.
+void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& path, int p, const ElementKeys& keys,
+                         const std::string& shape_timing, const std::string& stroke_timing) {
+  const bool strokes = path.stroke.enabled && path.stroke_width > 0;
+  auto stroke_width = [&](std::size_t k) {
+    return view.n(path.stroke_width * keys.stroke_scales[k] / view.frame.scale);
+  };
+  svg << "<path d=\"";
+  write_svg_path_data(svg, view, path, keys.points[0][p]);
+  svg << "\"" << svg_paint(path, stroke_width(0));
+  if (keys.frames.size() == 1) {
+    svg << "/>\n";
+    return;
+  }
+  svg << ">\n<animate attributeName=\"d\" " << shape_timing << " values=\"";
+  for (std::size_t k = 0; k < keys.frames.size(); ++k) {
+    if (k) svg << ';';
+    write_svg_path_data(svg, view, path, keys.points[k][p]);
+  }
+  svg << "\"/>\n";
+  if (strokes) {
+    svg << "<animate attributeName=\"stroke-width\" " << stroke_timing << " values=\"";
+    for (std::size_t k = 0; k < keys.stroke_frames.size(); ++k) svg << (k ? ";" : "") << stroke_width(k);
+    svg << "\"/>\n";
+  }
+  svg << "</path>\n";
+}
+
+}  // namespace
+
+void write_svg_animation(const World& world, const SimState& state, const FrameOutput& out,
+                         const std::vector<std::string>& ids, const std::filesystem::path& file) {
+  std::ofstream svg(file);
+  if (!svg) throw InputError(file.string() + ": cannot write; check that the folder is writable");
+  const SvgView view = svg_view(world, out);
+  write_svg_head(svg, view, world, out.style);
   for (int e = 0; e < int(world.elements.size()); ++e) {
     const ArtShape& art = world.library[world.elements[e].library].art.art;
+    const ElementKeys keys = element_keys(world, state, e, out);
+    const std::string shape_timing = smil_timing(keys.frames, out.count, out.fps, out.interpolation),
+                      stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
     svg << "<g id=\"" << xml_escaped(ids[e]) << "\">\n";
-    for (int p = 0; p < int(art.paths.size()); ++p) {
-      const ArtPath& path = art.paths[p];
-      const bool strokes = path.stroke.enabled && path.stroke_width > 0;
-      auto stroke_width = [&](int i) { return n(path.stroke_width * log.stroke_scale(i, e) * art_per_unit); };
-      // Frame 0 as the path's own attributes: what a reader without SMIL shows.
-      svg << "<path d=\"";
-      write_svg_path_data(svg, log, 0, e, p, path, art_frame, decimals);
-      svg << "\" fill=\"" << (path.fill.enabled ? hex(path.fill.color) : "none") << "\"";
-      if (path.fill.enabled && path.fill.color.a < 1) svg << " fill-opacity=\"" << number(path.fill.color.a, 4) << "\"";
-      if (path.fill_rule == FillRule::evenodd) svg << " fill-rule=\"evenodd\"";
-      if (strokes)
-        svg << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << stroke_width(0)
-            << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
-      if (path.stroke.enabled && path.stroke.color.a < 1)
-        svg << " stroke-opacity=\"" << number(path.stroke.color.a, 4) << "\"";
-      if (path.paint_order == PaintOrder::stroke_then_fill) svg << " paint-order=\"stroke\"";
-      if (frames == 1) {
-        svg << "/>\n";
-        continue;
-      }
-      svg << ">\n<animate attributeName=\"d\" " << timing << " values=\"";
-      for (int i = 0; i < values; ++i) {
-        if (i) svg << ';';
-        write_svg_path_data(svg, log, i % frames, e, p, path, art_frame, decimals);
-      }
-      svg << "\"/>\n";
-      if (strokes) {
-        svg << "<animate attributeName=\"stroke-width\" " << timing << " values=\"";
-        for (int i = 0; i < values; ++i) svg << (i ? ";" : "") << stroke_width(i % frames);
-        svg << "\"/>\n";
-      }
-      svg << "</path>\n";
-    }
+    for (int p = 0; p < int(art.paths.size()); ++p)
+      write_animated_path(svg, view, art.paths[p], p, keys, shape_timing, stroke_timing);
     svg << "</g>\n";
     check_written(svg, file);
   }

@@ -40,14 +40,23 @@ int raster_width(const Box& box, int height) {
   return std::max(1, static_cast<int>(std::lround(height * box.width() / std::max(box.height(), 1e-9))));
 }
 
+ElementArt element_art(const World& world, int element, const std::vector<Vec2>& positions) {
+  const SpacetimeElement& lib = world.library[world.elements[element].library];
+  return {replay_art(lib.binding, lib.slice, positions), element_scale(world, element, positions)};
+}
+
 std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf) {
   std::vector<ElementArt> art(world.elements.size());
-  for (std::size_t i = 0; i < world.elements.size(); ++i) {
-    const SpacetimeElement& lib = world.library[world.elements[i].library];
-    const std::vector<Vec2> positions = element_at(world, state, int(i), tf);
-    art[i] = {replay_art(lib.binding, lib.slice, positions), element_scale(world, int(i), positions)};
-  }
+  for (std::size_t i = 0; i < world.elements.size(); ++i)
+    art[i] = element_art(world, int(i), element_at(world, state, int(i), tf));
   return art;
+}
+
+ArtPoints own_points(const ArtShape& art) {
+  ArtPoints points(art.paths.size());
+  for (std::size_t p = 0; p < art.paths.size(); ++p)
+    for (const Polyline& line : art.paths[p].polylines) points[p].push_back(line.points);
+  return points;
 }
 
 Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style) {
@@ -55,9 +64,10 @@ Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const
   const int height = style.size;
   const int width = raster_width(box, height);
   Picture pic(width, height, box, style.background, 0.02 * style.size);
+  if (style.container == ContainerDrawing::fill) pic.draw_art(world.container.art, own_points(world.container.art));
   for (std::size_t i = 0; i < world.elements.size(); ++i)
     pic.draw_art(world.library[world.elements[i].library].art.art, art[i].points, 1.0, art[i].stroke_scale);
-  if (style.draw_container) {
+  if (style.container == ContainerDrawing::outline) {
     const double w = std::max(1.0, style.size / 400.0);
     pic.draw_ring(world.container.outline, {0.55, 0.55, 0.55, 1}, w);
     for (const auto& hole : world.container.holes) pic.draw_ring(hole, {0.55, 0.55, 0.55, 1}, w);

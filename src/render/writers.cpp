@@ -2,8 +2,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iomanip>
-#include <optional>
 #include <set>
 #include <sstream>
 
@@ -40,7 +40,7 @@ std::string xml_escaped(const std::string& text) {
 // user names (the scene parser rejects repeats), but a guided "star#3" or "container" could still meet
 // another id, so a repeat gets "-2", "-3", … appended.
 std::vector<std::string> element_ids(const World& world) {
-  std::set<std::string> taken{"container", "background"};
+  std::set<std::string> taken{"container", "container-art", "background"};
   std::vector<std::string> ids;
   for (const ElementInstance& e : world.elements) {
     std::string id = e.name;
@@ -51,11 +51,25 @@ std::vector<std::string> element_ids(const World& world) {
   return ids;
 }
 
+std::string svg_paint(const ArtPath& path, const std::string& stroke_width) {
+  std::ostringstream out;
+  out << std::setprecision(4) << " fill=\"" << (path.fill.enabled ? hex(path.fill.color) : "none") << "\"";
+  if (path.fill.enabled && path.fill.color.a < 1) out << " fill-opacity=\"" << path.fill.color.a << "\"";
+  if (path.fill_rule == FillRule::evenodd) out << " fill-rule=\"evenodd\"";
+  if (path.stroke.enabled && path.stroke_width > 0)
+    out << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << stroke_width
+        << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+  if (path.stroke.enabled && path.stroke.color.a < 1) out << " stroke-opacity=\"" << path.stroke.color.a << "\"";
+  if (path.paint_order == PaintOrder::stroke_then_fill) out << " paint-order=\"stroke\"";
+  return out.str();
+}
+
 }  // namespace frame_writers
 
 namespace {
 
 using frame_writers::hex;
+using frame_writers::svg_paint;
 using frame_writers::xml_escaped;
 
 std::string frame_name(int i, const char* ext) {
@@ -77,9 +91,53 @@ void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& po
   }
 }
 
+// One art path: its polylines mapped by `to`, its paint, strokes `stroke_width` wide.
+template <class Map>
+void write_svg_path(std::ostream& out, const ArtPath& path, const std::vector<std::vector<Vec2>>& points, Map to,
+                    double stroke_width) {
+  std::vector<bool> closed;
+  for (const Polyline& line : path.polylines) closed.push_back(line.closed);
+  std::ostringstream width;
+  width << std::setprecision(10) << stroke_width;
+  out << "<path d=\"";
+  write_path_data(out, points, closed, to);
+  out << "\"" << svg_paint(path, width.str()) << "/>\n";
+}
+
+// The backdrop (none when the background is transparent), the container's art when it is filled, and the
+// container (outline and holes, even–odd), stroked grey when it is outlined.
+void write_svg_container(std::ostream& out, const World& world, const FrameStyle& style, double x, double y, double w,
+                         double h) {
+  auto to_art = [&](Vec2 p) { return world.container.frame.to_art(p); };
+  if (style.background.a > 0) {
+    out << "<rect id=\"background\" x=\"" << x << "\" y=\"" << y << "\" width=\"" << w << "\" height=\"" << h
+        << "\" fill=\"" << hex(style.background) << "\"";
+    if (style.background.a < 1) out << " fill-opacity=\"" << style.background.a << "\"";
+    out << "/>\n";
+  }
+  if (style.container == ContainerDrawing::fill) {
+    const ArtShape& art = world.container.art;
+    const ArtPoints points = own_points(art);
+    out << "<g id=\"container-art\">\n";
+    for (std::size_t p = 0; p < art.paths.size(); ++p)
+      write_svg_path(out, art.paths[p], points[p], to_art, art.paths[p].stroke_width / world.container.frame.scale);
+    out << "</g>\n";
+  }
+  std::vector<std::vector<Vec2>> rings{world.container.outline};
+  rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
+  out << "<path id=\"container\" d=\"";
+  write_path_data(out, rings, std::vector<bool>(rings.size(), true), to_art);
+  out << "\" fill-rule=\"evenodd\" fill=\"none\"";
+  // draw_frame's grey line, max(1, size / 400) pixels wide.
+  if (style.container == ContainerDrawing::outline)
+    out << " stroke=\"#8c8c8c\" stroke-width=\"" << std::max(1.0, style.size / 400.0) * h / style.size << "\"";
+  else out << " stroke=\"none\"";
+  out << "/>\n";
+}
+
 // One SVG frame in the container art's coordinates, so that it lays over the container's own art: the
-// container (outline and holes, even–odd) first, then one group per element, id its name, holding its
-// paths in drawing order with their paint. Strokes have round joins and caps as draw_art paints them.
+// container first, then one group per element, id its name, holding its paths in drawing order with their
+// paint. Strokes have round joins and caps as draw_art paints them.
 void write_svg(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style,
                const std::vector<std::string>& ids, const std::filesystem::path& file) {
   std::ofstream out(file);
@@ -91,45 +149,16 @@ void write_svg(const World& world, const std::vector<ElementArt>& art, const Fra
   // The margin of draw_frame's pictures: 2 % of the height on every side.
   const double margin = 0.02 * box.height();
   const double x = box.min.x - margin, y = box.min.y - margin, w = box.width() + 2 * margin, h = box.height() + 2 * margin;
-  const double art_per_unit = 1.0 / frame.scale;
   out << std::setprecision(10);
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x << ' ' << y << ' ' << w << ' ' << h
       << "\" width=\"" << raster_width({{x, y}, {x + w, y + h}}, style.size) << "\" height=\"" << style.size << "\">\n";
-  out << "<rect id=\"background\" x=\"" << x << "\" y=\"" << y << "\" width=\"" << w << "\" height=\"" << h
-      << "\" fill=\"" << hex(style.background) << "\"/>\n";
-
-  std::vector<std::vector<Vec2>> rings{world.container.outline};
-  rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
-  out << "<path id=\"container\" d=\"";
-  write_path_data(out, rings, std::vector<bool>(rings.size(), true), to_art);
-  out << "\" fill-rule=\"evenodd\" fill=\"none\"";
-  // draw_frame's grey line, max(1, size / 400) pixels wide.
-  if (style.draw_container)
-    out << " stroke=\"#8c8c8c\" stroke-width=\"" << std::max(1.0, style.size / 400.0) * h / style.size << "\"";
-  else out << " stroke=\"none\"";
-  out << "/>\n";
-
+  write_svg_container(out, world, style, x, y, w, h);
   for (std::size_t i = 0; i < world.elements.size(); ++i) {
-    const SpacetimeElement& lib = world.library[world.elements[i].library];
-    const double stroke_scale = art[i].stroke_scale * art_per_unit;
-    const ArtPoints& points = art[i].points;
+    const ArtShape& shape = world.library[world.elements[i].library].art.art;
     out << "<g id=\"" << xml_escaped(ids[i]) << "\">\n";
-    for (std::size_t p = 0; p < lib.art.art.paths.size(); ++p) {
-      const ArtPath& path = lib.art.art.paths[p];
-      std::vector<bool> closed;
-      for (const Polyline& line : path.polylines) closed.push_back(line.closed);
-      out << "<path d=\"";
-      write_path_data(out, points[p], closed, to_art);
-      out << "\" fill=\"" << (path.fill.enabled ? hex(path.fill.color) : "none") << "\"";
-      if (path.fill.enabled && path.fill.color.a < 1) out << " fill-opacity=\"" << path.fill.color.a << "\"";
-      if (path.fill_rule == FillRule::evenodd) out << " fill-rule=\"evenodd\"";
-      if (path.stroke.enabled && path.stroke_width > 0)
-        out << " stroke=\"" << hex(path.stroke.color) << "\" stroke-width=\"" << path.stroke_width * stroke_scale
-            << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
-      if (path.stroke.enabled && path.stroke.color.a < 1) out << " stroke-opacity=\"" << path.stroke.color.a << "\"";
-      if (path.paint_order == PaintOrder::stroke_then_fill) out << " paint-order=\"stroke\"";
-      out << "/>\n";
-    }
+    for (std::size_t p = 0; p < shape.paths.size(); ++p)
+      write_svg_path(out, shape.paths[p], art[i].points[p], to_art,
+                     shape.paths[p].stroke_width * art[i].stroke_scale / frame.scale);
     out << "</g>\n";
   }
   out << "</svg>\n";
@@ -160,10 +189,40 @@ std::string quoted(const std::filesystem::path& p) {
 std::string animation_file_name(FrameFormat format) {
   switch (format) {
     case FrameFormat::lottie: return "animation.json";
+    case FrameFormat::dotlottie: return "animation.lottie";
     case FrameFormat::svg_anim: return "animation.svg";
     default: return "";
   }
 }
+
+namespace {
+
+// The GIF palette keeps one entry for transparency when the background is transparent, and pixels less
+// than half opaque take it (GIF has no partial alpha).
+void write_gif(const std::string& input, const FrameOutput& out) {
+  const auto gif = out.dir / "animation.gif";
+  const bool transparent = out.style.background.a < 1;
+  run_ffmpeg(input + " -filter_complex \"[0:v]split[a][b];[a]palettegen=reserve_transparent=" +
+                 (transparent ? "1" : "0") + "[p];[b][p]paletteuse" + (transparent ? "=alpha_threshold=128" : "") +
+                 "\" -loop 0 " + quoted(gif),
+             gif);
+}
+
+void write_animations(const World& world, const SimState& state, const FrameOutput& out,
+                      const std::vector<std::string>& ids, const std::function<bool(FrameFormat)>& wants) {
+  if (wants(FrameFormat::lottie)) {
+    const auto file = out.dir / animation_file_name(FrameFormat::lottie);
+    std::ofstream json(file);
+    if (!json) throw InputError(file.string() + ": cannot write; check that the folder is writable");
+    frame_writers::write_lottie(world, state, out, ids, json, file);
+  }
+  if (wants(FrameFormat::dotlottie))
+    frame_writers::write_dotlottie(world, state, out, ids, out.dir / animation_file_name(FrameFormat::dotlottie));
+  if (wants(FrameFormat::svg_anim))
+    frame_writers::write_svg_animation(world, state, out, ids, out.dir / animation_file_name(FrameFormat::svg_anim));
+}
+
+}  // namespace
 
 PackingQuality write_frames(const World& world, const SimState& state, const FrameOutput& out) {
   auto wants = [&](FrameFormat f) { return std::find(out.formats.begin(), out.formats.end(), f) != out.formats.end(); };
@@ -172,8 +231,6 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   // frames/ holds the PNG and SVG frames; the animated vector formats alone leave no empty folder.
   std::filesystem::create_directories(raster || wants(FrameFormat::svg) ? frames : out.dir);
   const std::vector<std::string> ids = frame_writers::element_ids(world);
-  std::optional<frame_writers::GeometryLog> log;
-  if (wants(FrameFormat::lottie) || wants(FrameFormat::svg_anim)) log.emplace(world, out.dir / "animation.geometry.tmp");
   PackingQuality quality;
   const std::vector<double> times = frame_times(out.count, world.loop);
   for (int i = 0; i < out.count; ++i) {
@@ -181,24 +238,14 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
     const std::vector<ElementArt> art = frame_art(world, state, times[i]);
     if (raster) draw_frame(world, art, out.style).write(frames / frame_name(i, "png"));
     if (wants(FrameFormat::svg)) write_svg(world, art, out.style, ids, frames / frame_name(i, "svg"));
-    if (log) log->append(art, i);
     quality.frames.push_back(measure_frame(world, art, times[i]));
   }
-  if (wants(FrameFormat::lottie))
-    frame_writers::write_lottie(world, *log, out, ids, out.dir / animation_file_name(FrameFormat::lottie));
-  if (wants(FrameFormat::svg_anim))
-    frame_writers::write_svg_animation(world, *log, out, ids, out.dir / animation_file_name(FrameFormat::svg_anim));
-  log.reset();
+  write_animations(world, state, out, ids, wants);
   for (double t : between_slice_times(world.params.element.slices)) quality.between_slices.push_back(measure_frame(world, state, t));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");
-  if (wants(FrameFormat::gif)) {
-    const auto gif = out.dir / "animation.gif";
-    run_ffmpeg(input + " -filter_complex \"[0:v]split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse\" " +
-                   "-loop 0 " + quoted(gif),
-               gif);
-  }
+  if (wants(FrameFormat::gif)) write_gif(input, out);
   if (wants(FrameFormat::mp4)) {
     const auto mp4 = out.dir / "animation.mp4";
     run_ffmpeg(input + " -vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white\" -c:v libx264 -pix_fmt yuv420p " + quoted(mp4),

@@ -102,6 +102,13 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
       throw InputError(where(art, hole_indices[i]) + ": the hole is not inside the container outline");
     c.holes.push_back(std::move(ring));
   }
+  c.art = art;
+  for (ArtPath& path : c.art.paths) {
+    for (Polyline& line : path.polylines)
+      for (Vec2& p : line.points) p = c.frame.to_unit(p);
+    path.stroke_width *= c.frame.scale;
+  }
+  c.art.viewport.reset();
   return c;
 }
 

@@ -252,7 +252,6 @@ TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and anim
     CHECK_THAT(packed.err, Contains((out / name).string() + " (") && Contains("KiB, 4 frames)"));
   }
   CHECK_FALSE(fs::exists(out / "frames"));  // no PNG or SVG frames, and no empty folder for them
-  CHECK_FALSE(fs::exists(out / "animation.geometry.tmp"));  // the scratch file is gone
   const nlohmann::json lottie = nlohmann::json::parse(read_text(out / "animation.json"));
   CHECK(lottie["op"] == 4);
   CHECK(lottie["h"] == 48);
@@ -272,4 +271,32 @@ TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and anim
   CHECK(points > 0);
   CHECK(fractional == 0);
   CHECK(run_animpak("render " + out.string() + " --format lottie --interpolation smooth").code != 0);
+}
+
+TEST_CASE("animpak render --background, --container and --format dotlottie, and --no-container is --container none") {
+  const Sandbox box("background");
+  const fs::path out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out.string() + " --max-iterations 10 --no-render").code == 0);
+  const CommandResult none = run_animpak("render " + out.string() +
+                                         " --frames 2 --size 48 --format png,gif,lottie,dotlottie --background none");
+  INFO(none.err);
+  REQUIRE(none.code == 0);
+  CHECK_THAT(none.err, Contains((out / "animation.lottie").string() + " ("));
+  CHECK(fs::is_regular_file(out / "animation.gif"));  // ffmpeg took the transparent palette
+  CHECK_THAT(read_text(out / "animation.json"), !Contains("\"ty\":1,"));
+  const CommandResult dark = run_animpak("render " + out.string() +
+                                         " --frames 2 --size 48 --format lottie --background '#1e1e1e' --container fill");
+  INFO(dark.err);
+  REQUIRE(dark.code == 0);
+  CHECK_THAT(read_text(out / "animation.json"), Contains("\"sc\":\"#1e1e1e\""));
+  REQUIRE(run_animpak("render " + out.string() + " --frames 2 --size 48 --format lottie --no-container").code == 0);
+  CHECK_THAT(read_text(out / "animation.json"), !Contains("\"nm\":\"container\""));
+
+  const CommandResult colour = run_animpak("render " + out.string() + " --format lottie --background red");
+  CHECK(colour.code == 1);
+  CHECK_THAT(colour.err, Contains("--background red: expected white, none or a colour #rrggbb"));
+  const CommandResult mp4 = run_animpak("render " + out.string() + " --format mp4 --background none");
+  CHECK(mp4.code == 1);
+  CHECK_THAT(mp4.err, Contains("MP4 (H.264) has no transparency"));
+  CHECK(run_animpak("render " + out.string() + " --format lottie --no-container --container fill").code == 1);
 }

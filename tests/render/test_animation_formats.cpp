@@ -1,7 +1,8 @@
 // The animated vector formats against the players people use: the Lottie document drawn by rlottie and the
 // SMIL-animated SVG drawn by headless Chromium, paused at a frame's time, must cover what animpak's own PNG
-// frame of that index covers (alpha masks' intersection over union ≥ 0.97); the Lottie document passes a
-// schema check; every path keeps its layout from frame to frame or the export refuses it.
+// frame of that index covers (alpha masks' intersection over union ≥ 0.97, ≥ 0.99 at frames between two
+// slices when keyed at the slices); the Lottie document passes a schema check; the keys sit at each element's
+// own slice times; the background and container options; the dotLottie zip.
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -52,8 +53,24 @@ FrameOutput animated_output(const fs::path& dir, std::vector<FrameFormat> format
   out.formats = std::move(formats);
   out.style.size = 320;
   out.style.background = {1, 1, 1, 0};
-  out.style.draw_container = false;
+  out.style.container = ContainerDrawing::none;
   return out;
+}
+
+// The tiny world with element 0's slice 1 moved from t = 1/3 to t = 1/4 (frame 1.5 of 6): slices drift
+// from their rest times when packed, each element's its own way.
+SimState drifted_state(const World& world) {
+  SimState state = world.state;
+  const SpacetimeElement& lib = world.library[world.elements[0].library];
+  const int P = lib.vertices_per_slice(), first = world.elements[0].vertex_begin + P;
+  for (int v = 0; v < P; ++v) state.t[first + v] = 0.25f;
+  return state;
+}
+
+std::vector<double> key_times(const nlohmann::json& property) {
+  std::vector<double> times;
+  for (const auto& key : property["k"]) times.push_back(key["t"]);
+  return times;
 }
 
 std::string frame_png(int i) {
@@ -66,12 +83,12 @@ bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1")
 
 }  // namespace
 
-TEST_CASE("lottie: animation.json passes the schema check, one layer per element named by its id, N + 1 keys per path ending on frame 0") {
+TEST_CASE("lottie: animation.json passes the schema check, one layer per element named by its id, one key per slice ending on frame N") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "lottie";
   FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::lottie});
-  out.style.draw_container = true;
+  out.style.container = ContainerDrawing::outline;
   write_frames(world, world.state, out);
   const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
   const std::vector<std::string> errors = lottie_schema::errors(doc);
@@ -95,9 +112,9 @@ TEST_CASE("lottie: animation.json passes the schema check, one layer per element
   const nlohmann::json& shape = doc["layers"][1]["shapes"][0]["it"][0];
   REQUIRE(shape["ty"] == "sh");
   const nlohmann::json& keys = shape["ks"]["k"];
-  REQUIRE(keys.size() == kFrames + 1);
-  CHECK(keys[kFrames]["t"] == kFrames);
-  CHECK(keys[kFrames]["s"] == keys[0]["s"]);
+  // The 4 slices at t = 0, 1/3, 2/3 and 1: frames 0, 2, 4 and 6, the last wrapping onto frame 0.
+  REQUIRE(keys.size() == std::size_t(world.params.element.slices));
+  CHECK(key_times(shape["ks"]) == std::vector<double>{0, 2, 4, 6});
   CHECK(keys[1]["s"] != keys[0]["s"]);  // the stars rotate
   for (const auto& zero : keys[0]["s"][0]["i"]) CHECK(zero == nlohmann::json::array({0, 0}));
 }
@@ -182,7 +199,7 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
 #endif
 }
 
-TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpak's PNG frames, alpha IoU at least 0.97") {
+TEST_CASE("svg-anim and Chromium: paused at five frames' times, at slices and between them, it covers animpak's PNG frames, alpha IoU at least 0.97") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
   const World world = big_star_world();
@@ -191,7 +208,8 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
   const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
   write_frames(world, world.state, out);
   const std::string svg = text_of(dir / "animation.svg");
-  for (int i : {0, kFrames / 3, 2 * kFrames / 3}) {
+  // Frames 1 and 3 lie between two slices.
+  for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
     const Image ours = read_rgba(dir / "frames" / frame_png(i));
     // The SVG inline, so that the page's script reaches its timeline: paused at frame i's time.
     const fs::path page = dir / ("frame" + std::to_string(i) + ".html"), shot = dir / ("chromium" + std::to_string(i) + ".png");
@@ -216,7 +234,7 @@ TEST_CASE("svg-anim and Chromium: paused at three frames' times it covers animpa
   }
 }
 
-TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over N + 1 values ending on frame 0, one cycle N / fps long") {
+TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over its slices, keyTimes at their times, one cycle N / fps long") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "svg-anim";
@@ -238,18 +256,18 @@ TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over N + 1 va
   std::smatch m;
   REQUIRE(std::regex_search(svg, m, animate));
   CHECK(m[1] == "0.24s");  // 6 frames at 25 per second
-  CHECK(m[2] == "0;0.166667;0.333333;0.5;0.666667;0.833333;1");
+  CHECK(m[2] == "0;0.3333333333;0.6666666667;1");  // the 4 slices' times
   std::vector<std::string> values;
   std::stringstream list(m[3]);
   for (std::string v; std::getline(list, v, ';');) values.push_back(v);
-  REQUIRE(values.size() == kFrames + 1);
-  CHECK(values.back() == values.front());
+  REQUIRE(values.size() == std::size_t(world.params.element.slices));
   CHECK(values[1] != values[0]);
 
   out.interpolation = Interpolation::hold;
   write_frames(world, world.state, out);
   const std::string held = text_of(dir / "animation.svg");
-  CHECK_THAT(held, Contains("calcMode=\"discrete\" keyTimes=\"0;0.166667;0.333333;0.5;0.666667;0.833333\""));
+  CHECK_THAT(held, Contains("calcMode=\"discrete\" keyTimes=\"0;0.1666666667;0.3333333333;0.5;0.6666666667;"
+                            "0.8333333333\""));
 }
 
 TEST_CASE("animated formats: --precision sets the decimals of a pixel kept") {
@@ -276,46 +294,148 @@ TEST_CASE("animated formats: --precision sets the decimals of a pixel kept") {
   CHECK(fs::file_size(dir / "animation.json") > coarse);
 }
 
-TEST_CASE("animated formats: a frame whose replayed art lost a path, polyline or point is refused, naming element and frame") {
+TEST_CASE("lottie: keyed at each element's own slice times, a fraction of the per-frame keys' size") {
   const World world = big_star_world();
+  const SimState state = drifted_state(world);
   const animpak::test::TempDir temp("animpak-animation-");
-  const auto dir = temp / "layout";
-  fs::create_directories(dir);
-  const std::vector<ElementArt> good = frame_art(world, world.state, 0.0);
-  auto append_twice = [&](const std::vector<ElementArt>& second) {
-    frame_writers::GeometryLog log(world, dir / "scratch");
-    log.append(good, 0);
-    log.append(second, 1);
-  };
-  CHECK_NOTHROW(append_twice(good));
-  std::vector<ElementArt> broken = good;
-  broken[1].points[0][0].pop_back();
-  CHECK_THROWS_WITH(append_twice(broken), Contains("element " + world.elements[1].name + ", frame 1, path") &&
-                                              Contains("polyline 0:") && Contains("points replayed"));
-  broken = good;
-  broken[2].points[0].clear();
-  CHECK_THROWS_WITH(append_twice(broken), Contains("element " + world.elements[2].name + ", frame 1") &&
-                                              Contains("0 polylines replayed"));
-  broken = good;
-  broken[0].points.clear();
-  CHECK_THROWS_WITH(append_twice(broken), Contains("0 paths replayed"));
-  CHECK_FALSE(fs::exists(dir / "scratch"));  // the scratch file goes with the log
+  const auto dir = temp / "slices";
+  FrameOutput out = animated_output(dir, {FrameFormat::lottie});
+  out.count = 60;
+  write_frames(world, state, out);
+  const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
+  CHECK(lottie_schema::errors(doc).empty());
+  const std::size_t elements = world.elements.size();
+  REQUIRE(doc["layers"].size() == elements);
+  // Layers from the last element down; element 0's slice 1 sits at t = 1/4, frame 15 of 60.
+  const nlohmann::json& first = doc["layers"][elements - 1]["shapes"][0]["it"][0]["ks"];
+  CHECK(key_times(first) == std::vector<double>{0, 15, 40, 60});
+  CHECK(key_times(doc["layers"][0]["shapes"][0]["it"][0]["ks"]) == std::vector<double>{0, 20, 40, 60});
+  const auto sliced = fs::file_size(dir / "animation.json");
+  // The frames' keys, one per frame: 60 against 4.
+  out.interpolation = Interpolation::hold;
+  write_frames(world, state, out);
+  CHECK(double(sliced) < 0.2 * double(fs::file_size(dir / "animation.json")));
 }
 
-TEST_CASE("animated formats: the scratch file gives back every frame's coordinates and stroke scale") {
+TEST_CASE("lottie: a world that does not loop holds its last slice from frame N - 1 to N") {
+  World world = big_star_world();
+  world.loop = false;
+  FrameOutput out = animated_output("unused", {FrameFormat::lottie});
+  out.count = 7;
+  const frame_writers::ElementKeys keys = frame_writers::element_keys(world, world.state, 0, out);
+  // Frame i at t = i / 6: the slices at frames 0, 2, 4 and 6, then a key at 7 holding the last.
+  CHECK(keys.frames == std::vector<double>{0, 2, 4, 6, 7});
+  CHECK(keys.points[4] == keys.points[3]);
+  out.count = 1;
+  CHECK(frame_writers::element_keys(world, world.state, 0, out).frames == std::vector<double>{0});
+}
+
+TEST_CASE("lottie and rlottie: keyed at drifted slices, every frame, between slices too, covers the PNG frame, IoU at least 0.99") {
+#ifndef ANIMPAK_HAVE_RLOTTIE
+  animpak::test::skip("rlottie was not found when the build was configured (Debian package librlottie-dev); "
+                      "nothing was compared");
+#else
+  const World world = big_star_world();
+  const SimState state = drifted_state(world);
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "rlottie-between";
+  write_frames(world, state, animated_output(dir, {FrameFormat::png, FrameFormat::lottie}));
+  const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
+  REQUIRE(doc["layers"][world.elements.size() - 1]["shapes"][0]["it"][0]["ks"]["k"].size() == 4);
+  // Element 0's keys at frames 0, 1.5, 4 and 6, the others' at 0, 2, 4 and 6: frames 1, 3 and 5 lie between
+  // two slices of every element, frame 2 between two of element 0's.
+  for (int i = 0; i < kFrames; ++i) {
+    const PlayerFrame theirs = rlottie_frame(dir / "animation.json", std::size_t(i));
+    REQUIRE(theirs.error.empty());
+    const Image ours = read_rgba(dir / "frames" / frame_png(i));
+    const double iou = alpha_iou(ours, Image{theirs.width, theirs.height, theirs.rgba});
+    INFO("frame " << i << ": IoU " << iou);
+    CHECK(iou >= 0.99);
+  }
+#endif
+}
+
+TEST_CASE("background none: transparent PNG corners, no Lottie solid layer, no SVG backdrop, and a colour fills all three") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
-  const auto dir = temp / "scratch";
-  fs::create_directories(dir);
-  frame_writers::GeometryLog log(world, dir / "scratch");
-  std::vector<std::vector<ElementArt>> frames;
-  for (int i = 0; i < 3; ++i) {
-    frames.push_back(frame_art(world, world.state, i / 3.0));
-    log.append(frames.back(), i);
+  const auto dir = temp / "background";
+  FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
+  out.style.container = ContainerDrawing::outline;
+  auto has_solid_layer = [&] {
+    const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
+    return std::any_of(doc["layers"].begin(), doc["layers"].end(), [](const auto& l) { return l["ty"] == 1; });
+  };
+  out.style.background = {1, 1, 1, 0};
+  write_frames(world, world.state, out);
+  CHECK(read_rgba(dir / "frames" / frame_png(0)).rgba[3] == 0);
+  CHECK_FALSE(has_solid_layer());
+  CHECK_THAT(text_of(dir / "frames" / "frame_0000.svg"), !Contains("id=\"background\""));
+  CHECK_THAT(text_of(dir / "animation.svg"), !Contains("id=\"background\""));
+
+  out.style.background = {30 / 255.0, 30 / 255.0, 30 / 255.0, 1};
+  write_frames(world, world.state, out);
+  const Image png = read_rgba(dir / "frames" / frame_png(0));
+  CHECK(std::vector<int>(png.rgba.begin(), png.rgba.begin() + 4) == std::vector<int>{30, 30, 30, 255});
+  CHECK(has_solid_layer());
+  CHECK_THAT(text_of(dir / "animation.json"), Contains("\"sc\":\"#1e1e1e\""));
+  CHECK_THAT(text_of(dir / "frames" / "frame_0000.svg"), Contains("<rect id=\"background\"") && Contains("fill=\"#1e1e1e\""));
+  CHECK_THAT(text_of(dir / "animation.svg"), Contains("<rect id=\"background\"") && Contains("fill=\"#1e1e1e\""));
+}
+
+TEST_CASE("container fill: its art painted under the elements in the PNG, the SVG frames, Lottie and animated SVG") {
+  const World world = big_star_world();
+  REQUIRE_FALSE(world.container.art.paths.empty());
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "container";
+  FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
+  auto opaque_pixels = [&] {
+    const Image png = read_rgba(dir / "frames" / frame_png(0));
+    std::size_t n = 0;
+    for (std::size_t i = 3; i < png.rgba.size(); i += 4) n += png.rgba[i] > 127;
+    return n;
+  };
+  write_frames(world, world.state, out);
+  const std::size_t elements_only = opaque_pixels();
+  out.style.container = ContainerDrawing::fill;
+  write_frames(world, world.state, out);
+  // The heart's art, a black stroke, is painted too.
+  CHECK(opaque_pixels() > elements_only + 500);
+  const Image png = read_rgba(dir / "frames" / frame_png(0));
+  const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
+  CHECK(lottie_schema::errors(doc).empty());
+  CHECK(doc["layers"].back()["nm"] == "container");  // the bottom layer: the background is transparent
+  CHECK(doc["layers"][0]["nm"] != "container");
+  for (const fs::path& file : {dir / "frames" / "frame_0000.svg", dir / "animation.svg"}) {
+    const std::string svg = text_of(file);
+    INFO(file);
+    CHECK(svg.find("<g id=\"container-art\">") < svg.find("<path id=\"container\""));
+    CHECK_THAT(svg, Contains("<path id=\"container\"") && Contains("stroke=\"none\"/>"));
   }
-  for (int i = 2; i >= 0; --i)
-    for (int e = 0; e < int(world.elements.size()); ++e) {
-      CHECK(log.stroke_scale(i, e) == frames[i][e].stroke_scale);
-      CHECK(log.points(i, e, 0, 0) == frames[i][e].points[0][0]);
-    }
+#ifdef ANIMPAK_HAVE_RLOTTIE
+  const PlayerFrame theirs = rlottie_frame(dir / "animation.json", 0);
+  REQUIRE(theirs.error.empty());
+  CHECK(alpha_iou(png, Image{theirs.width, theirs.height, theirs.rgba}) >= 0.99);
+#endif
+}
+
+TEST_CASE("dotlottie: animation.lottie is a zip of manifest.json and animations/animation.json, the Lottie document") {
+  if (std::system("command -v python3 >/dev/null 2>&1") != 0)
+    return animpak::test::skip("python3 is not on PATH; the zip was not opened");
+  const World world = big_star_world();
+  const animpak::test::TempDir temp("animpak-animation-");
+  const auto dir = temp / "dotlottie";
+  write_frames(world, world.state, animated_output(dir, {FrameFormat::lottie, FrameFormat::dotlottie}));
+  // Python's zipfile checks every entry's CRC (testzip) and unpacks both files beside it.
+  const std::string command = "python3 -c \"import sys, zipfile; z = zipfile.ZipFile(sys.argv[1]); "
+                              "assert z.testzip() is None; print(' '.join(z.namelist())); z.extractall(sys.argv[2])\" '" +
+                              (dir / "animation.lottie").string() + "' '" + (dir / "unzipped").string() + "' > '" +
+                              (dir / "names.txt").string() + "'";
+  REQUIRE(std::system(command.c_str()) == 0);
+  CHECK(text_of(dir / "names.txt") == "manifest.json animations/animation.json\n");
+  const nlohmann::json manifest = nlohmann::json::parse(text_of(dir / "unzipped" / "manifest.json"));
+  CHECK(manifest["animations"][0]["id"] == "animation");
+  CHECK(manifest["activeAnimationId"] == "animation");
+  CHECK(manifest["generator"] == "animpak " + std::string(animpak::animpak_version));
+  CHECK(text_of(dir / "unzipped" / "animations" / "animation.json") == text_of(dir / "animation.json"));
+  CHECK(fs::file_size(dir / "animation.lottie") < fs::file_size(dir / "animation.json") / 2);
 }

@@ -25,15 +25,6 @@ ArtShape square_art(Paint fill, Paint stroke, double stroke_width, PaintOrder or
   return art;
 }
 
-ArtPoints own_points(const ArtShape& art) {
-  ArtPoints points;
-  for (const ArtPath& p : art.paths) {
-    points.emplace_back();
-    for (const Polyline& l : p.polylines) points.back().push_back(l.points);
-  }
-  return points;
-}
-
 std::array<int, 4> pixel(const std::vector<unsigned char>& rgba, int width, int x, int y) {
   const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
   return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
