@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git clang-format
   # OpenCL: C headers, C++ bindings, ICD loader, the PoCL CPU device, clinfo for diagnosis, and the
   # Oclgrind simulator that checks the kernels (scripts/oclgrind-check.sh; it registers no ICD itself)
   opencl-headers opencl-clhpp-headers ocl-icd-opencl-dev pocl-opencl-icd clinfo oclgrind
@@ -15,6 +15,8 @@ packages=(
   libsvgpp-dev libxml2-dev nlohmann-json3-dev libcli11-dev
   # output: vector rasterisation, image files, video
   libcairo2-dev libopenimageio-dev ffmpeg
+  # the deflate of the dotLottie container (animation.lottie, a zip)
+  zlib1g-dev
   # tests: Catch2 v2, the real-world SVG test bed, and rsvg-convert, the renderer `animpak check --png` is held to;
   # rlottie and Chromium, the players the Lottie and animated SVG exports are held to; python3-jsonschema,
   # the validator the example scenes are held to against docs/scene.schema.json
