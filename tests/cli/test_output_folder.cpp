@@ -89,7 +89,7 @@ TEST_CASE("animpak pack: refuses a folder holding a packing, --force replaces it
   CHECK_FALSE(fs::exists(out + "/frames"));
 }
 
-TEST_CASE("animpak render: a copied folder renders from input/ after its art is gone; --scene is checked") {
+TEST_CASE("animpak render: a copied folder renders from input/ after its art is gone, and --scene is checked") {
   const ArtBox box("travel");
   const std::string out = box.path("out");
   REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render")
@@ -131,7 +131,7 @@ TEST_CASE("animpak pack --resume: a finished packing is left alone, --seed and S
   CHECK(file_bytes(out + "/state.bin") == state);
 }
 
-TEST_CASE("animpak pack: Ctrl-C prints the resume command; the resumed run continues the count and the clock") {
+TEST_CASE("animpak pack: Ctrl-C prints the resume command, and the resumed run continues the count and the clock") {
   const ArtBox box("interrupt");
   const std::string out = box.path("out");
   // SIGINT after four seconds, well into the simulation of this tiny scene on the reference solver even on
