@@ -99,6 +99,12 @@ TEST_CASE("animpak render: a copied folder renders from input/ after its art is 
   fs::rename(box.path("scenes"), box.path("moved-scenes"));
   fs::rename(box.path("art"), box.path("moved-art"));
   CHECK(run_animpak("render " + box.path("copy") + " --frames 1 --size 16 --format png").code == 0);
+  // A folder without input/ (packed before it existed) says how to point at the scene.
+  fs::copy(out, box.path("old"), fs::copy_options::recursive);
+  fs::remove_all(box.path("old") + "/input");
+  const CommandResult old = run_animpak("render " + box.path("old") + " --frames 1 --size 16 --format png");
+  CHECK(old.code == 2);
+  CHECK_THAT(old.err, Contains("heart.path") && Contains("--scene FILE"));
 
   // --scene: the moved scene with its art beside it renders; an edited art file is refused unless forced.
   fs::rename(box.path("moved-art"), box.path("art"));
