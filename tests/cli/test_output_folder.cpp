@@ -11,6 +11,7 @@
 #include <iterator>
 #include <string>
 
+#include "packed_folder.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"
 
@@ -156,6 +157,32 @@ TEST_CASE("animpak pack: Ctrl-C prints the resume command, and the resumed run c
   const nlohmann::json after = nlohmann::json::parse(file_bytes(out + "/stats.json"));
   CHECK(after["iterations"].get<int>() > before["iterations"].get<int>());
   CHECK(after["seconds"]["simulation"].get<double>() > before["seconds"]["simulation"].get<double>() + 1.0);
+}
+
+TEST_CASE("install_rendered: an interrupted render leaves the one before whole, a complete one replaces it") {
+  const animpak::test::TempDir dir("animpak-folder-swap-");
+  fs::create_directories(dir / "frames");
+  for (const char* name : {"frames/frame_0000.png", "frames/frame_0001.png", "frames/frame_0001.svg", "animation.gif",
+                           "animation.json", "frames/mine.png", "notes.txt"})
+    std::ofstream(dir / name) << "old";
+  // A render cut off midway: what it wrote stays in the scratch folder, the next one starts it afresh.
+  fs::path scratch = animpak::cli::render_scratch(dir.path());
+  fs::create_directories(scratch / "frames");
+  std::ofstream(scratch / "frames/frame_0000.png") << "cut";
+  CHECK(file_bytes(dir / "frames/frame_0001.png") == "old");
+  scratch = animpak::cli::render_scratch(dir.path());
+  CHECK(fs::is_empty(scratch));
+  fs::create_directories(scratch / "frames");
+  std::ofstream(scratch / "frames/frame_0000.png") << "new";
+  std::ofstream(scratch / "animation.mp4") << "new";
+  animpak::cli::install_rendered(scratch, dir.path());
+  CHECK(file_bytes(dir / "frames/frame_0000.png") == "new");
+  CHECK(file_bytes(dir / "animation.mp4") == "new");
+  for (const char* stale : {"frames/frame_0001.png", "frames/frame_0001.svg", "animation.gif", "animation.json"})
+    CHECK_FALSE(fs::exists(dir / stale));
+  CHECK(file_bytes(dir / "frames/mine.png") == "old");
+  CHECK(file_bytes(dir / "notes.txt") == "old");
+  CHECK_FALSE(fs::exists(scratch));
 }
 
 TEST_CASE("animpak --help: lists exit code 130") {
