@@ -208,9 +208,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   write_checkpoint(out / "state.bin", checkpoint);
   world.state = result.last_good;
   if (inputs) write_inputs(out, *inputs);
-  // Frames of an earlier state must not stay beside this one; a render below swaps in its own.
-  if (!render_frames || result.reason == StopReason::interrupted || result.reason == StopReason::non_finite)
-    remove_rendered(out);
+  // Frames of an earlier state must not stay beside this one, not even while the render below runs.
+  remove_rendered(out);
 
   PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds, backend->name(), driver};
   if (result.reason == StopReason::non_finite) {
