@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,9 +114,14 @@ struct SceneSpec {
 /// e.g. `scene.json: elements[2].animation.keys[0].t: expected a number in [0, 1], got 1.5`.
 SceneSpec load_scene(const std::filesystem::path& file);
 
-/// Same, from text in memory; relative art paths resolve against `base_dir`.
+/// Where an art reference is read from: given the reference as written in the scene and `resolved`, that
+/// reference against the base folder, returns the file to read (a packed folder's copy, docs/output.md).
+using ArtLocator =
+    std::function<std::filesystem::path(const std::string& written, const std::filesystem::path& resolved)>;
+
+/// Same, from text in memory; relative art paths resolve against `base_dir`, then through `locate` if given.
 SceneSpec parse_scene(const std::string& text, const std::filesystem::path& file_for_messages,
-                      const std::filesystem::path& base_dir);
+                      const std::filesystem::path& base_dir, const ArtLocator& locate = {});
 
 /// The JSON Schema (draft 2020-12) of the scene file, written from the tables the parser checks keys,
 /// types and ranges with; docs/scene.schema.json is its output.

@@ -48,7 +48,8 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
   // Packed states: the world rebuilt from the scene inside the checkpoint, at its packed state.
   for (const std::filesystem::path& given : options.states) {
     const std::filesystem::path file = std::filesystem::is_directory(given) ? given / "state.bin" : given;
-    LoadedWorld loaded = world_from_checkpoint(read_checkpoint(file), true);
+    const Checkpoint checkpoint = read_checkpoint(file);
+    LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed_scene(file.parent_path(), checkpoint));
     const int elements = static_cast<int>(loaded.world.elements.size());
     worlds.push_back({given.string(), "state", elements, std::move(loaded.world)});
     print_notes(worlds.back());

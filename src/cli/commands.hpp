@@ -61,6 +61,8 @@ struct PackOptions {
   std::optional<std::uint64_t> max_iterations;
   std::string device;  ///< empty: the default rule (first GPU, else PoCL, else the reference)
   std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
+  bool force = false;  ///< overwrite the packing already in `out`
+  std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
 };
 
 /// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
@@ -78,6 +80,8 @@ int devices(const DevicesOptions& options);
 
 struct RenderOptions {
   std::filesystem::path dir;  ///< a folder `animpak pack` wrote
+  std::optional<std::filesystem::path> scene;  ///< the scene and its art elsewhere than DIR/input/
+  bool force = false;  ///< render with a `scene` or art that differs from the packed one
   FrameOptions frames;
 };
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "animpak/checkpoint.hpp"
@@ -28,19 +29,24 @@ std::string clock_text(double seconds) {
   return s;
 }
 
-// Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise.
+// Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise. A resumed run
+// starts at the iteration and the clock where the runs before it stopped.
 class Progress {
  public:
-  Progress(std::uint64_t max_iterations, double stop_gap)
-      : tty_(::isatty(STDERR_FILENO)), max_(max_iterations), stop_gap_(stop_gap), start_(now()) {}
+  Progress(std::uint64_t max_iterations, double stop_gap, std::uint64_t first_iteration, double previous_seconds)
+      : tty_(::isatty(STDERR_FILENO)), max_(max_iterations), first_(first_iteration), stop_gap_(stop_gap),
+        start_(now() - previous_seconds), resumed_at_(previous_seconds) {}
 
   void operator()(const StepStatistics& st) {
     const double elapsed = now() - start_;
     if (!tty_ && elapsed - last_print_ < 5.0) return;
     last_print_ = elapsed;
-    // The estimate extrapolates the largest gap's recent fall towards the stop gap, capped by the
-    // iteration limit: rough, but it moves the right way.
-    double remaining = max_ > st.iteration && st.iteration > 0 ? elapsed * double(max_ - st.iteration) / double(st.iteration) : 0;
+    // The estimate extrapolates this run's pace over the iterations left, and the largest gap's recent fall
+    // towards the stop gap: rough, but it moves the right way.
+    const double run_seconds = elapsed - resumed_at_;
+    double remaining = max_ > st.iteration && st.iteration > first_
+                           ? run_seconds * double(max_ - st.iteration) / double(st.iteration - first_)
+                           : 0;
     if (previous_gap_ > st.max_slice_gap && std::isfinite(previous_gap_) && std::isfinite(st.max_slice_gap)) {
       const double rate = (previous_gap_ - st.max_slice_gap) / std::max(elapsed - previous_time_, 1e-9);
       remaining = std::min(remaining, std::max(0.0, (st.max_slice_gap - stop_gap_) / rate));
@@ -69,10 +75,39 @@ class Progress {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   }
   bool tty_;
-  std::uint64_t max_;
-  double stop_gap_, start_, last_print_ = -1e9;
+  std::uint64_t max_, first_;
+  double stop_gap_, start_, resumed_at_, last_print_ = -1e9;
   double previous_gap_ = std::numeric_limits<double>::infinity(), previous_time_ = 0;
 };
+
+// `path` as one word of a shell command line: quoted when it holds anything but plain path characters.
+std::string shell_word(const std::filesystem::path& path) {
+  const std::string s = path.string();
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./+,:=@") ==
+                        std::string::npos)
+    return s;
+  std::string quoted = "'";
+  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// A packing that stopped on its own (not interrupted) is finished: resuming it would only step it on past
+// its stop, changing it. One stopped by its iteration limit continues under a larger limit.
+bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_iterations) {
+  if (c.stop_reason == "interrupted" || c.stop_reason == "running") return false;
+  return !(c.stop_reason == "max_iterations" && max_iterations && *max_iterations > c.state.iteration);
+}
+
+// The simulation time of the runs before a resume, from their stats.json (0 without one), so that the clock
+// and stats.json count the whole packing.
+double simulation_seconds(const std::filesystem::path& stats) {
+  std::ifstream in(stats);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("seconds") || !j["seconds"].is_object()) return 0.0;
+  const nlohmann::json& seconds = j["seconds"];
+  return seconds.contains("simulation") && seconds["simulation"].is_number() ? seconds["simulation"].get<double>()
+                                                                               : 0.0;
+}
 
 std::string read_whole(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -111,20 +146,43 @@ std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort,
 int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   Checkpoint checkpoint;
   std::filesystem::path out = options.out;
+  std::optional<InputSnapshot> inputs;
+  double previous_seconds = 0.0;
   if (options.resume) {
     out = *options.resume;
     checkpoint = read_checkpoint(out / "state.bin");
+    if (finished(checkpoint, options.max_iterations)) {
+      std::cerr << "animpak: " << out.string() << " holds a finished packing (stopped after "
+                << checkpoint.state.iteration << " iterations: " << checkpoint.stop_reason
+                << "); nothing to resume, nothing changed. `animpak render " << shell_word(out)
+                << "` renders it again"
+                << (checkpoint.stop_reason == "max_iterations" ? "; a larger --max-iterations continues it" : "")
+                << "\n";
+      return 0;
+    }
+    previous_seconds = simulation_seconds(out / "stats.json");
   } else {
+    if (std::filesystem::exists(out / "state.bin") && !options.force)
+      throw UsageError(out.string() + " already holds a packing (" + (out / "state.bin").string() +
+                       "); pass --force to overwrite it, or --resume " + out.string() + " to continue it");
     checkpoint.scene_file = std::filesystem::absolute(options.scene);
     const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
     checkpoint.scene_text = read_whole(checkpoint.scene_file);
     checkpoint.seed = options.seed.value_or(scene.seed);
+    inputs = snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text);
   }
   std::filesystem::create_directories(out);
-  LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value());
+  const PackedScene scene = options.resume ? packed_scene(out, checkpoint)
+                                           : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
+  LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
   World& world = loaded.world;
   if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
-  for (const std::string& note : world.notes) std::cerr << "animpak: " << note << "\n";
+  // A resumed run repeats no set-up report (the seeding it did not do again), only its warnings.
+  for (const std::string& note : world.notes)
+    if (!options.resume || note.rfind("warning:", 0) == 0) std::cerr << "animpak: " << note << "\n";
+  if (options.resume)
+    std::cerr << "animpak: resuming " << (out / "state.bin").string() << " at iteration " << checkpoint.state.iteration
+              << " after " << clock_text(previous_seconds) << "\n";
   std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
             << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
             << " envelope triangles\n";
@@ -132,7 +190,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   std::string driver;
   std::unique_ptr<Backend> backend =
       make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
-  Progress progress(static_cast<std::uint64_t>(world.params.stop.max_iterations), world.params.stop.stop_gap);
+  Progress progress(static_cast<std::uint64_t>(world.params.stop.max_iterations), world.params.stop.stop_gap,
+                    checkpoint.state.iteration, previous_seconds);
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
   control.interrupt = &interrupted;
@@ -142,11 +201,15 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   RunResult result = run_simulation(*backend, world.params, control);
   std::signal(SIGINT, previous);
   progress.finish();
+  result.seconds += previous_seconds;
 
   checkpoint.stop_reason = stop_reason_name(result.reason);
   checkpoint.state = result.last_good;
   write_checkpoint(out / "state.bin", checkpoint);
   world.state = result.last_good;
+  if (inputs) write_inputs(out, *inputs);
+  // Frames of an earlier state must not stay beside this one, not even while the render below runs.
+  remove_rendered(out);
 
   PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds, backend->name(), driver};
   if (result.reason == StopReason::non_finite) {
@@ -172,6 +235,11 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     std::cerr << "animpak: warning: " << result.last.overlapping_vertices << " vertices still overlap another element and "
               << result.last.outside_vertices << " lie outside the container after " << world.params.stop.settle_iterations
               << " settling steps; more slices (top-level \"slices\") or a larger params.settle_iterations may help\n";
+  if (result.reason == StopReason::interrupted) {
+    std::string command = options.program + " pack --resume " + shell_word(out);
+    if (options.max_iterations) command += " --max-iterations " + std::to_string(*options.max_iterations);
+    std::cerr << "animpak: interrupted; continue with: " << command << "\n";
+  }
   if (render_frames && result.reason != StopReason::interrupted) report.quality = render_frames(world, out);
   write_stats(out / "stats.json", report);
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);

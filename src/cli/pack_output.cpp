@@ -21,9 +21,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state) {
+LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state, const PackedScene& packed) {
   const auto start = std::chrono::steady_clock::now();
-  SceneSpec scene = parse_scene(checkpoint.scene_text, checkpoint.scene_file, checkpoint.scene_file.parent_path());
+  SceneSpec scene = parse_scene(packed.text, packed.file, packed.file.parent_path(), packed.locate);
   scene.seed = checkpoint.seed;
   LoadedWorld loaded{make_world(scene), 0.0};
   if (with_state) {
@@ -31,7 +31,7 @@ LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state)
     const SimState& s = checkpoint.state;
     if (s.x.size() != std::size_t(topo.vertex_count()) || s.spring_rest.size() != topo.spring_other.size() ||
         s.growth.size() != std::size_t(topo.slice_count()))
-      throw InputError(checkpoint.scene_file.string() + ": the scene now builds " + std::to_string(topo.vertex_count()) +
+      throw InputError(packed.file.string() + ": the scene now builds " + std::to_string(topo.vertex_count()) +
                        " vertices but the state holds " + std::to_string(s.x.size()) +
                        "; the scene or its art changed since packing, so pack it again");
     loaded.world.state = s;

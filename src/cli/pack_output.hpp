@@ -6,6 +6,7 @@
 #include "animpak/render.hpp"
 #include "animpak/run.hpp"
 #include "commands.hpp"
+#include "packed_folder.hpp"
 
 namespace animpak::cli {
 
@@ -14,9 +15,9 @@ struct LoadedWorld {
   double setup_seconds = 0.0;
 };
 
-/// Rebuilds the world from the scene text inside the checkpoint (set-up is deterministic), and with
-/// `with_state` puts the checkpoint's state in it after checking that the sizes match.
-LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state);
+/// Rebuilds the world from `scene`, normally the scene text inside the checkpoint (set-up is deterministic),
+/// and with `with_state` puts the checkpoint's state in it after checking that the sizes match.
+LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state, const PackedScene& scene);
 
 struct PackReport {
   const World& world;

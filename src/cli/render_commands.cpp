@@ -40,10 +40,11 @@ ContainerDrawing parse_container(const FrameOptions& options) {
   return options.container == "fill" ? ContainerDrawing::fill : ContainerDrawing::outline;
 }
 
-/// Writes the frames in the requested formats into `dir` and returns their quality.
+/// Writes the frames in the requested formats into a scratch folder, swaps them in for every rendered file
+/// already in `dir` and returns their quality.
 PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
   FrameOutput out;
-  out.dir = dir;
+  out.dir = render_scratch(dir);
   out.count = options.frames;
   out.fps = options.fps;
   out.style.size = options.size;
@@ -57,6 +58,7 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
     throw UsageError("--background " + options.background + ": MP4 (H.264) has no transparency; give the MP4 a "
                      "colour (--background white or #rrggbb) or leave mp4 out of --format");
   PackingQuality quality = write_frames(world, world.state, out);
+  install_rendered(out.dir, dir);
   for (FrameFormat f : out.formats) {
     const std::string name = animation_file_name(f);
     if (name.empty()) continue;
@@ -123,6 +125,10 @@ class RenderingFrontend final : public Frontend {
 
     render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
     render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();
+    render_cmd_->add_option("--scene", render_.scene,
+                            "read the scene and its art from this file and the files beside it instead of DIR/input/ "
+                            "(checked against the packed scene and DIR/input/manifest.json's hashes)");
+    render_cmd_->add_flag("--force", render_.force, "render with a --scene or art that differs from the packed one");
     add_frame_options(*render_cmd_, render_.frames);
 
     pack.add_flag("!--no-render", pack_render_, "do not render frames");
@@ -166,7 +172,8 @@ class RenderingFrontend final : public Frontend {
 
 int render(const RenderOptions& options) {
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
-  LoadedWorld loaded = world_from_checkpoint(checkpoint, true);
+  LoadedWorld loaded =
+      world_from_checkpoint(checkpoint, true, packed_scene(options.dir, checkpoint, options.scene, options.force));
   const PackingQuality quality = render_frames(loaded.world, options.dir, options.frames);
   std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
   const std::filesystem::path stats = options.dir / "stats.json";

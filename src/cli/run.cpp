@@ -4,6 +4,8 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
@@ -28,13 +30,16 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
                        program + " " + std::string(animpak_version) + " (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
   app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
-             "that differs from the reference.");
+             "that differs from the reference, 130 pack interrupted by Ctrl-C (state.bin holds the state so far; "
+             "pack --resume DIR continues it).");
 
   PackOptions pack_options;
   CLI::App* pack_cmd = app.add_subcommand("pack", "Pack a scene's animated elements into its container and render it");
   pack_cmd->add_option("SCENE", pack_options.scene, "scene file (.json)");
   pack_cmd->add_option("--out", pack_options.out, "folder for state.bin, stats.json and the frames");
-  pack_cmd->add_option("--resume", pack_options.resume, "continue the packing in this folder");
+  pack_cmd->add_option("--resume", pack_options.resume,
+                       "continue the interrupted packing in this folder (with the scene and seed it started with)");
+  pack_cmd->add_flag("--force", pack_options.force, "overwrite the packing already in --out DIR");
   pack_cmd->add_option("--seed", pack_options.seed, "seed (overrides the scene's)");
   pack_cmd->add_option("--max-iterations", pack_options.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
@@ -109,8 +114,16 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   try {
     app.parse(argc, argv);
     if (pack_cmd->parsed()) {
-      if (pack_options.resume && !pack_options.scene.empty())
-        throw CLI::ValidationError("--resume", "give either SCENE or --resume DIR, not both");
+      std::string refused;
+      const std::pair<bool, const char*> options_given[] = {{!pack_options.scene.empty(), "SCENE"},
+                                                            {!pack_options.out.empty(), "--out"},
+                                                            {pack_options.seed.has_value(), "--seed"},
+                                                            {pack_options.force, "--force"}};
+      for (const auto& [given, name] : options_given)
+        if (pack_options.resume && given) refused += (refused.empty() ? "" : ", ") + std::string(name);
+      if (!refused.empty())
+        throw CLI::ValidationError("--resume", refused + " cannot apply to a resumed packing: it keeps the folder, "
+                                               "scene and seed it started with (state.bin)");
       if (!pack_options.resume && (pack_options.scene.empty() || pack_options.out.empty()))
         throw CLI::ValidationError("SCENE", "pack needs SCENE and --out DIR (or --resume DIR)");
     }
@@ -121,6 +134,7 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   }
 
   try {
+    pack_options.program = program;
     if (pack_cmd->parsed()) return pack(pack_options, frontend->frame_renderer());
     if (bench_cmd->parsed()) return bench(bench_options, frontend->bench_plotter());
     if (devices_cmd->parsed()) return devices(devices_options);

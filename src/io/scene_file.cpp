@@ -35,10 +35,11 @@ using nlohmann::json;
 /// far below anything visible, above the rounding of coordinates typed with a few decimals.
 constexpr double kLoopTolerance = 1e-6;
 
-fs::path resolve_art(const JsonField& field, const fs::path& base_dir) {
+fs::path resolve_art(const JsonField& field, const fs::path& base_dir, const ArtLocator& locate) {
   const std::string text = field.non_empty_string();
   const fs::path given(text);
-  const fs::path resolved = (given.is_absolute() ? given : base_dir / given).lexically_normal();
+  const fs::path beside = (given.is_absolute() ? given : base_dir / given).lexically_normal();
+  const fs::path resolved = locate ? locate(text, beside) : beside;
   std::string extension = resolved.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -52,16 +53,16 @@ fs::path resolve_art(const JsonField& field, const fs::path& base_dir) {
   return resolved;
 }
 
-ContainerSpec read_container(const JsonField& field, const fs::path& base_dir) {
+ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, const ArtLocator& locate) {
   ContainerSpec spec;
   // A bare string is the common case: the container is its art's default outline and holes.
   if (field.json().is_string()) {
-    spec.art = resolve_art(field, base_dir);
+    spec.art = resolve_art(field, base_dir, locate);
     return spec;
   }
   const io_detail::ObjectSpec& format = io_detail::kContainerObject;
   field.check_keys(format.keys());
-  spec.art = resolve_art(field.required("art"), base_dir);
+  spec.art = resolve_art(field.required("art"), base_dir, locate);
   if (auto f = field.optional("outline")) spec.outline = read_integer(*f, format.at("outline"));
   if (auto f = field.optional("holes")) {
     std::vector<int> holes;
@@ -77,7 +78,8 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir) {
   return spec;
 }
 
-std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::path& base_dir) {
+std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::path& base_dir,
+                                               const ArtLocator& locate) {
   const io_detail::ObjectSpec& format = io_detail::kElementObject;
   std::vector<LibraryElementSpec> elements;
   const std::size_t n = field.array_size();
@@ -86,7 +88,7 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
     const JsonField item = field.item(i);
     item.check_keys(format.keys());
     LibraryElementSpec e;
-    e.art = resolve_art(item.required("art"), base_dir);
+    e.art = resolve_art(item.required("art"), base_dir, locate);
     const std::optional<JsonField> name = item.optional("name");
     e.name = name ? name->non_empty_string() : e.art.stem().string();
     for (std::size_t j = 0; j < elements.size(); ++j)
@@ -334,7 +336,8 @@ json parse_json(const std::string& text, const std::string& name) {
 
 }  // namespace
 
-SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages, const fs::path& base_dir) {
+SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages, const fs::path& base_dir,
+                      const ArtLocator& locate) {
   const std::string name = file_for_messages.string();
   const json document = parse_json(text, name);
   const JsonField root(document, name);
@@ -351,8 +354,8 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
 
   SceneSpec scene;
   scene.file = file_for_messages;
-  scene.container = read_container(root.required("container"), base_dir);
-  scene.elements = read_elements(root.required("elements"), base_dir);
+  scene.container = read_container(root.required("container"), base_dir, locate);
+  scene.elements = read_elements(root.required("elements"), base_dir, locate);
   if (auto f = root.optional("loop")) scene.loop = f->boolean();
   // A phase shifts the copy's slices round the loop, so the t = 1 slice must meet the t = 0 one.
   for (std::size_t i = 0; i < scene.elements.size() && !scene.loop; ++i)

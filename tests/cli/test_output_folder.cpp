@@ -1,0 +1,190 @@
+// An output folder is one run, and it travels (README, "The output folder"): a render replaces every
+// rendered file of the run before and nothing else, pack does not overwrite a packing unasked, a copied
+// folder renders from its input/ copies, and a resume refuses what cannot apply and leaves a finished
+// packing alone.
+#include <catch2/catch.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "packed_folder.hpp"
+#include "run_animpak.hpp"
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// A scene whose art sits beside it and one folder up (scenes/scene.json, art/, scenes/star.svg): references
+// a copied output folder can no longer resolve once the art is gone.
+class ArtBox {
+ public:
+  explicit ArtBox(const std::string& name, const std::string& params = "") : dir_("animpak-folder-" + name + "-") {
+    fs::create_directories(dir_ / "scenes");
+    fs::create_directories(dir_ / "art");
+    fs::copy_file(std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/star.svg", dir_ / "scenes/star.svg");
+    fs::copy_file(shapes_dir() + "/heart-container.path", dir_ / "art/heart.path");
+    std::ofstream(dir_ / "scenes/scene.json")
+        << R"({"container": {"art": "../art/heart.path"}, "elements": [{"name": "star", "art": "star.svg",)"
+        << R"( "count": 3}], "seed": 2, "slices": 5, "params": {)" << params << "}}";
+  }
+  std::string scene() const { return (dir_ / "scenes/scene.json").string(); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+ private:
+  animpak::test::TempDir dir_;
+};
+
+std::string file_bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int files_with_extension(const fs::path& dir, const std::string& extension) {
+  int n = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) n += e.path().extension() == extension;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("animpak render: replaces every rendered file of the run before, keeps the user's own") {
+  const ArtBox box("render");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 20 --frames 6"
+                      " --size 32 --format png,svg,gif,lottie,svg-anim").code == 0);
+  std::ofstream(out + "/notes.txt") << "mine";
+  std::ofstream(out + "/frames/mine.txt") << "mine";
+  const CommandResult rendered = run_animpak("render " + out + " --frames 3 --size 16 --format png");
+  REQUIRE(rendered.code == 0);
+  CHECK(files_with_extension(out + "/frames", ".png") == 3);
+  CHECK(files_with_extension(out + "/frames", ".svg") == 0);
+  for (const char* stale : {"animation.gif", "animation.json", "animation.svg", ".render-partial"})
+    CHECK_FALSE(fs::exists(out + "/" + stale));
+  CHECK(file_bytes(out + "/notes.txt") == "mine");
+  CHECK(file_bytes(out + "/frames/mine.txt") == "mine");
+  const nlohmann::json stats = nlohmann::json::parse(file_bytes(out + "/stats.json"));
+  CHECK(stats["frames"].size() == 3);
+}
+
+TEST_CASE("animpak pack: refuses a folder holding a packing, --force replaces it with its frames") {
+  const ArtBox box("force");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 20 --frames 2"
+                      " --size 16 --format png").code == 0);
+  const std::string state = file_bytes(out + "/state.bin");
+  const CommandResult again = run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render");
+  CHECK(again.code == 1);
+  CHECK_THAT(again.err, Contains(out) && Contains("--force") && Contains("--resume"));
+  CHECK(file_bytes(out + "/state.bin") == state);
+  CHECK(fs::exists(out + "/frames/frame_0000.png"));
+  // Overwriting without rendering must not leave the old frames beside the new state.
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render"
+                      " --force").code == 0);
+  CHECK(file_bytes(out + "/state.bin") != state);
+  CHECK_FALSE(fs::exists(out + "/frames"));
+}
+
+TEST_CASE("animpak render: a copied folder renders from input/ after its art is gone, and --scene is checked") {
+  const ArtBox box("travel");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render")
+              .code == 0);
+  CHECK(fs::exists(out + "/input/manifest.json"));
+  fs::copy(out, box.path("copy"), fs::copy_options::recursive);
+  fs::rename(box.path("scenes"), box.path("moved-scenes"));
+  fs::rename(box.path("art"), box.path("moved-art"));
+  CHECK(run_animpak("render " + box.path("copy") + " --frames 1 --size 16 --format png").code == 0);
+  // A folder without input/ (packed before it existed) says how to point at the scene.
+  fs::copy(out, box.path("old"), fs::copy_options::recursive);
+  fs::remove_all(box.path("old") + "/input");
+  const CommandResult old = run_animpak("render " + box.path("old") + " --frames 1 --size 16 --format png");
+  CHECK(old.code == 2);
+  CHECK_THAT(old.err, Contains("heart.path") && Contains("--scene FILE"));
+
+  // --scene: the moved scene with its art beside it renders; an edited art file is refused unless forced.
+  fs::rename(box.path("moved-art"), box.path("art"));
+  const std::string moved = box.path("moved-scenes") + "/scene.json";
+  CHECK(run_animpak("render " + out + " --scene " + moved + " --frames 1 --size 16 --format png").code == 0);
+  std::ofstream(box.path("moved-scenes") + "/star.svg", std::ios::app) << "<!-- edited -->\n";
+  const CommandResult edited = run_animpak("render " + out + " --scene " + moved + " --frames 1 --size 16 --format png");
+  CHECK(edited.code == 2);
+  CHECK_THAT(edited.err, Contains("star.svg") && Contains("SHA-256") && Contains("--force"));
+  CHECK(run_animpak("render " + out + " --scene " + moved + " --force --frames 1 --size 16 --format png").code == 0);
+}
+
+TEST_CASE("animpak pack --resume: a finished packing is left alone, --seed and SCENE are refused") {
+  const ArtBox box("finished", R"("stop_growth": 1.2)");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --no-render").code == 0);
+  const std::string state = file_bytes(out + "/state.bin"), stats = file_bytes(out + "/stats.json");
+  const CommandResult resumed = run_animpak("pack --resume " + out + " --device reference --no-render");
+  CHECK(resumed.code == 0);
+  CHECK_THAT(resumed.err, Contains("finished") && Contains("growth"));
+  CHECK(file_bytes(out + "/state.bin") == state);
+  CHECK(file_bytes(out + "/stats.json") == stats);
+
+  const CommandResult seeded = run_animpak("pack --resume " + out + " --seed 99 --no-render");
+  CHECK(seeded.code == 1);
+  CHECK_THAT(seeded.err, Contains("--seed"));
+  const CommandResult scene = run_animpak("pack " + box.scene() + " --resume " + out + " --no-render");
+  CHECK(scene.code == 1);
+  CHECK_THAT(scene.err, Contains("SCENE"));
+  CHECK(file_bytes(out + "/state.bin") == state);
+}
+
+TEST_CASE("animpak pack: Ctrl-C prints the resume command, and the resumed run continues the count and the clock") {
+  const ArtBox box("interrupt");
+  const std::string out = box.path("out");
+  // SIGINT after four seconds, well into the simulation of this tiny scene on the reference solver even on
+  // a loaded machine (it stops on its own only after minutes).
+  const std::string interrupt = "timeout --preserve-status -s INT 4 ";
+  const CommandResult first =
+      run_command(interrupt + ANIMPAK_EXE + " pack " + box.scene() + " --out " + out + " --device reference --no-render");
+  REQUIRE(first.code == 130);
+  CHECK_THAT(first.err, Contains("animpak pack --resume " + out));
+  const nlohmann::json before = nlohmann::json::parse(file_bytes(out + "/stats.json"));
+  const CommandResult second = run_command(interrupt + ANIMPAK_EXE + " pack --resume " + out + " --device reference"
+                                           " --no-render");
+  REQUIRE(second.code == 130);
+  CHECK_THAT(second.err, Contains("resuming"));
+  CHECK_THAT(second.err, !Contains("seeded"));
+  const nlohmann::json after = nlohmann::json::parse(file_bytes(out + "/stats.json"));
+  CHECK(after["iterations"].get<int>() > before["iterations"].get<int>());
+  CHECK(after["seconds"]["simulation"].get<double>() > before["seconds"]["simulation"].get<double>() + 1.0);
+}
+
+TEST_CASE("install_rendered: an interrupted render leaves the one before whole, a complete one replaces it") {
+  const animpak::test::TempDir dir("animpak-folder-swap-");
+  fs::create_directories(dir / "frames");
+  for (const char* name : {"frames/frame_0000.png", "frames/frame_0001.png", "frames/frame_0001.svg", "animation.gif",
+                           "animation.json", "frames/mine.png", "notes.txt"})
+    std::ofstream(dir / name) << "old";
+  // A render cut off midway: what it wrote stays in the scratch folder, the next one starts it afresh.
+  fs::path scratch = animpak::cli::render_scratch(dir.path());
+  fs::create_directories(scratch / "frames");
+  std::ofstream(scratch / "frames/frame_0000.png") << "cut";
+  CHECK(file_bytes(dir / "frames/frame_0001.png") == "old");
+  scratch = animpak::cli::render_scratch(dir.path());
+  CHECK(fs::is_empty(scratch));
+  fs::create_directories(scratch / "frames");
+  std::ofstream(scratch / "frames/frame_0000.png") << "new";
+  std::ofstream(scratch / "animation.mp4") << "new";
+  animpak::cli::install_rendered(scratch, dir.path());
+  CHECK(file_bytes(dir / "frames/frame_0000.png") == "new");
+  CHECK(file_bytes(dir / "animation.mp4") == "new");
+  for (const char* stale : {"frames/frame_0001.png", "frames/frame_0001.svg", "animation.gif", "animation.json"})
+    CHECK_FALSE(fs::exists(dir / stale));
+  CHECK(file_bytes(dir / "frames/mine.png") == "old");
+  CHECK(file_bytes(dir / "notes.txt") == "old");
+  CHECK_FALSE(fs::exists(scratch));
+}
+
+TEST_CASE("animpak --help: lists exit code 130") {
+  CHECK_THAT(run_animpak("--help").out, Contains("130"));
+}
