@@ -44,7 +44,8 @@ struct PackedScene {
 PackedScene packed_scene(const std::filesystem::path& dir, const Checkpoint& checkpoint,
                          const std::optional<std::filesystem::path>& scene = {}, bool force = false);
 
-/// Removes the files a render writes (frames/frame_NNNN.png and .svg, animation.gif, .mp4, .json, .svg)
+/// Removes the files a render writes (frames/frame_NNNN.png and .svg, animation.gif, .mp4, .json, .lottie,
+/// .svg)
 /// from `dir`, and frames/ when that leaves it empty; nothing else.
 void remove_rendered(const std::filesystem::path& dir);
 
