@@ -77,6 +77,7 @@ int devices(const DevicesOptions& options);
 struct RenderOptions {
   std::filesystem::path dir;  ///< a folder `animpak pack` wrote
   FrameOptions frames;
+  bool contact_plot = false;  ///< also draw the frames' contact functions into DIR/contact.png
 };
 
 int render(const RenderOptions& options);

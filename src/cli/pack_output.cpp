@@ -11,6 +11,7 @@
 
 #include "animpak/error.hpp"
 #include "animpak/version.hpp"
+#include "evenness_output.hpp"
 
 namespace animpak::cli {
 namespace {
@@ -139,6 +140,11 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   stats["quality"] = {{"share_threshold", quality_share_threshold},
                       {"frames", summary_json(w, summarize(quality.frames))},
                       {"between_slices", summary_json(w, summarize(quality.between_slices))}};
+  for (const auto& [name, metrics] :
+       {std::pair{"frames", &quality.frames}, std::pair{"between_slices", &quality.between_slices}}) {
+    for (std::size_t i = 0; i < metrics->size(); ++i) stats[name][i].update(evenness_json((*metrics)[i]));
+    stats["quality"][name].update(evenness_summary_json(summarize_evenness(*metrics)));
+  }
 }
 
 // Through a temporary file and a rename, so that a failed write never loses the statistics already there.
@@ -162,7 +168,8 @@ void write_json(const std::filesystem::path& file, const nlohmann::json& value) 
 
 std::string quality_lines(const PackingQuality& quality) {
   return summary_line("quality", summarize(quality.frames)) + "\n" +
-         summary_line("between slices", summarize(quality.between_slices)) + "\n";
+         summary_line("between slices", summarize(quality.between_slices)) + "\n" +
+         evenness_line(summarize_evenness(quality.frames)) + "\n";
 }
 
 void write_stats(const std::filesystem::path& file, const PackReport& r) {

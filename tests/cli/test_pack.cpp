@@ -168,6 +168,16 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["channel_cv"].get<double>() > 0.0);
     CHECK(f["elements_outside"].empty());
     CHECK(f["overlaps"].empty());
+    // Three stars well inside the heart: a disc of free space larger than a star, a contact function from
+    // 1 − coverage to 0.
+    CHECK(f["element_radius"].get<double>() > 0.0);
+    CHECK(f["empty_disc"].get<double>() > 1.0);
+    CHECK(f["empty_disc_radius"].get<double>() ==
+          Approx(f["empty_disc"].get<double>() * f["element_radius"].get<double>()));
+    REQUIRE(f["contact"].size() >= 2);
+    CHECK(f["contact"][0].get<double>() == Approx(1 - f["coverage"].get<double>()).margin(0.01));
+    CHECK(f["contact"].back() == 0.0);
+    CHECK(f.contains("wall_ratio"));
   }
   // Five slices: the quarter points of the four intervals.
   REQUIRE(stats["between_slices"].size() == 12);
@@ -182,9 +192,14 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(q["overlapping_pair_frames"] == 0);
     CHECK(q["coverage"]["min"].get<double>() <= q["coverage"]["mean"].get<double>());
     CHECK(q["coverage"]["mean"].get<double>() <= q["coverage"]["max"].get<double>());
+    CHECK(q["empty_disc"]["median"].get<double>() <= q["empty_disc"]["worst"].get<double>());
+    CHECK(q["contact"]["step"] == 0.05);
+    CHECK(q["contact"]["mean"].size() >= 2);
+    CHECK(q["wall_ratio"]["times"].get<int>() <= int(stats[times].size()));
   }
   CHECK_THAT(r.out, Contains("quality: 0 of 12 element-frames outside") &&
-                        Contains("between slices: 0 of 36 element-frames outside"));
+                        Contains("between slices: 0 of 36 element-frames outside") &&
+                        Contains("\nevenness: wall ratio ") && Contains(" element radii (worst "));
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
@@ -209,9 +224,10 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   const nlohmann::json packed = nlohmann::json::parse(read_text(out + "/stats.json"));
   CHECK(packed["frames"].empty());  // nothing rendered yet, as animpak-solve writes it
 
-  CommandResult r = run_animpak("render " + out + " --frames 3 --size 16 --format svg");
+  CommandResult r = run_animpak("render " + out + " --frames 3 --size 16 --format svg --contact-plot");
   INFO(r.err);
   REQUIRE(r.code == 0);
+  CHECK(fs::file_size(out + "/contact.png") > 1000);
   nlohmann::json stats = nlohmann::json::parse(read_text(out + "/stats.json"));
   CHECK(stats["frames"].size() == 3);
   CHECK(stats["between_slices"].size() == 12);
