@@ -203,8 +203,13 @@ struct Region {
 /// stroke widths times `stroke_scale`, exactly as draw_art and the SVG frames draw it.
 Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_scale);
 
+/// What measure_regions measures: everything, or everything but the evenness measures, whose raster and
+/// disc search cost about as much as the rest (the quarter points between slices skip them, docs/quality.md).
+enum class Measures { all, no_evenness };
+
 /// The metrics of one arrangement: each element's art region and the container region (t is left 0).
-FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& container);
+FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& container,
+                             Measures what = Measures::all);
 
 /// The spherical contact function of the negative space: for each r, the share of the container's area
 /// farther than r from all art and from the container's boundary (docs/quality.md, "Evenness"); `radii`
@@ -230,9 +235,10 @@ Region container_region(const Container& container);
 
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
 /// draw it (element_at, replay_art, element_scale), measured with measure_regions.
-FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
+FrameMetrics measure_frame(const World& world, const SimState& state, double tf, Measures what = Measures::all);
 /// The same for art frame_art has replayed at tf.
-FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf);
+FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf,
+                           Measures what = Measures::all);
 
 /// Times audited inside every slice interval: its quarter points.
 inline constexpr int between_slice_points = 3;

@@ -140,11 +140,9 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   stats["quality"] = {{"share_threshold", quality_share_threshold},
                       {"frames", summary_json(w, summarize(quality.frames))},
                       {"between_slices", summary_json(w, summarize(quality.between_slices))}};
-  for (const auto& [name, metrics] :
-       {std::pair{"frames", &quality.frames}, std::pair{"between_slices", &quality.between_slices}}) {
-    for (std::size_t i = 0; i < metrics->size(); ++i) stats[name][i].update(evenness_json((*metrics)[i]));
-    stats["quality"][name].update(evenness_summary_json(summarize_evenness(*metrics)));
-  }
+  // The quarter points between slices are measured without evenness (docs/quality.md, "Evenness").
+  for (std::size_t i = 0; i < quality.frames.size(); ++i) stats["frames"][i].update(evenness_json(quality.frames[i]));
+  stats["quality"]["frames"].update(evenness_summary_json(summarize_evenness(quality.frames)));
 }
 
 // Through a temporary file and a rename, so that a failed write never loses the statistics already there.

@@ -189,7 +189,8 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   if (wants(FrameFormat::svg_anim))
     frame_writers::write_svg_animation(world, *log, out, ids, out.dir / animation_file_name(FrameFormat::svg_anim));
   log.reset();
-  for (double t : between_slice_times(world.params.element.slices)) quality.between_slices.push_back(measure_frame(world, state, t));
+  for (double t : between_slice_times(world.params.element.slices))
+    quality.between_slices.push_back(measure_frame(world, state, t, Measures::no_evenness));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");
