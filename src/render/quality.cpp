@@ -231,7 +231,6 @@ std::vector<Vec2> samples_along(const cl::Path& ring) {
   return out;
 }
 
-
 // The free-space raster has this many pixels along the container's longer side: the contact function's
 // distances are within about one pixel, and the largest empty disc starts from its best pixels.
 constexpr int raster_cells = 512;
