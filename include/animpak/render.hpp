@@ -3,8 +3,10 @@
 // includes this header.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -125,6 +127,11 @@ Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const
 /// One frame: every element's art replayed on its interpolated slice, in element order.
 Picture draw_frame(const World& world, const SimState& state, double tf, const FrameStyle& style);
 
+/// The spherical contact function is sampled every contact_step element radii, at most contact_samples times
+/// (docs/quality.md, "Evenness").
+inline constexpr double contact_step = 0.05;
+inline constexpr int contact_samples = 400;
+
 /// A share of art (outside the container, or overlapping another element) counts when it exceeds
 /// this: 0.2 % of the art's area (docs/quality.md).
 inline constexpr double quality_share_threshold = 0.002;
@@ -151,6 +158,21 @@ struct FrameMetrics {
   std::vector<double> area;           ///< per element: the area of its art
   std::vector<double> outside_share;  ///< per element: area(art − container) / area(art)
   std::vector<PairShare> overlaps;    ///< every pair whose art overlaps: area / the smaller art's area
+  /// Evenness (docs/quality.md, "Evenness"). ρ: the median over elements of √(art area / π), 0 without art.
+  double element_radius = 0.0;
+  /// Median art-to-wall gap of the elements within ρ of the wall over the median nearest art-to-art gap;
+  /// none with fewer than two elements, no element near the wall or a median art-to-art gap of 0.
+  std::optional<double> wall_ratio;
+  double empty_disc_radius = 0.0;  ///< the largest disc in the container that meets no art
+  /// The spherical contact function H(r) at r = k · contact_step · ρ, k = 0, 1, … up to its first 0
+  /// (at most contact_samples values); empty without art.
+  std::vector<double> contact;
+
+  /// The largest empty disc's radius as a share of ρ; none without art.
+  std::optional<double> empty_disc() const {
+    if (!(element_radius > 0.0)) return std::nullopt;
+    return empty_disc_radius / element_radius;
+  }
 
   /// Elements whose outside share exceeds quality_share_threshold.
   std::vector<ElementShare> elements_outside() const {
@@ -192,17 +214,42 @@ struct Region {
 /// stroke widths times `stroke_scale`, exactly as draw_art and the SVG frames draw it.
 Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_scale);
 
+/// What measure_regions measures: everything, or everything but the evenness measures, whose raster and
+/// disc search cost about as much as the rest (the quarter points between slices skip them, docs/quality.md).
+enum class Measures { all, no_evenness };
+
 /// The metrics of one arrangement: each element's art region and the container region (t is left 0).
-FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& container);
+FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& container,
+                             Measures what = Measures::all);
+
+/// The spherical contact function of the negative space: for each r, the share of the container's area
+/// farther than r from all art and from the container's boundary (docs/quality.md, "Evenness"); `radii`
+/// ascending.
+std::vector<double> contact_function(const std::vector<Region>& elements, const Region& container,
+                                     const std::vector<double>& radii);
+
+/// Draws every frame's contact function H(r) (r in element radii) and their mean into a PNG.
+void write_contact_plot(const std::vector<FrameMetrics>& frames, const std::filesystem::path& file);
+
+/// Per sample of the contact function, its mean over the times (a time whose H reached 0 sooner counts 0 there).
+inline std::vector<double> mean_contact(const std::vector<FrameMetrics>& metrics) {
+  std::vector<double> mean;
+  for (const FrameMetrics& m : metrics) {
+    mean.resize(std::max(mean.size(), m.contact.size()), 0.0);
+    for (std::size_t k = 0; k < m.contact.size(); ++k) mean[k] += m.contact[k] / double(metrics.size());
+  }
+  return mean;
+}
 
 /// The container as a region: the outline minus the holes (even–odd).
 Region container_region(const Container& container);
 
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
 /// draw it (element_at, replay_art, element_scale), measured with measure_regions.
-FrameMetrics measure_frame(const World& world, const SimState& state, double tf);
+FrameMetrics measure_frame(const World& world, const SimState& state, double tf, Measures what = Measures::all);
 /// The same for art frame_art has replayed at tf.
-FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf);
+FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf,
+                           Measures what = Measures::all);
 
 /// Times audited inside every slice interval: its quarter points.
 inline constexpr int between_slice_points = 3;

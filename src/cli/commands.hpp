@@ -83,6 +83,7 @@ struct RenderOptions {
   std::optional<std::filesystem::path> scene;  ///< the scene and its art elsewhere than DIR/input/
   bool force = false;  ///< render with a `scene` or art that differs from the packed one
   FrameOptions frames;
+  bool contact_plot = false;  ///< also draw the frames' contact functions into DIR/contact.png
 };
 
 int render(const RenderOptions& options);

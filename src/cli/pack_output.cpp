@@ -11,6 +11,7 @@
 
 #include "animpak/error.hpp"
 #include "animpak/version.hpp"
+#include "evenness_output.hpp"
 
 namespace animpak::cli {
 namespace {
@@ -139,6 +140,9 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   stats["quality"] = {{"share_threshold", quality_share_threshold},
                       {"frames", summary_json(w, summarize(quality.frames))},
                       {"between_slices", summary_json(w, summarize(quality.between_slices))}};
+  // The quarter points between slices are measured without evenness (docs/quality.md, "Evenness").
+  for (std::size_t i = 0; i < quality.frames.size(); ++i) stats["frames"][i].update(evenness_json(quality.frames[i]));
+  stats["quality"]["frames"].update(evenness_summary_json(summarize_evenness(quality.frames)));
 }
 
 // Through a temporary file and a rename, so that a failed write never loses the statistics already there.
@@ -162,7 +166,8 @@ void write_json(const std::filesystem::path& file, const nlohmann::json& value) 
 
 std::string quality_lines(const PackingQuality& quality) {
   return summary_line("quality", summarize(quality.frames)) + "\n" +
-         summary_line("between slices", summarize(quality.between_slices)) + "\n";
+         summary_line("between slices", summarize(quality.between_slices)) + "\n" +
+         evenness_line(summarize_evenness(quality.frames)) + "\n";
 }
 
 void write_stats(const std::filesystem::path& file, const PackReport& r) {

@@ -59,7 +59,8 @@ struct QualitySummary {
 };
 QualitySummary summarize(const std::vector<FrameMetrics>& metrics);
 
-/// The two lines pack and render print at the end: "quality: …" for the frames and "between slices: …".
+/// The lines pack and render print at the end: "quality: …" for the frames, "between slices: …" and the
+/// frames' "evenness: …".
 std::string quality_lines(const PackingQuality& quality);
 
 }  // namespace animpak::cli

@@ -45,7 +45,7 @@ PackedScene packed_scene(const std::filesystem::path& dir, const Checkpoint& che
                          const std::optional<std::filesystem::path>& scene = {}, bool force = false);
 
 /// Removes the files a render writes (frames/frame_NNNN.png and .svg, animation.gif, .mp4, .json, .lottie,
-/// .svg)
+/// .svg, contact.png)
 /// from `dir`, and frames/ when that leaves it empty; nothing else.
 void remove_rendered(const std::filesystem::path& dir);
 

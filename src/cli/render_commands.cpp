@@ -130,6 +130,8 @@ class RenderingFrontend final : public Frontend {
                             "(checked against the packed scene and DIR/input/manifest.json's hashes)");
     render_cmd_->add_flag("--force", render_.force, "render with a --scene or art that differs from the packed one");
     add_frame_options(*render_cmd_, render_.frames);
+    render_cmd_->add_flag("--contact-plot", render_.contact_plot,
+                          "also draw every frame's spherical contact function H(r) into DIR/contact.png");
 
     pack.add_flag("!--no-render", pack_render_, "do not render frames");
     add_frame_options(pack, pack_frames_);
@@ -181,6 +183,10 @@ int render(const RenderOptions& options) {
     std::cerr << "animpak: warning: " << stats.string()
               << " is not a JSON object; left as it is, without these frames' metrics (delete it to have a new "
                  "one written)\n";
+  if (options.contact_plot) {
+    write_contact_plot(quality.frames, options.dir / "contact.png");
+    std::cerr << "animpak: wrote " << (options.dir / "contact.png").string() << "\n";
+  }
   std::cout << quality_lines(quality);
   return 0;
 }

@@ -30,18 +30,18 @@ Region container_region(const Container& container) {
   return region;
 }
 
-FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf) {
+FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf, Measures what) {
   std::vector<Region> elements;
   elements.reserve(world.elements.size());
   for (std::size_t i = 0; i < world.elements.size(); ++i)
     elements.push_back(art_region(world.library[world.elements[i].library].art.art, art[i].points, art[i].stroke_scale));
-  FrameMetrics m = measure_regions(elements, container_region(world.container));
+  FrameMetrics m = measure_regions(elements, container_region(world.container), what);
   m.t = tf;
   return m;
 }
 
-FrameMetrics measure_frame(const World& world, const SimState& state, double tf) {
-  return measure_frame(world, frame_art(world, state, tf), tf);
+FrameMetrics measure_frame(const World& world, const SimState& state, double tf, Measures what) {
+  return measure_frame(world, frame_art(world, state, tf), tf, what);
 }
 
 std::vector<double> between_slice_times(int slices) {

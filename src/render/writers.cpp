@@ -241,7 +241,8 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
     quality.frames.push_back(measure_frame(world, art, times[i]));
   }
   write_animations(world, state, out, ids, wants);
-  for (double t : between_slice_times(world.params.element.slices)) quality.between_slices.push_back(measure_frame(world, state, t));
+  for (double t : between_slice_times(world.params.element.slices))
+    quality.between_slices.push_back(measure_frame(world, state, t, Measures::no_evenness));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");

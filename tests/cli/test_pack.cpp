@@ -168,6 +168,16 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["channel_cv"].get<double>() > 0.0);
     CHECK(f["elements_outside"].empty());
     CHECK(f["overlaps"].empty());
+    // Three stars well inside the heart: a disc of free space larger than a star, a contact function from
+    // 1 − coverage to 0.
+    CHECK(f["element_radius"].get<double>() > 0.0);
+    CHECK(f["empty_disc"].get<double>() > 1.0);
+    CHECK(f["empty_disc_radius"].get<double>() ==
+          Approx(f["empty_disc"].get<double>() * f["element_radius"].get<double>()));
+    REQUIRE(f["contact"].size() >= 2);
+    CHECK(f["contact"][0].get<double>() == Approx(1 - f["coverage"].get<double>()).margin(0.01));
+    CHECK(f["contact"].back() == 0.0);
+    CHECK(f.contains("wall_ratio"));
   }
   // Five slices: the quarter points of the four intervals.
   REQUIRE(stats["between_slices"].size() == 12);
@@ -183,8 +193,17 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(q["coverage"]["min"].get<double>() <= q["coverage"]["mean"].get<double>());
     CHECK(q["coverage"]["mean"].get<double>() <= q["coverage"]["max"].get<double>());
   }
+  // Evenness is measured at the frames, not between slices.
+  const auto& even = stats["quality"]["frames"];
+  CHECK(even["empty_disc"]["median"].get<double>() <= even["empty_disc"]["worst"].get<double>());
+  CHECK(even["contact"]["step"] == 0.05);
+  CHECK(even["contact"]["mean"].size() >= 2);
+  CHECK(even["wall_ratio"]["times"].get<int>() <= 4);
+  CHECK_FALSE(stats["quality"]["between_slices"].contains("empty_disc"));
+  CHECK_FALSE(stats["between_slices"][0].contains("contact"));
   CHECK_THAT(r.out, Contains("quality: 0 of 12 element-frames outside") &&
-                        Contains("between slices: 0 of 36 element-frames outside"));
+                        Contains("between slices: 0 of 36 element-frames outside") &&
+                        Contains("\nevenness: wall ratio ") && Contains(" element radii (worst "));
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
@@ -209,9 +228,10 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   const nlohmann::json packed = nlohmann::json::parse(read_text(out + "/stats.json"));
   CHECK(packed["frames"].empty());  // nothing rendered yet, as animpak-solve writes it
 
-  CommandResult r = run_animpak("render " + out + " --frames 3 --size 16 --format svg");
+  CommandResult r = run_animpak("render " + out + " --frames 3 --size 16 --format svg --contact-plot");
   INFO(r.err);
   REQUIRE(r.code == 0);
+  CHECK(fs::file_size(out + "/contact.png") > 1000);
   nlohmann::json stats = nlohmann::json::parse(read_text(out + "/stats.json"));
   CHECK(stats["frames"].size() == 3);
   CHECK(stats["between_slices"].size() == 12);

@@ -136,3 +136,87 @@ TEST_CASE("art_region: strokes are bands with round joins and caps, closed subpa
   const double square_area = 1.0 + 4 * 1.0 * 0.1 + std::numbers::pi * 0.1 * 0.1;  // the square grown by 0.1
   CHECK(m.area[0] == Approx(line_area + square_area).margin(1e-4));
 }
+
+namespace {
+
+// A regular polygon of `sides` around c: its inradius is radius · cos(π / sides).
+std::vector<Vec2> polygon(Vec2 c, double radius, int sides) {
+  std::vector<Vec2> ring;
+  for (int k = 0; k < sides; ++k) {
+    const double a = 2 * std::numbers::pi * k / sides;
+    ring.push_back({c.x + radius * std::cos(a), c.y + radius * std::sin(a)});
+  }
+  return ring;
+}
+
+}  // namespace
+
+TEST_CASE("measure_regions: the wall ratio is the median wall gap near the wall over the median nearest gap") {
+  // Unit squares (ρ = √(1 / π) ≈ 0.56) in a 4 × 4 container: 0 is 0.2 from the wall, 1 is 0.3 from it and
+  // 0.5 right of 0, 2 is 0.6 above 1 and 1.2 from the wall, too far to count.
+  const Region container{{square(0, 0, 4, 4)}, FillRule::nonzero};
+  const FrameMetrics m =
+      measure_regions({box(0.2, 0.2, 1.2, 1.2), box(1.7, 0.3, 2.7, 1.3), box(1.7, 1.9, 2.7, 2.9)}, container);
+  CHECK(m.element_radius == Approx(std::sqrt(1 / std::numbers::pi)).margin(1e-9));
+  // The median of the wall gaps {0.2, 0.3} over the median of the nearest gaps {0.5, 0.5, 0.6}.
+  REQUIRE(m.wall_ratio);
+  CHECK(*m.wall_ratio == Approx(0.25 / 0.5).margin(1e-9));
+
+  // One element, or none near the wall: no ratio.
+  CHECK_FALSE(measure_regions({box(0.2, 0.2, 1.2, 1.2)}, container).wall_ratio);
+  const Region wide{{square(-10, -10, 10, 10)}, FillRule::nonzero};
+  CHECK_FALSE(measure_regions({box(0, 0, 1, 1), box(1.5, 0, 2.5, 1)}, wide).wall_ratio);
+  CHECK_FALSE(measure_regions({}, container).empty_disc());
+}
+
+TEST_CASE("measure_regions: the largest empty disc of closed-form arrangements") {
+  const Region unit{{square(0, 0, 1, 1)}, FillRule::nonzero};
+  // Empty, the disc is the inscribed one.
+  CHECK(measure_regions({}, unit).empty_disc_radius == Approx(0.5).margin(1e-6));
+  // A 0.4 square in a corner: the disc touches the two far walls and the square's corner,
+  // centre (c, c) with 1 − c = √2 (c − 0.4).
+  const FrameMetrics corner = measure_regions({box(0, 0, 0.4, 0.4)}, unit);
+  const double r = 0.6 * std::sqrt(2.0) / (1 + std::sqrt(2.0));
+  CHECK(corner.empty_disc_radius == Approx(r).margin(1e-6));
+  REQUIRE(corner.empty_disc());
+  CHECK(*corner.empty_disc() == Approx(r / (0.4 / std::sqrt(std::numbers::pi))).margin(1e-5));
+  // Two discs of radius 0.3 at (±0.5, 0) in the unit circle: the disc on the y axis touches both and the
+  // circle, centre (0, y) with √(0.5² + y²) − 0.3 = 1 − y.
+  const int sides = 4096;
+  const Region circle{{polygon({0, 0}, 1.0 / std::cos(std::numbers::pi / sides), sides)}, FillRule::nonzero};
+  const FrameMetrics two = measure_regions(
+      {{{polygon({-0.5, 0}, 0.3, sides)}, FillRule::nonzero}, {{polygon({0.5, 0}, 0.3, sides)}, FillRule::nonzero}},
+      circle);
+  const double y = (1.3 * 1.3 - 0.25) / 2.6;
+  CHECK(two.empty_disc_radius == Approx(1 - y).margin(1e-5));
+  // The hole of a frame-shaped element is free space: the disc fills it.
+  const Region frame{{square(0.05, 0.05, 0.95, 0.95), square(0.1, 0.1, 0.9, 0.9)}, FillRule::evenodd};
+  CHECK(measure_regions({frame}, unit).empty_disc_radius == Approx(0.4).margin(1e-6));
+}
+
+TEST_CASE("contact_function: the share of the container farther than r from art and wall") {
+  // An empty unit square: the points farther than r from the wall fill a square of side 1 − 2r.
+  const Region unit{{square(0, 0, 1, 1)}, FillRule::nonzero};
+  const std::vector<double> radii{0.0, 0.1, 0.25, 0.4, 0.49, 0.5};
+  const std::vector<double> empty = contact_function({}, unit, radii);
+  REQUIRE(empty.size() == radii.size());
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    INFO("r = " << radii[k]);
+    CHECK(empty[k] == Approx((1 - 2 * radii[k]) * (1 - 2 * radii[k])).margin(0.005));
+  }
+  // With a 0.2 square in the middle, less its neighbourhood: 0.2² + 4 · 0.2 r + π r², while that fits.
+  const std::vector<double> middle = contact_function({box(0.4, 0.4, 0.6, 0.6)}, unit, {0.0, 0.05, 0.1, 0.15});
+  for (std::size_t k = 0; k < middle.size(); ++k) {
+    const double r = 0.05 * double(k);
+    INFO("r = " << r);
+    const double far_from_wall = (1 - 2 * r) * (1 - 2 * r), near_art = 0.04 + 0.8 * r + std::numbers::pi * r * r;
+    CHECK(middle[k] == Approx(far_from_wall - near_art).margin(0.005));
+  }
+  // In the frame metrics: sampled every 0.05 ρ from 1 − coverage down to its first 0.
+  const FrameMetrics m = measure_regions({box(0.4, 0.4, 0.6, 0.6)}, unit);
+  REQUIRE(m.contact.size() >= 2);
+  CHECK(m.contact.front() == Approx(1 - m.coverage).margin(0.005));
+  CHECK(m.contact.back() == 0.0);
+  CHECK(m.contact[m.contact.size() - 2] > 0.0);
+  CHECK(double(m.contact.size() - 2) * contact_step * m.element_radius < m.empty_disc_radius + 0.005);
+}
