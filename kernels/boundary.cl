@@ -3,8 +3,15 @@
  * hole is outside); a vertex still outside after a step moves onto the boundary. */
 
 /** One segment's turn at the nearest point: the first segment (by index) reaching the minimum wins. */
-void container_try_segment(int i, float px, float py, __global const float* ax, __global const float* ay,
-                           __global const float* bx, __global const float* by, float* distance2, float* qx,
+void container_try_segment(int i,
+                           float px,
+                           float py,
+                           __global const float* ax,
+                           __global const float* ay,
+                           __global const float* bx,
+                           __global const float* by,
+                           float* distance2,
+                           float* qx,
                            float* qy) {
   float cx, cy;
   const float d2 = closest_point_on_segment(px, py, ax[i], ay[i], bx[i], by[i], &cx, &cy);
@@ -21,16 +28,26 @@ void container_try_segment(int i, float px, float py, __global const float* ax, 
  * band and the nearest point only those of the point's cell (or every segment outside the grid), in
  * index order: the same answer as trying every segment. Without a container every point is inside, at
  * +inf. */
-bool container_query(int segments, const ContainerIndexInfo ix, __global const int* index, float px, float py,
-                     bool nearest, __global const float* ax, __global const float* ay, __global const float* bx,
-                     __global const float* by, float* distance2, float* qx, float* qy) {
+bool container_query(int segments,
+                     const ContainerIndexInfo ix,
+                     __global const int* index,
+                     float px,
+                     float py,
+                     bool nearest,
+                     __global const float* ax,
+                     __global const float* ay,
+                     __global const float* bx,
+                     __global const float* by,
+                     float* distance2,
+                     float* qx,
+                     float* qy) {
   *distance2 = INFINITY;
   *qx = 0.0f;
   *qy = 0.0f;
   if (segments == 0) return true;
   bool inside = false;
   if (ix.nx > 0) {
-    const int j = grid_axis_cell(py - ix.y0, ix.cell, ix.ny);  /* grid.cl */
+    const int j = grid_axis_cell(py - ix.y0, ix.cell, ix.ny); /* grid.cl */
     for (int k = index[j]; k < index[j + 1]; ++k) {
       const int i = index[ix.band_segments + k];
       if (ray_crosses_segment(px, py, ax[i], ay[i], bx[i], by[i])) inside = !inside;
@@ -57,9 +74,17 @@ bool container_query(int segments, const ContainerIndexInfo ix, __global const i
 /** Whether the boundary edge p → n properly crosses a container segment (reference
  * edge_crosses_container): with the index, only the segments of the bands from the edge's lower end to
  * its upper end, which hold every segment that can cross it. */
-bool edge_crosses_container(int segments, const ContainerIndexInfo ix, __global const int* index, float px, float py,
-                            float nx, float ny, __global const float* ax, __global const float* ay,
-                            __global const float* bx, __global const float* by) {
+bool edge_crosses_container(int segments,
+                            const ContainerIndexInfo ix,
+                            __global const int* index,
+                            float px,
+                            float py,
+                            float nx,
+                            float ny,
+                            __global const float* ax,
+                            __global const float* ay,
+                            __global const float* bx,
+                            __global const float* by) {
   if (ix.nx > 0) {
     const int j0 = grid_axis_cell((ny < py ? ny : py) - ix.y0, ix.cell, ix.ny); /* std::min, std::max */
     const int j1 = grid_axis_cell((py < ny ? ny : py) - ix.y0, ix.cell, ix.ny);
@@ -78,8 +103,16 @@ bool edge_crosses_container(int segments, const ContainerIndexInfo ix, __global 
 /** The container's force from the query of (px, py) (reference boundary_force): Eq. 4 outside; inside,
  * for a boundary vertex within wall_range of the wall, the wall's Eq. 1-shaped repulsion from its
  * nearest point. */
-void boundary_force(const ForceParams p, bool inside, float distance2, float qx, float qy, float px, float py,
-                    bool boundary, float* fx, float* fy) {
+void boundary_force(const ForceParams p,
+                    bool inside,
+                    float distance2,
+                    float qx,
+                    float qy,
+                    float px,
+                    float py,
+                    bool boundary,
+                    float* fx,
+                    float* fy) {
   if (!inside) {
     *fx = p.k_boundary * (qx - px);
     *fy = p.k_boundary * (qy - py);
@@ -96,12 +129,16 @@ void boundary_force(const ForceParams p, bool inside, float distance2, float qx,
 /** Containment: a vertex outside the container moves past its nearest boundary point by
  * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
 __kernel void apply_containment(const WorldInfo world,
-                          __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
-                          __global const float* seg_bx, __global const float* seg_by, /* input */
-                          const ContainerIndexInfo container_index,                   /* the container's index */
-                          __global const int* index,                                  /* input: its lists */
-                          __global float* x, __global float* y,    /* input/output: positions */
-                          __global float* vx, __global float* vy) { /* input/output: velocities */
+                                __global const float* seg_ax,
+                                __global const float* seg_ay, /* input: container segments */
+                                __global const float* seg_bx,
+                                __global const float* seg_by,             /* input */
+                                const ContainerIndexInfo container_index, /* the container's index */
+                                __global const int* index,                /* input: its lists */
+                                __global float* x,
+                                __global float* y, /* input/output: positions */
+                                __global float* vx,
+                                __global float* vy) { /* input/output: velocities */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v];

@@ -21,37 +21,69 @@ float closest_point_on_segment(float px, float py, float ax, float ay, float bx,
 }
 
 /** Writes the closest point to p on triangle abc into (*qx, *qy, *qt). */
-void closest_point_on_triangle(float px, float py, float pt, float ax, float ay, float at, float bx, float by,
-                               float bt, float cx, float cy, float ct, float* qx, float* qy, float* qt) {
+void closest_point_on_triangle(float px,
+                               float py,
+                               float pt,
+                               float ax,
+                               float ay,
+                               float at,
+                               float bx,
+                               float by,
+                               float bt,
+                               float cx,
+                               float cy,
+                               float ct,
+                               float* qx,
+                               float* qy,
+                               float* qt) {
   const float abx = bx - ax, aby = by - ay, abt = bt - at;
   const float acx = cx - ax, acy = cy - ay, act = ct - at;
 
   const float apx = px - ax, apy = py - ay, apt = pt - at;
   const float d1 = ap_dot3(abx, aby, abt, apx, apy, apt);
   const float d2 = ap_dot3(acx, acy, act, apx, apy, apt);
-  if (d1 <= 0.0f && d2 <= 0.0f) { *qx = ax; *qy = ay; *qt = at; return; }
+  if (d1 <= 0.0f && d2 <= 0.0f) {
+    *qx = ax;
+    *qy = ay;
+    *qt = at;
+    return;
+  }
 
   const float bpx = px - bx, bpy = py - by, bpt = pt - bt;
   const float d3 = ap_dot3(abx, aby, abt, bpx, bpy, bpt);
   const float d4 = ap_dot3(acx, acy, act, bpx, bpy, bpt);
-  if (d3 >= 0.0f && d4 <= d3) { *qx = bx; *qy = by; *qt = bt; return; }
+  if (d3 >= 0.0f && d4 <= d3) {
+    *qx = bx;
+    *qy = by;
+    *qt = bt;
+    return;
+  }
 
   const float vc = d1 * d4 - d3 * d2;
   if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
     const float s = d1 / (d1 - d3);
-    *qx = ax + abx * s; *qy = ay + aby * s; *qt = at + abt * s;
+    *qx = ax + abx * s;
+    *qy = ay + aby * s;
+    *qt = at + abt * s;
     return;
   }
 
   const float cpx = px - cx, cpy = py - cy, cpt = pt - ct;
   const float d5 = ap_dot3(abx, aby, abt, cpx, cpy, cpt);
   const float d6 = ap_dot3(acx, acy, act, cpx, cpy, cpt);
-  if (d6 >= 0.0f && d5 <= d6) { *qx = cx; *qy = cy; *qt = ct; return; }
+  if (d6 >= 0.0f && d5 <= d6) {
+    *qx = cx;
+    *qy = cy;
+    *qt = ct;
+    return;
+  }
 
   const float vb = d5 * d2 - d1 * d6;
   if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) {
     const float s = d2 / (d2 - d6);
-    *qx = ax + acx * s; *qy = ay + acy * s; *qt = at + act * s;
+    *qx = ax + acx * s;
+    *qy = ay + acy * s;
+    *qt = at + act * s;
     return;
   }
 
@@ -59,13 +91,20 @@ void closest_point_on_triangle(float px, float py, float pt, float ax, float ay,
   const float e43 = d4 - d3, e56 = d5 - d6;
   if (va <= 0.0f && e43 >= 0.0f && e56 >= 0.0f) {
     const float s = e43 / (e43 + e56);
-    *qx = bx + (cx - bx) * s; *qy = by + (cy - by) * s; *qt = bt + (ct - bt) * s;
+    *qx = bx + (cx - bx) * s;
+    *qy = by + (cy - by) * s;
+    *qt = bt + (ct - bt) * s;
     return;
   }
 
   /* A degenerate triangle reaching the face region answers a, as the reference does. */
   const float sum = va + vb + vc;
-  if (!(sum > 0.0f)) { *qx = ax; *qy = ay; *qt = at; return; }
+  if (!(sum > 0.0f)) {
+    *qx = ax;
+    *qy = ay;
+    *qt = at;
+    return;
+  }
   const float denom = 1.0f / sum;
   const float v = vb * denom, w = vc * denom;
   *qx = ax + abx * v + acx * w;
@@ -97,9 +136,21 @@ int ap_lane_count(ap_intv m) {
 }
 
 /** closest_point_on_triangle for AP_LANES triangles at once. */
-void closest_point_on_triangles(float px, float py, float pt, ap_floatv ax, ap_floatv ay, ap_floatv at, ap_floatv bx,
-                                ap_floatv by, ap_floatv bt, ap_floatv cx, ap_floatv cy, ap_floatv ct, ap_floatv* qx,
-                                ap_floatv* qy, ap_floatv* qt) {
+void closest_point_on_triangles(float px,
+                                float py,
+                                float pt,
+                                ap_floatv ax,
+                                ap_floatv ay,
+                                ap_floatv at,
+                                ap_floatv bx,
+                                ap_floatv by,
+                                ap_floatv bt,
+                                ap_floatv cx,
+                                ap_floatv cy,
+                                ap_floatv ct,
+                                ap_floatv* qx,
+                                ap_floatv* qy,
+                                ap_floatv* qt) {
   const ap_floatv abx = bx - ax, aby = by - ay, abt = bt - at;
   const ap_floatv acx = cx - ax, acy = cy - ay, act = ct - at;
   const ap_floatv apx = px - ax, apy = py - ay, apt = pt - at;

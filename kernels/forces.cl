@@ -5,8 +5,11 @@
  * Zero forces are still added, so a −0 sum turns into +0 exactly as in the reference. */
 
 /** Eq. 7 for vertex i from one snapshot of positions; writes only vertex i's outputs. */
-__kernel void step_forces(const WorldInfo world, const ForceParams p,
-                          __global const float* x, __global const float* y, __global const float* t, /* input: positions */
+__kernel void step_forces(const WorldInfo world,
+                          const ForceParams p,
+                          __global const float* x,
+                          __global const float* y,
+                          __global const float* t,            /* input: positions */
                           __global const int* slice,          /* input: per vertex */
                           __global const int* slice_begin,    /* input: slices + 1 */
                           __global const int* slice_boundary, /* input: boundary vertices per slice */
@@ -19,24 +22,35 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
                           __global const int* spring_other,   /* input: per slot */
                           __global const uchar* spring_class, /* input: per slot */
                           __global const float* spring_rest,  /* input: per slot */
-                          __global const int* tri_a, __global const int* tri_b, __global const int* tri_c, /* input: slice triangles */
-                          __global const int* tri_begin,      /* input: incident-triangle rows, vertices + 1 */
-                          __global const int* tri_list,       /* input */
-                          __global const float* rpl_x_in, __global const float* rpl_y_in, /* input: Eq. 1 */
-                          __global const float* rpl_t_in,     /* input: Eq. 1 */
-                          __global const float* rpl_closest,  /* input: repulsion kernel, boundary vertices */
-                          __global const uchar* rpl_contact,  /* input: repulsion kernel, boundary vertices */
-                          __global const float* depth_x, __global const float* depth_y, /* input: repulsion kernel */
-                          __global const float* target_x, __global const float* target_y, __global const float* target_t, /* input */
-                          __global const float* seg_ax, __global const float* seg_ay, /* input: container segments */
-                          __global const float* seg_bx, __global const float* seg_by, /* input */
-                          const ContainerIndexInfo container_index,                   /* the container's index */
-                          __global const int* container_lists,                        /* input: its lists */
-                          __global const float* slice_cx, __global const float* slice_cy, /* input: slice centroids */
-                          __global float* fx, __global float* fy, __global float* ft, /* output: Eq. 7 per vertex */
-                          __global float* closest,            /* output: distance to the nearest element or wall */
-                          __global uchar* contact_out,        /* output: AP_CONTACT_* bits per vertex */
-                          __global float* breakdown) {        /* output when world.breakdown: every force apart */
+                          __global const int* tri_a,
+                          __global const int* tri_b,
+                          __global const int* tri_c,     /* input: slice triangles */
+                          __global const int* tri_begin, /* input: incident-triangle rows, vertices + 1 */
+                          __global const int* tri_list,  /* input */
+                          __global const float* rpl_x_in,
+                          __global const float* rpl_y_in,    /* input: Eq. 1 */
+                          __global const float* rpl_t_in,    /* input: Eq. 1 */
+                          __global const float* rpl_closest, /* input: repulsion kernel, boundary vertices */
+                          __global const uchar* rpl_contact, /* input: repulsion kernel, boundary vertices */
+                          __global const float* depth_x,
+                          __global const float* depth_y, /* input: repulsion kernel */
+                          __global const float* target_x,
+                          __global const float* target_y,
+                          __global const float* target_t, /* input */
+                          __global const float* seg_ax,
+                          __global const float* seg_ay, /* input: container segments */
+                          __global const float* seg_bx,
+                          __global const float* seg_by,             /* input */
+                          const ContainerIndexInfo container_index, /* the container's index */
+                          __global const int* container_lists,      /* input: its lists */
+                          __global const float* slice_cx,
+                          __global const float* slice_cy, /* input: slice centroids */
+                          __global float* fx,
+                          __global float* fy,
+                          __global float* ft,          /* output: Eq. 7 per vertex */
+                          __global float* closest,     /* output: distance to the nearest element or wall */
+                          __global uchar* contact_out, /* output: AP_CONTACT_* bits per vertex */
+                          __global float* breakdown) { /* output when world.breakdown: every force apart */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v], pt = t[v];
@@ -82,9 +96,8 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
       const int lo = slice_begin[s];
       const int next = v - lo + 1 == slice_boundary[s] ? lo : v + 1;
       const float ex = x[next] - px, ey = y[next] - py;
-      if (wall2 < ex * ex + ey * ey &&
-          edge_crosses_container(world.segments, container_index, container_lists, px, py, x[next], y[next], seg_ax,
-                                 seg_ay, seg_bx, seg_by)) {
+      if (wall2 < ex * ex + ey * ey && edge_crosses_container(world.segments, container_index, container_lists, px, py,
+                                                              x[next], y[next], seg_ax, seg_ay, seg_bx, seg_by)) {
         bits = AP_CONTACT_OUTSIDE;
         wall_gap = 0.0f;
       }
@@ -96,8 +109,12 @@ __kernel void step_forces(const WorldInfo world, const ForceParams p,
   contact_out[v] = bits | overlap_bits;
   if (world.breakdown == 0) return;
   const int n = world.vertices;
-  const float parts[AP_FORCE_COMPONENTS][3] = {{rpl_x, rpl_y, rpl_t}, {edg_x, edg_y, edg_t}, {tgt_x, tgt_y, tgt_t},
-                                               {bdr_x, bdr_y, bdr_t}, {ovr_x, ovr_y, ovr_t}, {tor_x, tor_y, tor_t},
+  const float parts[AP_FORCE_COMPONENTS][3] = {{rpl_x, rpl_y, rpl_t},
+                                               {edg_x, edg_y, edg_t},
+                                               {tgt_x, tgt_y, tgt_t},
+                                               {bdr_x, bdr_y, bdr_t},
+                                               {ovr_x, ovr_y, ovr_t},
+                                               {tor_x, tor_y, tor_t},
                                                {temporal_x, temporal_y, temporal_t}};
   for (int c = 0; c < AP_FORCE_COMPONENTS; ++c)
     for (int axis = 0; axis < 3; ++axis) breakdown[(c * 3 + axis) * n + v] = parts[c][axis];

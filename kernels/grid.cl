@@ -12,17 +12,17 @@ int grid_axis_cell(float c, float cell, int n) {
 }
 
 /** Centroid (a + b + c) / 3 and linear cell of every envelope triangle; one work-item per triangle. */
-__kernel void envelope_cells(const GridInfo grid,            /* input */
-                             __global const int* env_a,      /* input: vertex ids per triangle */
-                             __global const int* env_b,      /* input */
-                             __global const int* env_c,      /* input */
-                             __global const float* x,        /* input: positions per vertex */
-                             __global const float* y,        /* input */
-                             __global const float* t,        /* input */
-                             __global float* cx,             /* output: centroid per triangle */
-                             __global float* cy,             /* output */
-                             __global float* ct,             /* output */
-                             __global int* triangle_cell) {  /* output: linear cell per triangle */
+__kernel void envelope_cells(const GridInfo grid,           /* input */
+                             __global const int* env_a,     /* input: vertex ids per triangle */
+                             __global const int* env_b,     /* input */
+                             __global const int* env_c,     /* input */
+                             __global const float* x,       /* input: positions per vertex */
+                             __global const float* y,       /* input */
+                             __global const float* t,       /* input */
+                             __global float* cx,            /* output: centroid per triangle */
+                             __global float* cy,            /* output */
+                             __global float* ct,            /* output */
+                             __global int* triangle_cell) { /* output: linear cell per triangle */
   const int i = get_global_id(0);
   if (i >= grid.triangles) return;
   const int a = env_a[i], b = env_b[i], c = env_c[i];
@@ -148,11 +148,15 @@ __kernel void grid_order_cells(const GridInfo grid,
  * vertices' positions change every step: slot_positions). Copies only: no arithmetic, so the forces stay
  * bit-identical. */
 __kernel void grid_gather(const GridInfo grid,
-                          __global const int* sorted_triangles,                        /* input */
-                          __global const int* env_element,                             /* input: per triangle */
-                          __global const float* cx, __global const float* cy, __global const float* ct, /* input */
-                          __global int* slot_element,                                  /* output: per slot */
-                          __global float* slot_cx, __global float* slot_cy, __global float* slot_ct) { /* output */
+                          __global const int* sorted_triangles, /* input */
+                          __global const int* env_element,      /* input: per triangle */
+                          __global const float* cx,
+                          __global const float* cy,
+                          __global const float* ct,   /* input */
+                          __global int* slot_element, /* output: per slot */
+                          __global float* slot_cx,
+                          __global float* slot_cy,
+                          __global float* slot_ct) { /* output */
   const int k = get_global_id(0);
   if (k >= grid.triangles) return;
   const int tri = sorted_triangles[k];
@@ -167,9 +171,13 @@ __kernel void grid_gather(const GridInfo grid,
  * positions (grid_rebuild_interval); copies only. One work-item per slot. */
 __kernel void slot_positions(const GridInfo grid,
                              __global const int* sorted_triangles, /* input */
-                             __global const int* env_a, __global const int* env_b, __global const int* env_c,
-                             __global const float* x, __global const float* y, __global const float* t, /* input */
-                             __global float* slot_vertices) {      /* output: nine planes of grid.triangles */
+                             __global const int* env_a,
+                             __global const int* env_b,
+                             __global const int* env_c,
+                             __global const float* x,
+                             __global const float* y,
+                             __global const float* t,         /* input */
+                             __global float* slot_vertices) { /* output: nine planes of grid.triangles */
   const int k = get_global_id(0);
   const int n = grid.triangles;
   if (k >= n) return;
@@ -192,10 +200,13 @@ __kernel void slot_positions(const GridInfo grid,
 __kernel void grid_runs(const GridInfo grid,
                         __global const int* cell_start,   /* input: cells + 1 */
                         __global const int* slot_element, /* input: per slot (grid_gather) */
-                        __global const float* slot_cx, __global const float* slot_cy,
-                        __global const float* slot_ct,    /* input: per slot */
-                        __global int* run_next,           /* output: per slot */
-                        __global float* run_cx, __global float* run_cy, __global float* run_ct) { /* output */
+                        __global const float* slot_cx,
+                        __global const float* slot_cy,
+                        __global const float* slot_ct, /* input: per slot */
+                        __global int* run_next,        /* output: per slot */
+                        __global float* run_cx,
+                        __global float* run_cy,
+                        __global float* run_ct) { /* output */
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
   const int end = cell_start[c + 1];

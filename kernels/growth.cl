@@ -7,15 +7,16 @@
  * touching a changed slice take their rest length from the scaled rest copy. */
 
 /** Slice s's proposed g; one work-item per slice. */
-__kernel void propose_growth(const WorldInfo world, const ForceParams p,
-                             const int growing,               /* input: 0 in the settling phase */
-                             const int hold_secondary,        /* input: 1 while secondary elements wait */
-                             __global const int* slice_begin, /* input: slices + 1 */
-                             __global const int* slice_element,         /* input: per slice */
-                             __global const uchar* element_secondary,   /* input: per element */
-                             __global const uchar* contact,   /* input: AP_CONTACT_* per vertex, from step_forces */
-                             __global const float* growth,    /* input: g per slice */
-                             __global float* proposed) {      /* output: proposed g per slice */
+__kernel void propose_growth(const WorldInfo world,
+                             const ForceParams p,
+                             const int growing,                       /* input: 0 in the settling phase */
+                             const int hold_secondary,                /* input: 1 while secondary elements wait */
+                             __global const int* slice_begin,         /* input: slices + 1 */
+                             __global const int* slice_element,       /* input: per slice */
+                             __global const uchar* element_secondary, /* input: per element */
+                             __global const uchar* contact, /* input: AP_CONTACT_* per vertex, from step_forces */
+                             __global const float* growth,  /* input: g per slice */
+                             __global float* proposed) {    /* output: proposed g per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   uchar bits = 0;
@@ -37,7 +38,8 @@ __kernel void propose_growth(const WorldInfo world, const ForceParams p,
 /** Slice s's new g: its proposal, limited to growth_ratio × the smallest proposal of its element (a min
  * over the element's slices in order) and to neighbour_growth_ratio × each time neighbour's proposal;
  * `changed` says whether it grew or shrank and whether a limit held it. */
-__kernel void grow_slices(const WorldInfo world, const ForceParams p,
+__kernel void grow_slices(const WorldInfo world,
+                          const ForceParams p,
                           __global const int* slice_element,       /* input: per slice */
                           __global const int* element_slice_begin, /* input: elements + 1 */
                           __global const float* proposed,          /* input: from propose_growth */
@@ -66,16 +68,17 @@ __kernel void grow_slices(const WorldInfo world, const ForceParams p,
 /** Rest length of every CSR slot of vertex v whose spring has an end on a changed slice
  * (state.hpp: rest_copy_length, each end's slice scaled by its g about its rest copy centroid). */
 __kernel void update_rest_lengths(const WorldInfo world,
-                                  __global const int* slice,          /* input: per vertex */
-                                  __global const int* spring_begin,   /* input: vertices + 1 */
-                                  __global const int* spring_other,   /* input: per slot */
-                                  __global const uchar* changed,      /* input: per slice */
-                                  __global const float* growth,       /* input: g per slice */
-                                  __global const float* rest_copy_x, __global const float* rest_copy_y,
-                                  __global const float* rest_copy_t,        /* input: rest copy per vertex */
+                                  __global const int* slice,        /* input: per vertex */
+                                  __global const int* spring_begin, /* input: vertices + 1 */
+                                  __global const int* spring_other, /* input: per slot */
+                                  __global const uchar* changed,    /* input: per slice */
+                                  __global const float* growth,     /* input: g per slice */
+                                  __global const float* rest_copy_x,
+                                  __global const float* rest_copy_y,
+                                  __global const float* rest_copy_t, /* input: rest copy per vertex */
                                   __global const float* slice_rest_copy_cx,
                                   __global const float* slice_rest_copy_cy, /* input: per slice */
-                                  __global float* spring_rest) {      /* output: per slot */
+                                  __global float* spring_rest) {            /* output: per slot */
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const int sv = slice[v];

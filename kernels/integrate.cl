@@ -2,10 +2,17 @@
  * at velocity_cap · Δt keeping its direction, then x ← x + v Δt. */
 
 /** One Euler step of vertex i. */
-__kernel void integrate(const WorldInfo world, const ForceParams p,
-                        __global const float* fx, __global const float* fy, __global const float* ft, /* input: Eq. 7 */
-                        __global float* vx, __global float* vy, __global float* vt, /* input/output: velocities */
-                        __global float* x, __global float* y, __global float* t) {  /* input/output: positions */
+__kernel void integrate(const WorldInfo world,
+                        const ForceParams p,
+                        __global const float* fx,
+                        __global const float* fy,
+                        __global const float* ft, /* input: Eq. 7 */
+                        __global float* vx,
+                        __global float* vy,
+                        __global float* vt, /* input/output: velocities */
+                        __global float* x,
+                        __global float* y,
+                        __global float* t) { /* input/output: positions */
   const int i = get_global_id(0);
   if (i >= world.vertices) return;
   const float dt = p.dt, cap = p.velocity_cap;

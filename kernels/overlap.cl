@@ -13,8 +13,17 @@ float ap_max(float a, float b) { return a < b ? b : a; }
 
 /** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
  * slices whose first vertices are lo and hi (reference overlap_edge). */
-void overlap_edge(__global const float* x, __global const float* y, int lo, int hi, int i, int edges, float w,
-                  float* ax, float* ay, float* bx, float* by) {
+void overlap_edge(__global const float* x,
+                  __global const float* y,
+                  int lo,
+                  int hi,
+                  int i,
+                  int edges,
+                  float w,
+                  float* ax,
+                  float* ay,
+                  float* bx,
+                  float* by) {
   const int j = i + 1 == edges ? 0 : i + 1;
   *ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
   *ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
@@ -27,11 +36,14 @@ void overlap_edge(__global const float* x, __global const float* y, int lo, int 
 __kernel void slice_boxes(const WorldInfo world,
                           __global const int* slice_begin,    /* input: slices + 1 */
                           __global const int* slice_boundary, /* input: boundary vertices per slice */
-                          __global const float* x, __global const float* y, /* input: positions */
-                          __global const float* t,                          /* input */
-                          __global float* box_x0, __global float* box_y0,   /* output: per slice */
-                          __global float* box_x1, __global float* box_y1,   /* output: per slice */
-                          __global float* box_t) {                          /* output: per slice */
+                          __global const float* x,
+                          __global const float* y, /* input: positions */
+                          __global const float* t, /* input */
+                          __global float* box_x0,
+                          __global float* box_y0, /* output: per slice */
+                          __global float* box_x1,
+                          __global float* box_y1,  /* output: per slice */
+                          __global float* box_t) { /* output: per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int lo = slice_begin[s], count = slice_boundary[s];
@@ -52,8 +64,16 @@ __kernel void slice_boxes(const WorldInfo world,
 /** The candidate lists of the broadphase cells a query box meets at time pt: up to four cells' lists in
  * begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells) for every element
  * (reference overlap_candidates). */
-int overlap_candidate_lists(const OverlapGridInfo grid, __global const int* grid_start, float ex0, float ex1,
-                            float ey0, float ey1, float pt, int* begin, int* end, bool* every) {
+int overlap_candidate_lists(const OverlapGridInfo grid,
+                            __global const int* grid_start,
+                            float ex0,
+                            float ex1,
+                            float ey0,
+                            float ey1,
+                            float pt,
+                            int* begin,
+                            int* end,
+                            bool* every) {
   *every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(pt);
   int lists = 0;
   if (*every) return 0;
@@ -73,7 +93,12 @@ int overlap_candidate_lists(const OverlapGridInfo grid, __global const int* grid
 }
 
 /** The candidate after e: e + 1, or the smallest listed element above e; `elements` when none is left. */
-int overlap_next_candidate(int e, int elements, bool every, int lists, int* begin, const int* end,
+int overlap_next_candidate(int e,
+                           int elements,
+                           bool every,
+                           int lists,
+                           int* begin,
+                           const int* end,
                            __global const int* grid_elements) {
   if (every) return e + 1 < elements ? e + 1 : elements;
   int next = elements;
@@ -88,10 +113,21 @@ int overlap_next_candidate(int e, int elements, bool every, int lists, int* begi
  * times), whose boxes meet the query box: its lower global slice, with *w the weight of pt between the
  * two (0 for a flat pair); -1 when pt is outside the pair or the boxes miss (reference
  * overlap_slice_pair). */
-int overlap_slice_pair(int e, int start, float pt, float ex0, float ex1, float ey0, float ey1,
-                       __global const int* element_slice_begin, __global const int* slice_begin,
-                       __global const float* t, __global const float* box_x0, __global const float* box_y0,
-                       __global const float* box_x1, __global const float* box_y1, float* w) {
+int overlap_slice_pair(int e,
+                       int start,
+                       float pt,
+                       float ex0,
+                       float ex1,
+                       float ey0,
+                       float ey1,
+                       __global const int* element_slice_begin,
+                       __global const int* slice_begin,
+                       __global const float* t,
+                       __global const float* box_x0,
+                       __global const float* box_y0,
+                       __global const float* box_x1,
+                       __global const float* box_y1,
+                       float* w) {
   const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
   if (count < 2) return -1;
   int k = start < count - 2 ? start : count - 2;
@@ -111,9 +147,22 @@ int overlap_slice_pair(int e, int start, float pt, float ex0, float ex1, float e
  * even-odd test of (px, py) into *inside, and into *crosses whether the query edge p → n properly crosses
  * one of its edges, tried until one is found and only where the two edges' boxes meet (reference
  * overlap_polygon_walk). */
-void overlap_polygon_walk(__global const float* x, __global const float* y, int lo, int hi, int edges, float w,
-                          float px, float py, float nx, float ny, float ex0, float ex1, float ey0, float ey1,
-                          bool* inside_out, bool* crosses_out) {
+void overlap_polygon_walk(__global const float* x,
+                          __global const float* y,
+                          int lo,
+                          int hi,
+                          int edges,
+                          float w,
+                          float px,
+                          float py,
+                          float nx,
+                          float ny,
+                          float ex0,
+                          float ex1,
+                          float ey0,
+                          float ey1,
+                          bool* inside_out,
+                          bool* crosses_out) {
   bool inside = false, crosses = false;
   int i = 0;
 #ifdef AP_LANES
@@ -147,8 +196,8 @@ void overlap_polygon_walk(__global const float* x, __global const float* y, int 
     float ax, ay, bx, by;
     overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
-    if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 &&
-        ap_min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
+    if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 && ap_min(ay, by) <= ey1 &&
+        segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
       crosses = true;
   }
   *inside_out = inside;
@@ -157,8 +206,16 @@ void overlap_polygon_walk(__global const float* x, __global const float* y, int 
 
 /** The way out of a point inside the interpolated polygon: its nearest outline point (*qx, *qy), the
  * first edge reaching the minimum winning; returns the squared distance (reference overlap_way_out). */
-float overlap_way_out(__global const float* x, __global const float* y, int lo, int hi, int edges, float w,
-                      float px, float py, float* qx, float* qy) {
+float overlap_way_out(__global const float* x,
+                      __global const float* y,
+                      int lo,
+                      int hi,
+                      int edges,
+                      float w,
+                      float px,
+                      float py,
+                      float* qx,
+                      float* qy) {
   float near2 = INFINITY;
   *qx = px;
   *qy = py;
@@ -178,14 +235,33 @@ float overlap_way_out(__global const float* x, __global const float* y, int lo, 
  * plus AP_CONTACT_BLOCK when an element it overlaps does not give way to `own` (any, except a secondary
  * one when `own` is primary), and AP_CONTACT_YIELD when such an element is no larger (g at pt) than
  * own_g or is primary while `own` is secondary. */
-uchar overlap_point(int own, float own_g, int start, float px, float py, float pt, float nx, float ny, int elements,
-                    __global const int* element_slice_begin, __global const int* slice_begin,
-                    __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
-                    __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                    __global const float* y, __global const float* t, __global const float* growth,
-                    __global const uchar* element_secondary, const OverlapGridInfo grid,
-                    __global const int* grid_start, __global const int* grid_elements, float* near2_out,
-                    float* qx_out, float* qy_out) {
+uchar overlap_point(int own,
+                    float own_g,
+                    int start,
+                    float px,
+                    float py,
+                    float pt,
+                    float nx,
+                    float ny,
+                    int elements,
+                    __global const int* element_slice_begin,
+                    __global const int* slice_begin,
+                    __global const int* slice_boundary,
+                    __global const float* box_x0,
+                    __global const float* box_y0,
+                    __global const float* box_x1,
+                    __global const float* box_y1,
+                    __global const float* x,
+                    __global const float* y,
+                    __global const float* t,
+                    __global const float* growth,
+                    __global const uchar* element_secondary,
+                    const OverlapGridInfo grid,
+                    __global const int* grid_start,
+                    __global const int* grid_elements,
+                    float* near2_out,
+                    float* qx_out,
+                    float* qy_out) {
   const bool own_secondary = element_secondary[own] != 0;
   const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
   bool overlap = false, found_inside = false, yield = false, block = false;
@@ -213,8 +289,7 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
     const bool other_secondary = element_secondary[e] != 0;
     if ((crosses || inside) && !(other_secondary && !own_secondary)) {
       block = true;
-      if ((own_secondary && !other_secondary) || !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g))
-        yield = true;
+      if ((own_secondary && !other_secondary) || !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g)) yield = true;
     }
     if (inside && (!found_inside || near2 < *near2_out)) {
       overlap = true;
@@ -232,8 +307,16 @@ uchar overlap_point(int own, float own_g, int start, float px, float py, float p
 }
 
 /** Folds one query point's bits into v's (reference overlap_fold): the deepest point inside gives the way out. */
-void overlap_fold(uchar found, float near2, float qx, float qy, float px, float py, uchar* bits, float* depth2,
-                  float* out_x, float* out_y) {
+void overlap_fold(uchar found,
+                  float near2,
+                  float qx,
+                  float qy,
+                  float px,
+                  float py,
+                  uchar* bits,
+                  float* depth2,
+                  float* out_x,
+                  float* out_y) {
   if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;
   if ((found & AP_CONTACT_YIELD) != 0) *bits |= AP_CONTACT_YIELD;
   if ((found & AP_CONTACT_BLOCK) != 0) *bits |= AP_CONTACT_BLOCK;
@@ -247,13 +330,28 @@ void overlap_fold(uchar found, float near2, float qx, float qy, float px, float 
 /** The overlap test of boundary vertex v (reference overlap_test): v, then the interval_points times
  * of each slice interval next to v that lie in the half nearer to v. Returns AP_CONTACT_OVERLAP, plus
  * AP_CONTACT_INSIDE with the way out (*out_x, *out_y) of the deepest point inside another element. */
-uchar overlap_test(int v, int interval_points, int elements, __global const int* element, __global const int* slice,
-                   __global const int* element_slice_begin, __global const int* slice_begin,
-                   __global const int* slice_boundary, __global const float* box_x0, __global const float* box_y0,
-                   __global const float* box_x1, __global const float* box_y1, __global const float* x,
-                   __global const float* y, __global const float* t, __global const float* growth,
-                   __global const uchar* element_secondary, const OverlapGridInfo grid,
-                   __global const int* grid_start, __global const int* grid_elements, float* out_x, float* out_y) {
+uchar overlap_test(int v,
+                   int interval_points,
+                   int elements,
+                   __global const int* element,
+                   __global const int* slice,
+                   __global const int* element_slice_begin,
+                   __global const int* slice_begin,
+                   __global const int* slice_boundary,
+                   __global const float* box_x0,
+                   __global const float* box_y0,
+                   __global const float* box_x1,
+                   __global const float* box_y1,
+                   __global const float* x,
+                   __global const float* y,
+                   __global const float* t,
+                   __global const float* growth,
+                   __global const uchar* element_secondary,
+                   const OverlapGridInfo grid,
+                   __global const int* grid_start,
+                   __global const int* grid_elements,
+                   float* out_x,
+                   float* out_y) {
   const int own = element[v], own_slice = slice[v];
   const int own_lo = slice_begin[own_slice], own_count = slice_boundary[own_slice];
   const int next = own_lo + (v - own_lo + 1 == own_count ? 0 : v - own_lo + 1);
@@ -265,9 +363,9 @@ uchar overlap_test(int v, int interval_points, int elements, __global const int*
   *out_x = 0.0f;
   *out_y = 0.0f;
   const float own_g = growth[own_slice];
-  uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements,
-                              element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y,
-                              t, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
+  uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
+                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, growth,
+                              element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
@@ -292,10 +390,22 @@ uchar overlap_test(int v, int interval_points, int elements, __global const int*
 
 /** Eq. 3: k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, in list order, plus
  * k_ovr_depth times the way out (out_x, out_y) when inside another element (reference overlap_force). */
-void overlap_force(const ForceParams p, int v, bool inside, float out_x, float out_y, __global const int* tri_begin,
-                   __global const int* tri_list, __global const int* tri_a, __global const int* tri_b,
-                   __global const int* tri_c, __global const float* x, __global const float* y,
-                   __global const float* t, float* fx, float* fy, float* ft) {
+void overlap_force(const ForceParams p,
+                   int v,
+                   bool inside,
+                   float out_x,
+                   float out_y,
+                   __global const int* tri_begin,
+                   __global const int* tri_list,
+                   __global const int* tri_a,
+                   __global const int* tri_b,
+                   __global const int* tri_c,
+                   __global const float* x,
+                   __global const float* y,
+                   __global const float* t,
+                   float* fx,
+                   float* fy,
+                   float* ft) {
   const float px = x[v], py = y[v], pt = t[v];
   float sx = 0.0f, sy = 0.0f, st = 0.0f;
   for (int k = tri_begin[v]; k < tri_begin[v + 1]; ++k) {

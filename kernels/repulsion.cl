@@ -40,9 +40,19 @@ void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float
  * (slot order within every partial). Lanes of the own element, or with d2 = 0 (w inf, NaN), add +0
  * instead of being skipped. The same float operations as the one-slot loop, which takes the rest of the
  * range (all of it on a GPU), and as the reference. */
-void repulsion_near_slots(int2 range, int own, float px, float py, float pt, float eps,
-                          __global const int* slot_element, __global const float* slot_vertices, int slots,
-                          float4* ax_sum, float4* ay_sum, float4* at_sum, float* closest2) {
+void repulsion_near_slots(int2 range,
+                          int own,
+                          float px,
+                          float py,
+                          float pt,
+                          float eps,
+                          __global const int* slot_element,
+                          __global const float* slot_vertices,
+                          int slots,
+                          float4* ax_sum,
+                          float4* ay_sum,
+                          float4* at_sum,
+                          float* closest2) {
   __global const float* ax = slot_vertices + AP_SLOT_AX * slots;
   __global const float* ay = slot_vertices + AP_SLOT_AY * slots;
   __global const float* at = slot_vertices + AP_SLOT_AT * slots;
@@ -65,16 +75,15 @@ void repulsion_near_slots(int2 range, int own, float px, float py, float pt, flo
       if (all(own_lane)) continue;
       ap_floatv qx, qy, qt;
       closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
-                                 ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k),
-                                 ap_vloadf(0, cx + k), ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
+                                 ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k), ap_vloadf(0, cx + k),
+                                 ap_vloadf(0, cy + k), ap_vloadf(0, ct + k), &qx, &qy, &qt);
       const ap_floatv ux = px - qx, uy = py - qy, ut = pt - qt;
       const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
       /* repulsion_weight with count 1, lane by lane. */
       const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
       const ap_intv take = ~own_lane & (d2 > 0.0f);
       const ap_floatv zero = (ap_floatv)(0.0f);
-      const ap_floatv wx = select(zero, ux * w, take), wy = select(zero, uy * w, take),
-                      wt = select(zero, ut * w, take);
+      const ap_floatv wx = select(zero, ux * w, take), wy = select(zero, uy * w, take), wt = select(zero, ut * w, take);
       lane_x = lane_x + wx.s0123, lane_y = lane_y + wy.s0123, lane_t = lane_t + wt.s0123;
       lane_x = lane_x + wx.s4567, lane_y = lane_y + wy.s4567, lane_t = lane_t + wt.s4567;
       lane_x = lane_x + wx.s89ab, lane_y = lane_y + wy.s89ab, lane_t = lane_t + wt.s89ab;
@@ -103,11 +112,23 @@ void repulsion_near_slots(int2 range, int own, float px, float py, float pt, flo
 /** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
  * triangle's centroid, or with far_cells every run's mean centroid, counted once per triangle of the run
  * (grid_runs). The range starts at a cell's first slot, which is a run's first slot. */
-void repulsion_far_slots(int2 range, int own, float px, float py, float pt, float eps, int far_cells,
-                         __global const int* slot_element, __global const float* slot_cx,
-                         __global const float* slot_cy, __global const float* slot_ct,
-                         __global const int* run_next, __global const float* run_cx,
-                         __global const float* run_cy, __global const float* run_ct, float* sx, float* sy,
+void repulsion_far_slots(int2 range,
+                         int own,
+                         float px,
+                         float py,
+                         float pt,
+                         float eps,
+                         int far_cells,
+                         __global const int* slot_element,
+                         __global const float* slot_cx,
+                         __global const float* slot_cy,
+                         __global const float* slot_ct,
+                         __global const int* run_next,
+                         __global const float* run_cx,
+                         __global const float* run_cy,
+                         __global const float* run_ct,
+                         float* sx,
+                         float* sy,
                          float* st) {
   if (far_cells) {
     for (int k = range.x; k < range.y;) {
@@ -128,31 +149,45 @@ void repulsion_far_slots(int2 range, int own, float px, float py, float pt, floa
  * is near) and its overlap test (a vertex that overlaps gets no Eq. 1 force: Eq. 3 takes over).
  * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
  * step_forces reads the results back per vertex. */
-__kernel void repulsion_force(const GridInfo grid, const ForceParams p, const int boundary_count, const int elements,
-                        __global const int* boundary_vertices,   /* input: the boundary vertices */
-                        __global const float* x, __global const float* y, __global const float* t, /* input */
-                        __global const int* element,             /* input: per vertex */
-                        __global const int* slice,               /* input: per vertex */
-                        __global const int* cell_start,          /* input: cells + 1 */
-                        __global const int* slot_element,        /* input: per grid slot (grid_gather) */
-                        __global const float* slot_vertices,     /* input: per grid slot (grid_gather) */
-                        __global const float* slot_cx, __global const float* slot_cy, __global const float* slot_ct,
-                        __global const int* run_next,            /* input: per grid slot (grid_runs) */
-                        __global const float* run_cx, __global const float* run_cy, __global const float* run_ct,
-                        __global const int* element_slice_begin, /* input: elements + 1 */
-                        __global const int* slice_begin,         /* input: slices + 1 */
-                        __global const int* slice_boundary,      /* input: per slice */
-                        __global const float* box_x0, __global const float* box_y0, /* input: slice_boxes */
-                        __global const float* box_x1, __global const float* box_y1, /* input */
-                        __global const float* growth,            /* input: g per slice */
-                        __global const uchar* element_secondary, /* input: per element, 1 if secondary */
-                        __global float* rpl_x, __global float* rpl_y, __global float* rpl_t, /* output: per vertex */
-                        __global float* closest,                 /* output: per vertex */
-                        __global uchar* contact,                 /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
-                        __global float* depth_x, __global float* depth_y, /* output: the way out when inside */
-                        const OverlapGridInfo overlap_grid,      /* the overlap test's broadphase */
-                        __global const int* overlap_start,       /* input: its cells + 1 */
-                        __global const int* overlap_elements) {  /* input: its element lists */
+__kernel void repulsion_force(const GridInfo grid,
+                              const ForceParams p,
+                              const int boundary_count,
+                              const int elements,
+                              __global const int* boundary_vertices, /* input: the boundary vertices */
+                              __global const float* x,
+                              __global const float* y,
+                              __global const float* t,             /* input */
+                              __global const int* element,         /* input: per vertex */
+                              __global const int* slice,           /* input: per vertex */
+                              __global const int* cell_start,      /* input: cells + 1 */
+                              __global const int* slot_element,    /* input: per grid slot (grid_gather) */
+                              __global const float* slot_vertices, /* input: per grid slot (grid_gather) */
+                              __global const float* slot_cx,
+                              __global const float* slot_cy,
+                              __global const float* slot_ct,
+                              __global const int* run_next, /* input: per grid slot (grid_runs) */
+                              __global const float* run_cx,
+                              __global const float* run_cy,
+                              __global const float* run_ct,
+                              __global const int* element_slice_begin, /* input: elements + 1 */
+                              __global const int* slice_begin,         /* input: slices + 1 */
+                              __global const int* slice_boundary,      /* input: per slice */
+                              __global const float* box_x0,
+                              __global const float* box_y0, /* input: slice_boxes */
+                              __global const float* box_x1,
+                              __global const float* box_y1,            /* input */
+                              __global const float* growth,            /* input: g per slice */
+                              __global const uchar* element_secondary, /* input: per element, 1 if secondary */
+                              __global float* rpl_x,
+                              __global float* rpl_y,
+                              __global float* rpl_t,   /* output: per vertex */
+                              __global float* closest, /* output: per vertex */
+                              __global uchar* contact, /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
+                              __global float* depth_x,
+                              __global float* depth_y,                /* output: the way out when inside */
+                              const OverlapGridInfo overlap_grid,     /* the overlap test's broadphase */
+                              __global const int* overlap_start,      /* input: its cells + 1 */
+                              __global const int* overlap_elements) { /* input: its element lists */
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];
@@ -181,17 +216,17 @@ __kernel void repulsion_force(const GridInfo grid, const ForceParams p, const in
   float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
   for (int dz = -2; dz <= 2; ++dz) {
     for (int dy = -2; dy <= 2; ++dy) {
-      if (abs(dz) == 2 || abs(dy) == 2) {  /* the whole row is in the shell */
+      if (abs(dz) == 2 || abs(dy) == 2) { /* the whole row is in the shell */
         repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
-      } else {                             /* only the row's two end cells are */
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
+                            &sx, &sy, &st);
+      } else { /* only the row's two end cells are */
         repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
+                            &sx, &sy, &st);
         repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
+                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
+                            &sx, &sy, &st);
       }
     }
   }

@@ -57,19 +57,19 @@ typedef float ap_float;
 
 /* The collision grid (reference::CollisionGrid without its arrays), passed to every grid kernel. */
 typedef struct {
-  ap_int n;              /* cells per axis */
-  ap_float cell;         /* cell edge */
-  ap_int triangles;      /* envelope triangles */
-  ap_int cells;          /* n * n * n */
-  ap_int far_cells;      /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
+  ap_int n;         /* cells per axis */
+  ap_float cell;    /* cell edge */
+  ap_int triangles; /* envelope triangles */
+  ap_int cells;     /* n * n * n */
+  ap_int far_cells; /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
 } GridInfo;
 
 /* The overlap test's broadphase (reference::OverlapGrid without its arrays), built on the host each
  * step and passed to the repulsion kernel. nx == 0: no grid, every query tries every element. */
 typedef struct {
-  ap_int nx, ny, nt;           /* cells per axis */
-  ap_float x0, y0, t0;         /* low corner */
-  ap_float cell, cell_t;       /* cell edge in x and y, in t */
+  ap_int nx, ny, nt;     /* cells per axis */
+  ap_float x0, y0, t0;   /* low corner */
+  ap_float cell, cell_t; /* cell edge in x and y, in t */
 } OverlapGridInfo;
 
 /* The container query's index (ContainerIndex in include/animpak/state.hpp without its list array, which
@@ -89,17 +89,17 @@ typedef struct {
   ap_float k_spring[AP_SPRING_CLASSES]; /* by SpringClass */
   ap_float k_target, k_overlap, k_overlap_depth, k_boundary, k_torsion, k_temporal;
   ap_float dt;
-  ap_float velocity_cap;                /* velocity_cap * dt */
-  ap_float growth_step;                 /* growth_rate * dt */
-  ap_float shrink_step;                 /* shrink_rate * dt */
+  ap_float velocity_cap; /* velocity_cap * dt */
+  ap_float growth_step;  /* growth_rate * dt */
+  ap_float shrink_step;  /* shrink_rate * dt */
   ap_float growth_ratio;
   ap_float neighbour_growth_ratio;
   ap_float max_growth;
   ap_float stop_gap;
-  ap_float k_target_angle;              /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
-  ap_float wall_range2;                 /* wall_range * wall_range */
-  ap_float settle_shrink_step;          /* settle_shrink_rate * dt */
-  ap_int interval_points;               /* times the overlap test checks inside each slice interval */
+  ap_float k_target_angle;     /* Eq. 5 on vertices with AP_VERTEX_HOLD_ANGLE */
+  ap_float wall_range2;        /* wall_range * wall_range */
+  ap_float settle_shrink_step; /* settle_shrink_rate * dt */
+  ap_int interval_points;      /* times the overlap test checks inside each slice interval */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

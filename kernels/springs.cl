@@ -2,9 +2,18 @@
  * over v's own CSR slots in slot order (each spring is stored at both ends). */
 
 /** Eq. 2 summed over vertex v's springs. */
-void spring_force(const ForceParams p, int v, __global const int* spring_begin, __global const int* spring_other,
-                  __global const uchar* spring_class, __global const float* spring_rest, __global const float* x,
-                  __global const float* y, __global const float* t, float* fx, float* fy, float* ft) {
+void spring_force(const ForceParams p,
+                  int v,
+                  __global const int* spring_begin,
+                  __global const int* spring_other,
+                  __global const uchar* spring_class,
+                  __global const float* spring_rest,
+                  __global const float* x,
+                  __global const float* y,
+                  __global const float* t,
+                  float* fx,
+                  float* fy,
+                  float* ft) {
   const float xa = x[v], ya = y[v], ta = t[v];
   float sx = 0.0f, sy = 0.0f, st = 0.0f;
   for (int k = spring_begin[v]; k < spring_begin[v + 1]; ++k) {

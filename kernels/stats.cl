@@ -8,12 +8,16 @@ __kernel void slice_statistics(const WorldInfo world,
                                __global const float* closest,   /* input: per vertex, from step_forces */
                                __global const uchar* contact,   /* input: AP_CONTACT_* per vertex */
                                __global const uchar* changed,   /* input: AP_GROWTH_* per slice */
-                               __global const float* x, __global const float* y, __global const float* t, /* input */
-                               __global const float* vx, __global const float* vy, __global const float* vt, /* input */
-                               __global float* slice_gap,       /* output: per slice */
-                               __global int* slice_overlap,     /* output: overlapping vertices per slice */
-                               __global int* slice_outside,     /* output: vertices outside the container per slice */
-                               __global int* slice_bad) {       /* output: first non-finite vertex, or -1 */
+                               __global const float* x,
+                               __global const float* y,
+                               __global const float* t, /* input */
+                               __global const float* vx,
+                               __global const float* vy,
+                               __global const float* vt,    /* input */
+                               __global float* slice_gap,   /* output: per slice */
+                               __global int* slice_overlap, /* output: overlapping vertices per slice */
+                               __global int* slice_outside, /* output: vertices outside the container per slice */
+                               __global int* slice_bad) {   /* output: first non-finite vertex, or -1 */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   float gap = INFINITY;
@@ -22,11 +26,11 @@ __kernel void slice_statistics(const WorldInfo world,
     gap = closest[v] < gap ? closest[v] : gap;
     overlapping += (contact[v] & AP_CONTACT_OVERLAP) != 0;
     outside += (contact[v] & AP_CONTACT_OUTSIDE) != 0;
-    const bool ok = isfinite(x[v]) && isfinite(y[v]) && isfinite(t[v]) && isfinite(vx[v]) && isfinite(vy[v]) &&
-                    isfinite(vt[v]);
+    const bool ok =
+        isfinite(x[v]) && isfinite(y[v]) && isfinite(t[v]) && isfinite(vx[v]) && isfinite(vy[v]) && isfinite(vt[v]);
     if (!ok && bad < 0) bad = v;
   }
-  slice_gap[s] = (changed[s] & AP_GROWTH_HELD) != 0 ? 0.0f : gap;  /* held back by growth_ratio: touching */
+  slice_gap[s] = (changed[s] & AP_GROWTH_HELD) != 0 ? 0.0f : gap; /* held back by growth_ratio: touching */
   slice_overlap[s] = overlapping;
   slice_outside[s] = outside;
   slice_bad[s] = bad;

@@ -1,8 +1,17 @@
 /* Target-point spring of a guided element's anchor, Eq. 2 with ℓ = 0 (src/solver/reference/target.cpp). */
 
 /** k_target · u/|u| · |u|² towards target point `target` (the caller checks the anchor flag). */
-void target_force(const ForceParams p, int target, float px, float py, float pt, __global const float* target_x,
-                  __global const float* target_y, __global const float* target_t, float* fx, float* fy, float* ft) {
+void target_force(const ForceParams p,
+                  int target,
+                  float px,
+                  float py,
+                  float pt,
+                  __global const float* target_x,
+                  __global const float* target_y,
+                  __global const float* target_t,
+                  float* fx,
+                  float* fy,
+                  float* ft) {
   const float ux = target_x[target] - px, uy = target_y[target] - py, ut = target_t[target] - pt;
   const float d2 = ux * ux + uy * uy + ut * ut;
   if (!(d2 > 0.0f)) return;

@@ -2,12 +2,13 @@
  * centroid, which a per-slice kernel computes first from the same snapshot of positions. */
 
 /** Mean x, y of every slice's vertices in index order; one work-item per slice. */
-__kernel void slice_centroids(const WorldInfo world,           /* input */
-                              __global const int* slice_begin, /* input: slice s holds [slice_begin[s], slice_begin[s+1]) */
-                              __global const float* x,         /* input: positions */
-                              __global const float* y,         /* input */
-                              __global float* cx,              /* output: centroid per slice */
-                              __global float* cy) {            /* output */
+__kernel void slice_centroids(
+    const WorldInfo world,           /* input */
+    __global const int* slice_begin, /* input: slice s holds [slice_begin[s], slice_begin[s+1]) */
+    __global const float* x,         /* input: positions */
+    __global const float* y,         /* input */
+    __global float* cx,              /* output: centroid per slice */
+    __global float* cy) {            /* output */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   float sx = 0.0f, sy = 0.0f;
@@ -26,8 +27,7 @@ __kernel void slice_centroids(const WorldInfo world,           /* input */
 
 /** Eq. 5: −sign(θ) k u⊥ turning u = x − c back towards the rest direction (rx, ry); the caller picks k,
  * k_tor or k_target_angle. */
-void torsion_force(const float k, float px, float py, float cx, float cy, float rx, float ry, float* fx,
-                   float* fy) {
+void torsion_force(const float k, float px, float py, float cx, float cy, float rx, float ry, float* fx, float* fy) {
   const float ux = px - cx, uy = py - cy;
   const float cross = rx * uy - ry * ux;
   if (cross == 0.0f) return;

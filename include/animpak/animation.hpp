@@ -47,9 +47,8 @@ class ArapSolver {
 
 /// Vertex positions of every slice, s = 0..slices-1 at t = s/(slices-1), for the animation in `spec`.
 /// `frame` maps the art coordinates used by handles, pivots and translations onto the unit square.
-std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outline& outline,
-                                              const ArtFrame& frame, const AnimationSpec& spec,
-                                              int slices);
+std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
+                                              const AnimationSpec& spec, int slices);
 
 /// The whole §3 pipeline for one library element: normalize, offset, sample, triangulate, bind,
 /// animate, extrude. Deterministic for a seed.

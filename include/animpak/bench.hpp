@@ -15,7 +15,7 @@ namespace animpak {
 struct BenchTarget {
   std::string device;  ///< name fragment as given
   GridSort sort = GridSort::automatic;
-  std::string label;   ///< the table's and the JSON's device name: "pocl", or "pocl:host" under --grid-sort both
+  std::string label;  ///< the table's and the JSON's device name: "pocl", or "pocl:host" under --grid-sort both
 };
 
 /// The reference first (the baseline every speedup is measured against), then each named OpenCL device

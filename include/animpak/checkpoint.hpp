@@ -17,10 +17,10 @@ namespace animpak {
 inline constexpr std::uint32_t checkpoint_version = 3;
 
 struct Checkpoint {
-  std::string scene_text;              ///< the scene file's contents when the packing started
-  std::filesystem::path scene_file;    ///< absolute in memory; stored relative to the state's folder
-  std::uint64_t seed = 0;              ///< the seed actually used (scene or --seed)
-  std::string stop_reason;             ///< "running" when interrupted or still going
+  std::string scene_text;            ///< the scene file's contents when the packing started
+  std::filesystem::path scene_file;  ///< absolute in memory; stored relative to the state's folder
+  std::uint64_t seed = 0;            ///< the seed actually used (scene or --seed)
+  std::string stop_reason;           ///< "running" when interrupted or still going
   SimState state;
 };
 

@@ -15,7 +15,9 @@ namespace closest_point_detail {
 
 inline float dot3(float ax, float ay, float at, float bx, float by, float bt) { return ax * bx + ay * by + at * bt; }
 
-inline Vec3f along(Vec3f o, float dx, float dy, float dt, float s) { return {o.x + dx * s, o.y + dy * s, o.t + dt * s}; }
+inline Vec3f along(Vec3f o, float dx, float dy, float dt, float s) {
+  return {o.x + dx * s, o.y + dy * s, o.t + dt * s};
+}
 
 }  // namespace closest_point_detail
 

@@ -29,7 +29,7 @@ struct FloatDifference {
   std::size_t first = 0;  ///< the first of them, when count > 0
   double max_abs = 0.0;   ///< largest |expected − actual|
   std::size_t max_abs_at = 0;
-  double max_rel = 0.0;   ///< largest |expected − actual| / max(|expected|, FLT_MIN)
+  double max_rel = 0.0;  ///< largest |expected − actual| / max(|expected|, FLT_MIN)
   std::size_t max_rel_at = 0;
   std::int64_t max_ulp = 0;
   std::size_t max_ulp_at = 0;

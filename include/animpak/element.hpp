@@ -40,9 +40,9 @@ std::vector<std::vector<Vec2>> painted_region(const ArtShape& art);
 
 /// The element's outer outline: union of all paths, offset by `offset`, largest piece kept.
 struct Outline {
-  std::vector<Vec2> ring;              ///< simple polygon, counter-clockwise in y-up terms, no repeat
-  std::vector<std::string> notes;      ///< e.g. "dropped 2 pieces smaller than the largest"
-  std::string source;                  ///< the art file, named in build_slice's errors
+  std::vector<Vec2> ring;          ///< simple polygon, counter-clockwise in y-up terms, no repeat
+  std::vector<std::string> notes;  ///< e.g. "dropped 2 pieces smaller than the largest"
+  std::string source;              ///< the art file, named in build_slice's errors
 };
 Outline element_outline(const NormalizedArt& art, double offset);
 
@@ -93,16 +93,15 @@ std::vector<std::vector<std::vector<Vec2>>> replay_art(const ArtBinding& binding
 
 /// Springs as a per-vertex adjacency (each spring appears once at each of its two ends).
 struct SpringCsr {
-  std::vector<int> offsets;     ///< vertex v's springs are [offsets[v], offsets[v+1])
-  std::vector<int> neighbors;   ///< the other end
-  std::vector<double> rest;     ///< rest length
+  std::vector<int> offsets;    ///< vertex v's springs are [offsets[v], offsets[v+1])
+  std::vector<int> neighbors;  ///< the other end
+  std::vector<double> rest;    ///< rest length
   std::vector<SpringClass> classes;
   /// Springs of one class, each counted once.
   std::size_t count(SpringClass c) const;
   /// Builds the adjacency from an undirected list; rest lengths from `x`, `y`.
-  static SpringCsr from_edges(int vertex_count, const std::vector<Edge>& edges,
-                              const std::vector<SpringClass>& classes, const std::vector<double>& x,
-                              const std::vector<double>& y);
+  static SpringCsr from_edges(int vertex_count, const std::vector<Edge>& edges, const std::vector<SpringClass>& classes,
+                              const std::vector<double>& x, const std::vector<double>& y);
 };
 
 /// A slice mesh extruded over n_s slices (paper §3.1). Vertex v of slice s has id s * P + v.
@@ -112,8 +111,8 @@ struct SpacetimeElement {
   ArtBinding binding;
   SliceMesh slice;  ///< undeformed slice topology and rest positions
   int slice_count = 0;
-  std::vector<double> x, y, t;  ///< animated positions of every vertex, slice-major
-  SpringCsr springs;            ///< edge, shear and negative-space springs on every slice, plus time springs
+  std::vector<double> x, y, t;     ///< animated positions of every vertex, slice-major
+  SpringCsr springs;               ///< edge, shear and negative-space springs on every slice, plus time springs
   std::vector<Triangle> envelope;  ///< two time edges and one boundary edge each; vertex ids
   std::vector<std::string> notes;  ///< what building it changed, e.g. the outline's dropped pieces
 

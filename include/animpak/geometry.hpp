@@ -78,7 +78,8 @@ inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
 /// Distance from p to the closed polygon's edges.
 inline double ring_distance(const std::vector<Vec2>& ring, Vec2 p) {
   double d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < ring.size(); ++i) d = std::min(d, segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    d = std::min(d, segment_distance(p, ring[i], ring[(i + 1) % ring.size()]));
   return d;
 }
 

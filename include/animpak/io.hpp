@@ -33,9 +33,9 @@ struct Polyline {
 
 /// One drawable path: one or more subpaths painted together under one style.
 struct ArtPath {
-  std::string id;           ///< SVG id (or "path<N>" for .path files); used in messages
-  int source_index = 0;     ///< position of the path in its file (0-based), stable for scene references
-  int path_type = 0;        ///< `.path` pathType (0 boundary … 7 hole); 0 for SVG
+  std::string id;        ///< SVG id (or "path<N>" for .path files); used in messages
+  int source_index = 0;  ///< position of the path in its file (0-based), stable for scene references
+  int path_type = 0;     ///< `.path` pathType (0 boundary … 7 hole); 0 for SVG
   std::vector<Polyline> polylines;
   Paint fill;
   Paint stroke;
@@ -52,7 +52,7 @@ struct ArtShape {
   /// The root <svg>'s viewport in art coordinates, what a browser shows, when the file sets its width
   /// and height or a viewBox; absent for .path files and for SVGs that set neither.
   std::optional<Box> viewport;
-  Box bounds() const;                 ///< box of every polyline point
+  Box bounds() const;  ///< box of every polyline point
 };
 
 struct SvgOptions {

@@ -102,7 +102,6 @@ class OpenclBackend : public Backend {
 /// (the build log included); std::invalid_argument for a reference choice or a topology the kernels
 /// cannot run (a vertex in two loop pairs, slices not covering the vertices in order).
 std::unique_ptr<OpenclBackend> make_opencl_backend(const Topology& topology, SimState initial, const Params& params,
-                                                   const DeviceChoice& choice,
-                                                   GridSort sort = GridSort::automatic);
+                                                   const DeviceChoice& choice, GridSort sort = GridSort::automatic);
 
 }  // namespace animpak

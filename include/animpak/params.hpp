@@ -15,22 +15,22 @@ namespace animpak {
 struct Params {
   /// Reading the art (src/io).
   struct ArtImport {
-    double flatten_tolerance = 0.1;   ///< largest curve-to-polyline distance when flattening, art units
+    double flatten_tolerance = 0.1;  ///< largest curve-to-polyline distance when flattening, art units
   };
 
   /// §3 spacetime elements (src/element).
   struct Element {
-    double offset = 0.04;             ///< Δs, channel of negative space around each element (unit square)
-    double boundary_spacing = 0.15;   ///< longest boundary edge, between samples of the offset outline
+    double offset = 0.04;               ///< Δs, channel of negative space around each element (unit square)
+    double boundary_spacing = 0.15;     ///< longest boundary edge, between samples of the offset outline
     double boundary_tolerance = 0.008;  ///< largest distance between the boundary polygon and the outline
-    double interior_spacing = 0.15;   ///< minimum distance between interior (Poisson-disk) samples
-    int slices = 100;                 ///< n_s, slices along the time axis
+    double interior_spacing = 0.15;     ///< minimum distance between interior (Poisson-disk) samples
+    int slices = 100;                   ///< n_s, slices along the time axis
   };
 
   /// §4 initial configuration (src/scene).
   struct Placement {
-    double initial_scale = 0.07;      ///< elements start at 5–10 % of their size
-    double seed_spacing = 0.2;        ///< blue-noise distance between unguided seeds when the scene fills
+    double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
+    double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
   };
 
   /// §5 forces, integration and the spatial queries (src/solver).
@@ -62,23 +62,23 @@ struct Params {
 
   /// §5.3 growth (src/solver).
   struct Growth {
-    double growth_rate = 0.01;        ///< g grows by growth_rate · Δt_sim per step on a free slice
-    double shrink_rate = 0.01;        ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
-    double growth_ratio = 1.3;        ///< an element's largest g is at most growth_ratio × its smallest
+    double growth_rate = 0.01;  ///< g grows by growth_rate · Δt_sim per step on a free slice
+    double shrink_rate = 0.01;  ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
+    double growth_ratio = 1.3;  ///< an element's largest g is at most growth_ratio × its smallest
     double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
-    double settle_shrink_rate = 0.04;  ///< while settling, overlapping and spilling slices shrink this fast
-    double max_growth = 15.0;         ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
+    double settle_shrink_rate = 0.04;      ///< while settling, overlapping and spilling slices shrink this fast
+    double max_growth = 15.0;              ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
   };
 
   /// §5.3 stopping, and how often the run checks (src/solver).
   struct Stop {
-    double stop_gap = 0.006;          ///< stop when the largest per-slice closest distance is below this
-    double stop_growth = 0.0;         ///< also stop when every slice's g exceeds this (0: off)
-    int max_iterations = 100000;      ///< hard cap on steps
-    int settle_iterations = 3000;     ///< after the gap test passes, steps without growth to clear overlaps
-    int stall_window = 1000;          ///< the stall test compares the mean g this many steps apart (0: off)
-    double stall_growth = 0.01;       ///< growth has stalled when the mean g rose by less than this share in a window
-    int check_interval = 10;          ///< NaN/Inf check and statistics every k steps
+    double stop_gap = 0.006;       ///< stop when the largest per-slice closest distance is below this
+    double stop_growth = 0.0;      ///< also stop when every slice's g exceeds this (0: off)
+    int max_iterations = 100000;   ///< hard cap on steps
+    int settle_iterations = 3000;  ///< after the gap test passes, steps without growth to clear overlaps
+    int stall_window = 1000;       ///< the stall test compares the mean g this many steps apart (0: off)
+    double stall_growth = 0.01;    ///< growth has stalled when the mean g rose by less than this share in a window
+    int check_interval = 10;       ///< NaN/Inf check and statistics every k steps
   };
 
   ArtImport art;
@@ -91,11 +91,11 @@ struct Params {
 
 /// One entry of the table of overridable constants.
 struct ParamInfo {
-  std::string_view name;  ///< key in the scene file's "params" object, the member's own name
+  std::string_view name;   ///< key in the scene file's "params" object, the member's own name
   std::string_view group;  ///< the Params group holding it: "art", "element", "placement", "forces", "growth", "stop"
   std::variant<double& (*)(Params&), int& (*)(Params&)> field;  ///< the member, in a given Params
-  double min;             ///< smallest valid value (inclusive)
-  double max;             ///< largest valid value (inclusive)
+  double min;                                                   ///< smallest valid value (inclusive)
+  double max;                                                   ///< largest valid value (inclusive)
   std::string_view meaning;
   std::string_view paper;  ///< what the paper gives, before the conversion to the unit container
 };

@@ -26,11 +26,12 @@ namespace animpak::reference {
 /// Envelope-triangle centroids binned into cubic cells over the unit cube (x, y, t), sorted by cell
 /// with a stable counting sort (count → exclusive scan → scatter), as cuNSearch does.
 struct CollisionGrid {
-  std::int32_t n = 0;        ///< cells per axis
-  float cell = 0.0f;         ///< cell edge
-  std::vector<float> cx, cy, ct;           ///< centroid of envelope triangle i
-  std::vector<std::int32_t> triangle_cell; ///< linear cell of envelope triangle i
-  std::vector<std::int32_t> cell_start;    ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
+  std::int32_t n = 0;                       ///< cells per axis
+  float cell = 0.0f;                        ///< cell edge
+  std::vector<float> cx, cy, ct;            ///< centroid of envelope triangle i
+  std::vector<std::int32_t> triangle_cell;  ///< linear cell of envelope triangle i
+  std::vector<std::int32_t>
+      cell_start;  ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
   std::vector<std::int32_t> sorted_triangles;  ///< triangle ids, by cell, increasing id within a cell
   /// The element of each slot: env_element[sorted_triangles[k]], laid out in slot order (the kernels'
   /// slot_element), so the cell walks test ownership from one array instead of through two.
@@ -69,10 +70,8 @@ void build_far_runs(CollisionGrid& grid);
 /// cells around q's cell ("near"), or in the 98 cells of the outer shell of the 5×5×5 block ("far").
 /// Cells outside the grid are skipped. Order: cells by dz, dy, dx ascending, then sorted order within
 /// a cell. `out` is cleared first.
-void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-                    std::vector<std::int32_t>& out);
-void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-                   std::vector<std::int32_t>& out);
+void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
+void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
 
 /// The near triangles as grid slots, in the same order (the triangle is sorted_triangles[k]): Eq. 1
 /// adds each one's term to the partial sum of its slot mod 4 (repulsion_force).
@@ -80,8 +79,7 @@ void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_e
 
 /// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
 /// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
-void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-               std::vector<std::int32_t>& out);
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
 
 // ---- geometry helpers ---------------------------------------------------------------------------------
 
@@ -115,9 +113,8 @@ struct RepulsionResult {
 /// boundary vertex.
 /// repulsion.cpp.
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
-                                const CollisionGrid& grid, std::int32_t v,
-                                const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
-                                bool overlapping);
+                                const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
+                                const std::vector<std::int32_t>& far, bool overlapping);
 
 /// Per global slice, the box of its boundary polygon (x0 ≤ x ≤ x1, y0 ≤ y ≤ y1) and its t (its first
 /// vertex's), from one snapshot of positions. overlap.cpp.
@@ -135,8 +132,9 @@ struct OverlapGrid {
   std::int32_t nx = 0, ny = 0, nt = 0;    ///< cells per axis
   float x0 = 0.0f, y0 = 0.0f, t0 = 0.0f;  ///< the grid's low corner
   float cell = 1.0f, cell_t = 1.0f;       ///< cell edge in x and y, in t
-  std::vector<std::int32_t> cell_start;   ///< nx · ny · nt + 1 entries: cell c lists elements[cell_start[c], cell_start[c+1])
-  std::vector<std::int32_t> elements;     ///< element ids, by cell, increasing within a cell
+  std::vector<std::int32_t>
+      cell_start;  ///< nx · ny · nt + 1 entries: cell c lists elements[cell_start[c], cell_start[c+1])
+  std::vector<std::int32_t> elements;  ///< element ids, by cell, increasing within a cell
 };
 
 /// Builds the broadphase from this step's slice boxes: the pairs in increasing slice order, each in
@@ -153,14 +151,14 @@ void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex
 
 /// What the overlap test found for one boundary vertex (docs/parameters.md, "Overlaps").
 struct OverlapResult {
-  bool overlap = false;  ///< v or a point between slices next to it lies inside another element, or
-                         ///< its edge crosses one
-  bool inside = false;   ///< v or a point between slices next to it lies inside another element
+  bool overlap = false;              ///< v or a point between slices next to it lies inside another element, or
+                                     ///< its edge crosses one
+  bool inside = false;               ///< v or a point between slices next to it lies inside another element
   float out_x = 0.0f, out_y = 0.0f;  ///< when inside: from the deepest such point to its nearest way out
-  bool yield = false;    ///< one of the elements it overlaps is, there, no larger than v's slice (g),
-                         ///< or is primary while v's element is secondary
-  bool block = false;    ///< one of the elements it overlaps does not give way to v's element: any,
-                         ///< except a secondary one when v's element is primary
+  bool yield = false;                ///< one of the elements it overlaps is, there, no larger than v's slice (g),
+                                     ///< or is primary while v's element is secondary
+  bool block = false;                ///< one of the elements it overlaps does not give way to v's element: any,
+                                     ///< except a secondary one when v's element is primary
 };
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
@@ -193,7 +191,7 @@ Vec3f target_force(const Topology& topo, const SimState& state, const Params& pa
 
 /// Where a point lies against the container (x, y only: the container is the same at every t).
 struct ContainerQuery {
-  bool inside = true;          ///< inside the outline and outside every hole (even–odd over all rings)
+  bool inside = true;  ///< inside the outline and outside every hole (even–odd over all rings)
   float distance2 = std::numeric_limits<float>::infinity();  ///< squared distance to the nearest segment
   float qx = 0.0f, qy = 0.0f;  ///< that nearest point (the first segment reaching the minimum wins)
 };
@@ -216,13 +214,12 @@ Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, fl
 Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
 
 /// Current centroid of every slice (mean of its vertices in index order), for Eq. 5. torsion.cpp.
-void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx,
-                     std::vector<float>& cy);
+void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx, std::vector<float>& cy);
 
 /// Eq. 5 with the slice centroid (cx, cy) of v's slice, at k_target_angle for a vertex_hold_angle vertex
 /// and k_torsion otherwise. torsion.cpp.
-Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
-                    float cx, float cy);
+Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v, float cx,
+                    float cy);
 
 /// Eq. 6: k_tmp (rest_t − t) along t. temporal.cpp.
 Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
@@ -233,7 +230,11 @@ Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& 
 struct ForceField {
   std::vector<float> x, y, t;
   void assign(std::size_t n);  ///< n zero vectors
-  void set(std::int32_t v, Vec3f f) { x[v] = f.x; y[v] = f.y; t[v] = f.t; }
+  void set(std::int32_t v, Vec3f f) {
+    x[v] = f.x;
+    y[v] = f.y;
+    t[v] = f.t;
+  }
   Vec3f at(std::int32_t v) const { return {x[v], y[v], t[v]}; }
 };
 
@@ -243,16 +244,16 @@ struct ForceBreakdown {
 };
 
 struct StepForces {
-  ForceField total;                  ///< Eq. 7 per vertex
+  ForceField total;  ///< Eq. 7 per vertex
   /// Per boundary vertex, the distance to the nearest other element or container wall (the slice gap of
   /// §5.3 counts the wall as a neighbour), 0 when it overlaps; +inf for interior vertices.
   std::vector<float> closest;
-  std::vector<std::uint8_t> contact; ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
+  std::vector<std::uint8_t> contact;  ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
 };
 
 /// Eq. 7 for every vertex from one snapshot of positions. forces.cpp.
-StepForces step_forces(const Topology& topo, const SimState& state, const Params& params,
-                       const CollisionGrid& grid, ForceBreakdown* out);
+StepForces step_forces(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
+                       ForceBreakdown* out);
 
 /// Symplectic Euler with the velocity cap (§5). integrate.cpp.
 void integrate(const ForceField& force, const Params& params, SimState& state);
@@ -288,8 +289,8 @@ enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shra
 /// vertex nearer the wall than stop_gap, or is at max_growth keeps its g; any other grows by growth_rate ·
 /// Δt_sim. Without `growing` (the settling phase) no slice grows, and every overlapping or spilling slice
 /// shrinks by settle_shrink_rate · Δt_sim.
-void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                    bool growing, const SimState& state, std::vector<float>& proposed);
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params, bool growing,
+                    const SimState& state, std::vector<float>& proposed);
 
 /// Every slice's new g: its proposal, limited to growth_ratio × the smallest proposal of its element and
 /// to neighbour_growth_ratio × the proposal of each time neighbour. `changed` marks what moved; returns

@@ -48,8 +48,8 @@ class Picture {
   void draw_art(const ArtShape& art, const ArtPoints& points, double opacity = 1.0, double stroke_scale = 1.0,
                 double min_stroke_px = 0.5);
   /// Line segments between positions[e[0]] and positions[e[1]]; width in pixels.
-  void draw_edges(const std::vector<Vec2>& positions, const std::vector<Edge>& edges, Rgba color,
-                  double width_px, bool dashed = false);
+  void draw_edges(const std::vector<Vec2>& positions, const std::vector<Edge>& edges, Rgba color, double width_px,
+                  bool dashed = false);
   /// A closed polygon outline.
   void draw_ring(const std::vector<Vec2>& ring, Rgba color, double width_px);
   void draw_dots(const std::vector<Vec2>& positions, Rgba color, double radius_px);
@@ -151,10 +151,10 @@ struct PairShare {
 /// docs/quality.md says how each number is computed.
 struct FrameMetrics {
   double t = 0.0;
-  double coverage = 0.0;    ///< area((∪ art) ∩ container) / area(container)
-  double min_gap = 0.0;     ///< smallest art-to-art distance over all pairs (0: some art touches or overlaps)
-  double mean_gap = 0.0;    ///< mean over elements of the distance from its art to the nearest other art
-  double channel_cv = 0.0;  ///< coefficient of variation of the channel widths sampled along every outline
+  double coverage = 0.0;              ///< area((∪ art) ∩ container) / area(container)
+  double min_gap = 0.0;               ///< smallest art-to-art distance over all pairs (0: some art touches or overlaps)
+  double mean_gap = 0.0;              ///< mean over elements of the distance from its art to the nearest other art
+  double channel_cv = 0.0;            ///< coefficient of variation of the channel widths sampled along every outline
   std::vector<double> area;           ///< per element: the area of its art
   std::vector<double> outside_share;  ///< per element: area(art − container) / area(art)
   std::vector<PairShare> overlaps;    ///< every pair whose art overlaps: area / the smaller art's area

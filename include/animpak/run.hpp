@@ -9,15 +9,15 @@
 namespace animpak {
 
 struct RunControl {
-  std::uint64_t max_iterations = 0;                  ///< absolute iteration count to stop at
-  const std::atomic<bool>* interrupt = nullptr;      ///< set by a signal handler (Ctrl-C)
+  std::uint64_t max_iterations = 0;                     ///< absolute iteration count to stop at
+  const std::atomic<bool>* interrupt = nullptr;         ///< set by a signal handler (Ctrl-C)
   std::function<void(const StepStatistics&)> on_check;  ///< progress, after every statistics check
 };
 
 struct RunResult {
   StopReason reason = StopReason::running;
-  StepStatistics last;     ///< the latest statistics
-  SimState last_good;      ///< the latest state known to be finite (the final state unless non_finite)
+  StepStatistics last;  ///< the latest statistics
+  SimState last_good;   ///< the latest state known to be finite (the final state unless non_finite)
   double seconds = 0.0;
 };
 

@@ -45,14 +45,14 @@ std::vector<Vec2> poisson_disk(const Container& container, double min_distance, 
 
 /// One element in the container: a library element, shrunk, oriented and placed.
 struct ElementInstance {
-  std::string name;       ///< "<library name>#<k>" for unguided elements, the guided name otherwise
-  int library = 0;        ///< index into World::library
+  std::string name;  ///< "<library name>#<k>" for unguided elements, the guided name otherwise
+  int library = 0;   ///< index into World::library
   bool guided = false;
-  bool secondary = false; ///< docs/parameters.md, "Secondary elements"
-  int vertex_begin = 0;   ///< its first global vertex id
-  int slice_begin = 0;    ///< its first global slice id
-  Vec2 position;          ///< unit coordinates of its seed (unguided) or first target (guided)
-  double angle = 0.0;     ///< radians, clockwise on screen
+  bool secondary = false;  ///< docs/parameters.md, "Secondary elements"
+  int vertex_begin = 0;    ///< its first global vertex id
+  int slice_begin = 0;     ///< its first global slice id
+  Vec2 position;           ///< unit coordinates of its seed (unguided) or first target (guided)
+  double angle = 0.0;      ///< radians, clockwise on screen
 };
 
 /// Everything a simulation starts from.

@@ -43,11 +43,11 @@ enum class AnimationPreset { none, rotate, pulse, swim };
 
 struct AnimationSpec {
   AnimationPreset preset = AnimationPreset::none;
-  double turns = 1.0;       ///< rotate: turns per loop; negative turns the other way
-  double amplitude = 0.15;  ///< pulse: relative scale change; swim: bend as a fraction of the body length
-  int count = 1;            ///< pulse: pulses per loop; swim: waves passing per loop
-  double wavelength = 1.0;  ///< swim: wave length as a fraction of the body length
-  bool loop = true;         ///< splines are periodic and t = 1 equals t = 0
+  double turns = 1.0;         ///< rotate: turns per loop; negative turns the other way
+  double amplitude = 0.15;    ///< pulse: relative scale change; swim: bend as a fraction of the body length
+  int count = 1;              ///< pulse: pulses per loop; swim: waves passing per loop
+  double wavelength = 1.0;    ///< swim: wave length as a fraction of the body length
+  bool loop = true;           ///< splines are periodic and t = 1 equals t = 0
   std::optional<Vec2> pivot;  ///< art coordinates; default: the centroid of the element's outline
   std::vector<TransformKey> keys;
   std::vector<HandleSpec> handles;
@@ -55,7 +55,7 @@ struct AnimationSpec {
 
 struct ContainerSpec {
   std::filesystem::path art;
-  std::optional<int> outline;       ///< source index of the outline path; default: the largest path not a hole
+  std::optional<int> outline;             ///< source index of the outline path; default: the largest path not a hole
   std::optional<std::vector<int>> holes;  ///< source indices; default: `.path` type-7 paths, none for SVG
 };
 
@@ -75,8 +75,8 @@ struct LibraryElementSpec {
 };
 
 struct TargetSpec {
-  double x = 0.0, y = 0.0;  ///< container art coordinates
-  double t = 0.0;           ///< in [0, 1]; the first target has t = 0 and the last t = 1
+  double x = 0.0, y = 0.0;      ///< container art coordinates
+  double t = 0.0;               ///< in [0, 1]; the first target has t = 0 and the last t = 1
   std::optional<double> scale;  ///< relative to the element's packed size
   std::optional<double> angle;  ///< degrees
 };
@@ -93,9 +93,9 @@ enum class FieldKind { constant, radial, tangential };
 
 struct OrientationSpec {
   OrientationMode mode = OrientationMode::random;
-  double angle = 0.0;            ///< fixed: degrees; field constant: the field's direction
+  double angle = 0.0;  ///< fixed: degrees; field constant: the field's direction
   FieldKind field = FieldKind::constant;
-  Vec2 center{250.0, 250.0};     ///< radial/tangential: container art coordinates
+  Vec2 center{250.0, 250.0};  ///< radial/tangential: container art coordinates
 };
 
 struct SceneSpec {
@@ -104,10 +104,10 @@ struct SceneSpec {
   std::vector<LibraryElementSpec> elements;
   std::vector<GuidedSpec> guided;
   OrientationSpec orientation;
-  std::optional<int> count;       ///< unguided elements to seed; default: as many as fit ("fill")
+  std::optional<int> count;  ///< unguided elements to seed; default: as many as fit ("fill")
   std::uint64_t seed = 1;
-  bool loop = true;               ///< loop constraint on: the t = 1 plane meets the t = 0 plane
-  Params params;                  ///< paper constants with the scene's overrides applied
+  bool loop = true;  ///< loop constraint on: the t = 1 plane meets the t = 0 plane
+  Params params;     ///< paper constants with the scene's overrides applied
 };
 
 /// Reads, parses and validates a scene file. Errors are InputError with the file and the field path,

@@ -20,14 +20,14 @@ const char* stop_reason_name(StopReason r);
 /// Reduced statistics of the latest step (no full read-back needed).
 struct StepStatistics {
   std::uint64_t iteration = 0;
-  float max_slice_gap = 0.0f;   ///< largest per-slice closest distance to another element (§5.3 stop test)
+  float max_slice_gap = 0.0f;  ///< largest per-slice closest distance to another element (§5.3 stop test)
   float min_slice_gap = 0.0f;
-  double growing_share = 0.0;   ///< share of slices whose g grew in the last step
+  double growing_share = 0.0;             ///< share of slices whose g grew in the last step
   std::int64_t overlapping_vertices = 0;  ///< boundary vertices inside another element or crossing one
   std::int64_t outside_vertices = 0;      ///< vertices outside the container (before containment moved them)
   float min_growth = 1.0f, max_growth = 1.0f;
-  double mean_growth = 1.0;     ///< mean g over all slices, summed in slice order
-  bool finite = true;           ///< every position and velocity is finite
+  double mean_growth = 1.0;            ///< mean g over all slices, summed in slice order
+  bool finite = true;                  ///< every position and velocity is finite
   std::int32_t first_bad_vertex = -1;  ///< when not finite
 };
 
@@ -39,7 +39,9 @@ struct SliceStatistics {
   std::vector<std::int32_t> overlapping;  ///< vertices with contact_overlap
   std::vector<std::int32_t> outside;      ///< vertices with contact_outside
   std::vector<std::int32_t> first_bad;    ///< first vertex with a non-finite position or velocity, or -1
-  void resize(std::size_t slices) { gap.resize(slices), overlapping.resize(slices), outside.resize(slices), first_bad.resize(slices); }
+  void resize(std::size_t slices) {
+    gap.resize(slices), overlapping.resize(slices), outside.resize(slices), first_bad.resize(slices);
+  }
 };
 
 /// StepStatistics from the per-slice statistics, reduced in slice order the same way for every backend:
@@ -59,10 +61,14 @@ struct NamedPhase {
   const char* name;
   double PhaseTimes::*seconds;
 };
-inline constexpr NamedPhase phase_fields[] = {
-    {"grid", &PhaseTimes::grid},       {"forces", &PhaseTimes::forces},         {"integrate", &PhaseTimes::integrate},
-    {"constraints", &PhaseTimes::constraints}, {"loop", &PhaseTimes::loop},     {"growth", &PhaseTimes::growth},
-    {"statistics", &PhaseTimes::statistics},   {"transfer", &PhaseTimes::transfer}};
+inline constexpr NamedPhase phase_fields[] = {{"grid", &PhaseTimes::grid},
+                                              {"forces", &PhaseTimes::forces},
+                                              {"integrate", &PhaseTimes::integrate},
+                                              {"constraints", &PhaseTimes::constraints},
+                                              {"loop", &PhaseTimes::loop},
+                                              {"growth", &PhaseTimes::growth},
+                                              {"statistics", &PhaseTimes::statistics},
+                                              {"transfer", &PhaseTimes::transfer}};
 
 /// Adds the seconds of its own lifetime to `sink`: a named timing scope per phase of a step.
 class PhaseStopwatch {

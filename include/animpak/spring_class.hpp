@@ -11,11 +11,16 @@ inline constexpr int spring_class_count = 5;
 
 constexpr const char* spring_class_name(SpringClass c) {
   switch (c) {
-    case SpringClass::edge: return "edge";
-    case SpringClass::shear: return "shear";
-    case SpringClass::negative_space: return "negative_space";
-    case SpringClass::time: return "time";
-    case SpringClass::target: return "target";
+    case SpringClass::edge:
+      return "edge";
+    case SpringClass::shear:
+      return "shear";
+    case SpringClass::negative_space:
+      return "negative_space";
+    case SpringClass::time:
+      return "time";
+    case SpringClass::target:
+      return "target";
   }
   return "unknown";
 }

@@ -17,8 +17,8 @@ struct Vec3f {
 };
 
 enum VertexFlag : std::uint8_t {
-  vertex_boundary = 1,   ///< on its slice's outer boundary (repulsion, overlap, envelope)
-  vertex_anchor = 2,     ///< a guided element's anchor on a slice with a target (has a target-point spring)
+  vertex_boundary = 1,     ///< on its slice's outer boundary (repulsion, overlap, envelope)
+  vertex_anchor = 2,       ///< a guided element's anchor on a slice with a target (has a target-point spring)
   vertex_hold_angle = 16,  ///< on a guided element's slice whose target gives an angle: Eq. 5 with k_target_angle
 };
 
@@ -54,7 +54,7 @@ struct ContainerIndex {
 
 /// The container extruded over t: line segments of the outline and of every hole.
 struct ContainerGeometry {
-  std::vector<float> ax, ay, bx, by;  ///< segment i runs from (ax[i], ay[i]) to (bx[i], by[i])
+  std::vector<float> ax, ay, bx, by;     ///< segment i runs from (ax[i], ay[i]) to (bx[i], by[i])
   std::vector<std::int32_t> ring_begin;  ///< ring r is segments [ring_begin[r], ring_begin[r+1]); ring 0 the outline
   ContainerIndex index;                  ///< built by index_container; empty: every query tries every segment
 };
@@ -76,12 +76,12 @@ inline std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
 /// Everything that does not move during a simulation. Vertex ids are global (all elements).
 struct Topology {
   // per vertex
-  std::vector<std::int32_t> element;      ///< element id
-  std::vector<std::int32_t> slice;        ///< global slice id
-  std::vector<std::uint8_t> flags;        ///< VertexFlag bits
-  std::vector<float> rest_t;              ///< t of its slice at creation (temporal force, Eq. 6)
+  std::vector<std::int32_t> element;          ///< element id
+  std::vector<std::int32_t> slice;            ///< global slice id
+  std::vector<std::uint8_t> flags;            ///< VertexFlag bits
+  std::vector<float> rest_t;                  ///< t of its slice at creation (temporal force, Eq. 6)
   std::vector<float> rest_dir_x, rest_dir_y;  ///< unit rest orientation about the slice centroid (Eq. 5)
-  std::vector<std::int32_t> target;       ///< target-point index, or -1
+  std::vector<std::int32_t> target;           ///< target-point index, or -1
 
   // springs as CSR: vertex v's springs are [spring_begin[v], spring_begin[v+1]); rest lengths live in
   // SimState::spring_rest because growth changes them
@@ -119,7 +119,7 @@ struct Topology {
   // the rest copy: the paper's shrunken "reference" duplicate of each element (§5.3), named apart from
   // the reference solver. Rest lengths are measured on it, each slice scaled by its g
   // about the slice's rest copy centroid
-  std::vector<float> rest_copy_x, rest_copy_y, rest_copy_t;     ///< per vertex
+  std::vector<float> rest_copy_x, rest_copy_y, rest_copy_t;   ///< per vertex
   std::vector<float> slice_rest_copy_cx, slice_rest_copy_cy;  ///< per global slice
 
   std::int32_t vertex_count() const { return static_cast<std::int32_t>(element.size()); }
@@ -139,10 +139,10 @@ struct Topology {
 
 /// Everything that moves.
 struct SimState {
-  std::vector<float> x, y, t;     ///< positions, per vertex
-  std::vector<float> vx, vy, vt;  ///< velocities, per vertex
-  std::vector<float> spring_rest; ///< rest length per CSR slot (both ends of a spring hold the same value)
-  std::vector<float> growth;      ///< g per global slice (§5.3)
+  std::vector<float> x, y, t;      ///< positions, per vertex
+  std::vector<float> vx, vy, vt;   ///< velocities, per vertex
+  std::vector<float> spring_rest;  ///< rest length per CSR slot (both ends of a spring hold the same value)
+  std::vector<float> growth;       ///< g per global slice (§5.3)
   std::uint64_t iteration = 0;
   /// The iteration at which growth stopped for the settling phase (docs/parameters.md, "Stop test"),
   /// or 0 while slices still grow.
@@ -160,7 +160,7 @@ struct SimState {
 /// in the rest copy, each end's slice scaled by its g about that slice's rest copy centroid. Time
 /// springs join two slices with different g; the t distance is not scaled.
 inline float rest_copy_length(const Topology& topo, const std::vector<float>& growth, std::int32_t v,
-                                   std::int32_t slot) {
+                              std::int32_t slot) {
   const std::int32_t w = topo.spring_other[slot];
   const std::int32_t sv = topo.slice[v], sw = topo.slice[w];
   const float xv = topo.slice_rest_copy_cx[sv] + growth[sv] * (topo.rest_copy_x[v] - topo.slice_rest_copy_cx[sv]);

@@ -16,15 +16,15 @@ namespace animpak {
 /// The worst of one error measure over every compared state: its value and where it occurs.
 struct WorstError {
   double value = 0.0;
-  std::int64_t state = -1;   ///< states after this many steps (0: the initial state)
+  std::int64_t state = -1;  ///< states after this many steps (0: the initial state)
   std::int32_t vertex = -1;
-  char axis = ' ';           ///< 'x', 'y' or 't'
+  char axis = ' ';  ///< 'x', 'y' or 't'
 };
 
 /// One force of Eq. 7 (or the total) compared at every checked state.
 struct ForceComparison {
   std::string name;
-  std::size_t differing = 0;  ///< vertex components whose bits differ, summed over the checked states
+  std::size_t differing = 0;      ///< vertex components whose bits differ, summed over the checked states
   std::int64_t first_state = -1;  ///< the first checked state where it differs
   WorstError abs, rel, ulp;
 };
@@ -33,7 +33,7 @@ struct ForceComparison {
 struct StateMismatch {
   std::string array, index;  ///< e.g. "vx", "vertex"
   std::size_t count = 0, size = 0;
-  std::size_t first = 0;     ///< the first differing entry
+  std::size_t first = 0;                 ///< the first differing entry
   double reference = 0.0, device = 0.0;  ///< a float array's entry, or the scalar (a counter is exact)
   std::int64_t ulp = 0;
 };

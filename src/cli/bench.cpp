@@ -67,9 +67,8 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
       spec.density = name == "constant" ? SyntheticDensity::constant : SyntheticDensity::dense;
       SyntheticWorld s = make_synthetic_world(spec);
       const std::string scene = name + "-" + std::to_string(size);
-      std::cerr << "animpak: " << scene << ": " << s.elements << " stars x " << s.slices
-                << " slices at initial scale " << s.initial_scale << ", cell_size " << s.world.params.forces.cell_size
-                << "\n";
+      std::cerr << "animpak: " << scene << ": " << s.elements << " stars x " << s.slices << " slices at initial scale "
+                << s.initial_scale << ", cell_size " << s.world.params.forces.cell_size << "\n";
       worlds.push_back({scene, name, s.elements, std::move(s.world)});
       print_notes(worlds.back());
     }
@@ -105,7 +104,8 @@ void write_json(const std::vector<BenchRow>& rows, const std::filesystem::path& 
                        {"scene", r.scene},
                        {"series", r.series},
                        {"synthetic", r.synthetic()},
-                       {"vertices", r.vertices}, {"neighbour_visits", r.neighbour_visits},
+                       {"vertices", r.vertices},
+                       {"neighbour_visits", r.neighbour_visits},
                        {"visits_per_vertex", r.visits_per_vertex()},
                        {"elements", r.elements},
                        {"steps", r.timing.steps},
@@ -120,11 +120,15 @@ void write_json(const std::vector<BenchRow>& rows, const std::filesystem::path& 
   for (const auto& [device, series] : fitted_lines(rows)) {
     const LinearFit f = fit_series(rows, device, series);
     if (f.points >= 2)
-      fits.push_back({{"device", device}, {"series", series}, {"points", f.points},
-                      {"ms_per_kvertex", f.slope_ms_per_kvertex}, {"intercept_ms", f.intercept_ms},
+      fits.push_back({{"device", device},
+                      {"series", series},
+                      {"points", f.points},
+                      {"ms_per_kvertex", f.slope_ms_per_kvertex},
+                      {"intercept_ms", f.intercept_ms},
                       {"visits_per_vertex_min", f.min_visits_per_vertex},
                       {"visits_per_vertex_max", f.max_visits_per_vertex},
-                      {"cost_ratio_largest_to_smallest", f.cost_ratio}, {"visit_cost_ratio", f.visit_cost_ratio},
+                      {"cost_ratio_largest_to_smallest", f.cost_ratio},
+                      {"visit_cost_ratio", f.visit_cost_ratio},
                       {"phase_cost_ratios", phases_json(f.phase_ratios)}});
   }
   std::ofstream out(file);
@@ -179,18 +183,21 @@ int bench(const BenchOptions& options, const BenchPlotter& plot) {
       continue;
     }
     // A ratio near 1 means the cost per vertex does not grow with size: no quadratic step.
-    std::printf("%s, %s series: %.4f ms per 1k vertices (intercept %.3f ms) over %d sizes, visits per vertex "
-                "%.1f to %.1f; per-vertex cost, largest / smallest size: %.2f\n",
-                d, s, f.slope_ms_per_kvertex, f.intercept_ms, f.points, f.min_visits_per_vertex,
-                f.max_visits_per_vertex, f.cost_ratio);
+    std::printf(
+        "%s, %s series: %.4f ms per 1k vertices (intercept %.3f ms) over %d sizes, visits per vertex "
+        "%.1f to %.1f; per-vertex cost, largest / smallest size: %.2f\n",
+        d, s, f.slope_ms_per_kvertex, f.intercept_ms, f.points, f.min_visits_per_vertex, f.max_visits_per_vertex,
+        f.cost_ratio);
     const PhaseTimes& r = f.phase_ratios;
-    std::printf("%s, %s series: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, "
-                "constraints %.2f, loop %.2f, growth %.2f, statistics %.2f\n",
-                d, s, r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
+    std::printf(
+        "%s, %s series: per-vertex cost ratio by phase: grid %.2f, forces %.2f, integrate %.2f, "
+        "constraints %.2f, loop %.2f, growth %.2f, statistics %.2f\n",
+        d, s, r.grid, r.forces, r.integrate, r.constraints, r.loop, r.growth, r.statistics);
     if (f.visit_cost_ratio > 0)
-      std::printf("%s, %s series: forces cost per neighbour visit, largest / smallest size: %.2f (at or below 1: "
-                  "the force phase grows with the neighbours it must visit, not with an accidental quadratic loop)\n",
-                  d, s, f.visit_cost_ratio);
+      std::printf(
+          "%s, %s series: forces cost per neighbour visit, largest / smallest size: %.2f (at or below 1: "
+          "the force phase grows with the neighbours it must visit, not with an accidental quadratic loop)\n",
+          d, s, f.visit_cost_ratio);
   }
   if (options.json) write_json(rows, *options.json);
   if (plot) plot(rows);

@@ -19,7 +19,7 @@ constexpr int width = 960, height = 560;
 constexpr double left = 80, right = 240, top = 40, bottom = 60;  // margins around the axes, pixels
 constexpr Rgba ink{0.15, 0.15, 0.15, 1}, grid_ink{0.88, 0.88, 0.88, 1};
 constexpr Rgba line_colours[] = {{0.12, 0.39, 0.75, 1}, {0.85, 0.33, 0.1, 1}, {0.2, 0.6, 0.25, 1},
-                                 {0.55, 0.25, 0.65, 1}, {0.8, 0.6, 0.1, 1}, {0.1, 0.6, 0.65, 1}};
+                                 {0.55, 0.25, 0.65, 1}, {0.8, 0.6, 0.1, 1},   {0.1, 0.6, 0.65, 1}};
 constexpr Rgba example_colour{0.45, 0.45, 0.45, 1};
 
 // A 1-2-5 tick step giving about five ticks over [0, max].
@@ -61,7 +61,8 @@ void draw_axes(Picture& pic, const Axes& a) {
 
 void draw_square(Picture& pic, Vec2 c, Rgba colour) {
   const double r = 5;
-  pic.draw_polyline({c + Vec2{-r, -r}, c + Vec2{r, -r}, c + Vec2{r, r}, c + Vec2{-r, r}, c + Vec2{-r, -r}}, colour, 2.0);
+  pic.draw_polyline({c + Vec2{-r, -r}, c + Vec2{r, -r}, c + Vec2{r, r}, c + Vec2{-r, r}, c + Vec2{-r, -r}}, colour,
+                    2.0);
 }
 
 }  // namespace
@@ -112,7 +113,8 @@ void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::
     if (!r.synthetic()) {
       const Vec2 c = axes.at(r.vertices, r.timing.ms_per_iter);
       draw_square(pic, c, example_colour);
-      pic.draw_text(c + Vec2{8, -8.0 - 14.0 * examples}, r.scene + " (" + r.device + ")", 11, example_colour, {0.0, 1.0});
+      pic.draw_text(c + Vec2{8, -8.0 - 14.0 * examples}, r.scene + " (" + r.device + ")", 11, example_colour,
+                    {0.0, 1.0});
       ++examples;
     }
   if (examples > 0) {

@@ -196,11 +196,12 @@ void print_text(const Json& report) {
   }
   if (report.contains("element")) {
     const Json& e = report["element"];
-    std::printf("element    %.3g x %.3g after normalizing (art units x %.3g); outline offset %g: %.3g x %.3g, %d "
-                "boundary and %d slice vertices\n",
-                e["size"][0].get<double>(), e["size"][1].get<double>(), e["scale"].get<double>(),
-                e["offset"].get<double>(), e["outline_size"][0].get<double>(), e["outline_size"][1].get<double>(),
-                e["boundary_vertices"].get<int>(), e["slice_vertices"].get<int>());
+    std::printf(
+        "element    %.3g x %.3g after normalizing (art units x %.3g); outline offset %g: %.3g x %.3g, %d "
+        "boundary and %d slice vertices\n",
+        e["size"][0].get<double>(), e["size"][1].get<double>(), e["scale"].get<double>(), e["offset"].get<double>(),
+        e["outline_size"][0].get<double>(), e["outline_size"][1].get<double>(), e["boundary_vertices"].get<int>(),
+        e["slice_vertices"].get<int>());
     const std::size_t holes = e["holes"].size();
     if (holes > 0)
       std::printf("holes      %zu in the art, filled by the element (its outline is the outer boundary only)\n", holes);
@@ -244,8 +245,8 @@ int check(const CheckOptions& options) {
       thin += path.stroke.enabled && path.stroke_width * px_per_unit < thinnest_stroke_px ? 1 : 0;
     if (thin > 0) {
       std::ostringstream text;
-      text << file << ": " << thin << " stroke(s) are thinner than " << thinnest_stroke_px << " px at "
-           << options.size << " px: the preview draws them at their width, as a browser does; frames of that "
+      text << file << ": " << thin << " stroke(s) are thinner than " << thinnest_stroke_px << " px at " << options.size
+           << " px: the preview draws them at their width, as a browser does; frames of that "
            << "size widen them to " << thinnest_stroke_px << " px";
       warnings.push_back(text.str());
     }
@@ -258,7 +259,8 @@ int check(const CheckOptions& options) {
     const SpacetimeElement element =
         build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0));
     const ArtOutline outline = outline_of(element.art.art);
-    for (std::size_t i = 0; i < outline.on_outline.size(); ++i) report["paths"][i]["on_outline"] = outline.on_outline[i];
+    for (std::size_t i = 0; i < outline.on_outline.size(); ++i)
+      report["paths"][i]["on_outline"] = outline.on_outline[i];
     report["element"] = element_json(element, outline, params);
     warnings.insert(warnings.end(), element.notes.begin(), element.notes.end());
   } catch (const InputError& e) {
@@ -270,8 +272,10 @@ int check(const CheckOptions& options) {
   report["warnings"] = warnings;
   report["ready"] = true;
   for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
-  if (options.json) std::cout << report.dump(2) << "\n";
-  else print_text(report);
+  if (options.json)
+    std::cout << report.dump(2) << "\n";
+  else
+    print_text(report);
   return 0;
 }
 

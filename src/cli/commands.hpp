@@ -2,8 +2,8 @@
 // in run().
 #pragma once
 
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -22,20 +22,20 @@ std::string_view build_commit();
 
 // inspect, check and render draw, so only `animpak` defines them (inspect.cpp, check.cpp, render_commands.cpp).
 struct InspectOptions {
-  std::filesystem::path file;           ///< a scene (.json) or one art file (.svg, .path)
+  std::filesystem::path file;                ///< a scene (.json) or one art file (.svg, .path)
   std::optional<std::filesystem::path> out;  ///< folder for the PNG pictures
-  bool json = false;                    ///< print counts as JSON on stdout
-  std::optional<int> slices;            ///< override n_s
+  bool json = false;                         ///< print counts as JSON on stdout
+  std::optional<int> slices;                 ///< override n_s
   int picture_size = 512;
 };
 
 int inspect(const InspectOptions& options);
 
 struct CheckOptions {
-  std::filesystem::path file;               ///< one art file (.svg, .path)
+  std::filesystem::path file;                ///< one art file (.svg, .path)
   std::optional<std::filesystem::path> png;  ///< draw the art as imported into this PNG
-  int size = 512;                           ///< the PNG's longer side in pixels
-  bool json = false;                        ///< print the report as JSON on stdout
+  int size = 512;                            ///< the PNG's longer side in pixels
+  bool json = false;                         ///< print the report as JSON on stdout
 };
 
 /// The preflight before packing one art file: what is imported, every warning; 0 when it can be packed.
@@ -46,10 +46,10 @@ struct FrameOptions {
   int size = 512;
   double fps = 25.0;
   std::vector<std::string> formats{"png", "gif"};
-  std::string background = "white";  ///< white, none (transparent) or #rrggbb
-  std::string container = "outline";  ///< outline, fill (its art's paint) or none
-  bool no_container = false;          ///< --no-container: container none
-  int precision = 2;                      ///< lottie, svg-anim: decimals of a pixel
+  std::string background = "white";      ///< white, none (transparent) or #rrggbb
+  std::string container = "outline";     ///< outline, fill (its art's paint) or none
+  bool no_container = false;             ///< --no-container: container none
+  int precision = 2;                     ///< lottie, svg-anim: decimals of a pixel
   std::string interpolation = "linear";  ///< lottie, svg-anim: linear or hold
 };
 
@@ -59,9 +59,9 @@ struct PackOptions {
   std::optional<std::filesystem::path> resume;  ///< continue from DIR/state.bin
   std::optional<std::uint64_t> seed;
   std::optional<std::uint64_t> max_iterations;
-  std::string device;  ///< empty: the default rule (first GPU, else PoCL, else the reference)
-  std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
-  bool force = false;  ///< overwrite the packing already in `out`
+  std::string device;               ///< empty: the default rule (first GPU, else PoCL, else the reference)
+  std::string grid_sort = "auto";   ///< auto, host or device (GridSort)
+  bool force = false;               ///< overwrite the packing already in `out`
   std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
 };
 
@@ -79,9 +79,9 @@ struct DevicesOptions {
 int devices(const DevicesOptions& options);
 
 struct RenderOptions {
-  std::filesystem::path dir;  ///< a folder `animpak pack` wrote
+  std::filesystem::path dir;                   ///< a folder `animpak pack` wrote
   std::optional<std::filesystem::path> scene;  ///< the scene and its art elsewhere than DIR/input/
-  bool force = false;  ///< render with a `scene` or art that differs from the packed one
+  bool force = false;                          ///< render with a `scene` or art that differs from the packed one
   FrameOptions frames;
   bool contact_plot = false;  ///< also draw the frames' contact functions into DIR/contact.png
 };
@@ -91,18 +91,18 @@ int render(const RenderOptions& options);
 struct BenchOptions {
   std::vector<std::string> devices{"reference"};
   std::vector<int> sizes{10000, 50000, 100000};  ///< target vertex counts of the synthetic worlds
-  int steps = 20;                                 ///< timed steps per world
-  int warmup = 3;                                 ///< untimed steps first (caches, allocations)
+  int steps = 20;                                ///< timed steps per world
+  int warmup = 3;                                ///< untimed steps first (caches, allocations)
   /// rounds per world: every device is timed once per round, in turn, and each row reports the median
   /// round (with the fastest and slowest), so that a load that comes and goes hits all devices alike
   int repeat = 1;
-  int slices = 20;                                ///< n_s of the synthetic worlds
+  int slices = 20;  ///< n_s of the synthetic worlds
   /// constant, dense or both (docs/benchmark.md); unset: constant, or none when `scenes` or `states` is given
   std::optional<std::string> series;
-  std::vector<std::filesystem::path> scenes;      ///< the user's own scene files, timed by name
+  std::vector<std::filesystem::path> scenes;  ///< the user's own scene files, timed by name
   /// packed folders (or their state.bin): timed from the packed state, where the neighbours are close
   std::vector<std::filesystem::path> states;
-  std::filesystem::path examples = "examples";    ///< the element art and the example scenes
+  std::filesystem::path examples = "examples";  ///< the element art and the example scenes
   bool example_scenes = true;  ///< also time examples/{default,aquarium,annulus} (not with `scenes` or `states`)
   std::optional<std::filesystem::path> json;
   std::string grid_sort = "auto";  ///< auto, host, device, or both: each OpenCL device timed with each sort

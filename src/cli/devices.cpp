@@ -20,11 +20,12 @@ int devices(const DevicesOptions& options) {
     const KernelBuild build = try_build_kernels(d);
     std::cout << "  Device: " << d.name << "\n    vendor " << d.vendor << ", driver " << d.driver << ", " << d.version
               << ", " << (d.gpu ? "GPU" : "not a GPU") << (d.simulator ? " (a simulator: never the default)" : "")
-              << ", " << d.compute_units << " compute units, " << std::fixed
-              << std::setprecision(1) << double(d.global_memory) / (1u << 30) << " GiB (largest buffer "
-              << double(d.max_allocation) / (1u << 30) << " GiB)\n    kernels: "
-              << (build.ok ? "build OK" : "FAIL to build") << "\n";
-    if (options.verbose || !build.ok) std::cout << "    build log:\n" << (build.log.empty() ? "(empty)" : build.log) << "\n";
+              << ", " << d.compute_units << " compute units, " << std::fixed << std::setprecision(1)
+              << double(d.global_memory) / (1u << 30) << " GiB (largest buffer "
+              << double(d.max_allocation) / (1u << 30)
+              << " GiB)\n    kernels: " << (build.ok ? "build OK" : "FAIL to build") << "\n";
+    if (options.verbose || !build.ok)
+      std::cout << "    build log:\n" << (build.log.empty() ? "(empty)" : build.log) << "\n";
   }
   std::cout << "Default for pack: " << choose_device("").reason << "\n";
   return 0;

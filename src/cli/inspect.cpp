@@ -31,15 +31,15 @@ std::vector<Built> build_all(const InspectOptions& options) {
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {
       const LibraryElementSpec& spec = scene.elements[i];
       const ArtShape art = load_art(spec.art);
-      built.push_back({build_element(spec.name, art, spec.animation, scene.params, element_seed(scene.seed, i)),
-                       art.warnings});
+      built.push_back(
+          {build_element(spec.name, art, spec.animation, scene.params, element_seed(scene.seed, i)), art.warnings});
     }
   } else {
     Params params;
     if (options.slices) params.element.slices = *options.slices;
     const ArtShape art = load_art(options.file);
-    built.push_back({build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0)),
-                     art.warnings});
+    built.push_back(
+        {build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0)), art.warnings});
   }
   return built;
 }
@@ -71,8 +71,8 @@ int inspect(const InspectOptions& options) {
   if (options.json) {
     std::cout << report.dump(2) << "\n";
   } else {
-    std::printf("%-16s %6s %8s %9s %8s %8s %8s %8s %9s\n", "element", "slices", "v/slice", "vertices", "edge",
-                "shear", "neg", "time", "envelope");
+    std::printf("%-16s %6s %8s %9s %8s %8s %8s %8s %9s\n", "element", "slices", "v/slice", "vertices", "edge", "shear",
+                "neg", "time", "envelope");
     for (const auto& e : report["elements"]) {
       std::printf("%-16s %6d %8d %9d %8zu %8zu %8zu %8zu %9zu\n", e["name"].get<std::string>().c_str(),
                   e["slices"].get<int>(), e["vertices_per_slice"].get<int>(), e["vertices"].get<int>(),

@@ -34,8 +34,12 @@ std::string clock_text(double seconds) {
 class Progress {
  public:
   Progress(std::uint64_t max_iterations, double stop_gap, std::uint64_t first_iteration, double previous_seconds)
-      : tty_(::isatty(STDERR_FILENO)), max_(max_iterations), first_(first_iteration), stop_gap_(stop_gap),
-        start_(now() - previous_seconds), resumed_at_(previous_seconds) {}
+      : tty_(::isatty(STDERR_FILENO)),
+        max_(max_iterations),
+        first_(first_iteration),
+        stop_gap_(stop_gap),
+        start_(now() - previous_seconds),
+        resumed_at_(previous_seconds) {}
 
   void operator()(const StepStatistics& st) {
     const double elapsed = now() - start_;
@@ -56,13 +60,14 @@ class Progress {
     const int width = 24;
     const int filled = static_cast<int>(width * std::clamp(elapsed / std::max(elapsed + remaining, 1e-9), 0.0, 1.0));
     std::ostringstream line;
-    line << "iter " << st.iteration << "  gap " << (std::isfinite(st.max_slice_gap) ? std::to_string(st.max_slice_gap) : "inf")
-         << "  growing " << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices << "  outside " << st.outside_vertices
-         << "  g " << st.min_growth << ".." << st.max_growth << "  " << clock_text(elapsed) << " (~" << clock_text(remaining)
-         << " left)";
+    line << "iter " << st.iteration << "  gap "
+         << (std::isfinite(st.max_slice_gap) ? std::to_string(st.max_slice_gap) : "inf") << "  growing "
+         << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices << "  outside "
+         << st.outside_vertices << "  g " << st.min_growth << ".." << st.max_growth << "  " << clock_text(elapsed)
+         << " (~" << clock_text(remaining) << " left)";
     if (tty_)
-      std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << line.str() << "\033[K"
-                << std::flush;
+      std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << line.str()
+                << "\033[K" << std::flush;
     else
       std::cerr << "animpak: " << line.str() << "\n";
   }
@@ -106,7 +111,7 @@ double simulation_seconds(const std::filesystem::path& stats) {
   if (j.is_discarded() || !j.is_object() || !j.contains("seconds") || !j["seconds"].is_object()) return 0.0;
   const nlohmann::json& seconds = j["seconds"];
   return seconds.contains("simulation") && seconds["simulation"].is_number() ? seconds["simulation"].get<double>()
-                                                                               : 0.0;
+                                                                             : 0.0;
 }
 
 std::string read_whole(const std::filesystem::path& file) {
@@ -133,8 +138,8 @@ std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort,
       std::istringstream lines(e.what());
       std::string line, summary;
       for (int i = 0; i < 6 && std::getline(lines, line); ++i) summary += "\n  " + line;
-      std::cerr << "animpak: " << choice.device.name << " cannot run the kernels; using the reference solver:"
-                << summary << "\n";
+      std::cerr << "animpak: " << choice.device.name
+                << " cannot run the kernels; using the reference solver:" << summary << "\n";
     }
   }
   driver = "scalar reference (no OpenCL)";
@@ -154,8 +159,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     if (finished(checkpoint, options.max_iterations)) {
       std::cerr << "animpak: " << out.string() << " holds a finished packing (stopped after "
                 << checkpoint.state.iteration << " iterations: " << checkpoint.stop_reason
-                << "); nothing to resume, nothing changed. `animpak render " << shell_word(out)
-                << "` renders it again"
+                << "); nothing to resume, nothing changed. `animpak render " << shell_word(out) << "` renders it again"
                 << (checkpoint.stop_reason == "max_iterations" ? "; a larger --max-iterations continues it" : "")
                 << "\n";
       return 0;
@@ -172,8 +176,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     inputs = snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text);
   }
   std::filesystem::create_directories(out);
-  const PackedScene scene = options.resume ? packed_scene(out, checkpoint)
-                                           : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
+  const PackedScene scene =
+      options.resume ? packed_scene(out, checkpoint) : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
   LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
   World& world = loaded.world;
   if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
@@ -232,8 +236,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
       std::cerr << "animpak: the secondary elements kept their start size: the primary ones had not stopped growing\n";
   }
   if (result.reason == StopReason::unsettled)
-    std::cerr << "animpak: warning: " << result.last.overlapping_vertices << " vertices still overlap another element and "
-              << result.last.outside_vertices << " lie outside the container after " << world.params.stop.settle_iterations
+    std::cerr << "animpak: warning: " << result.last.overlapping_vertices
+              << " vertices still overlap another element and " << result.last.outside_vertices
+              << " lie outside the container after " << world.params.stop.settle_iterations
               << " settling steps; more slices (top-level \"slices\") or a larger params.settle_iterations may help\n";
   if (result.reason == StopReason::interrupted) {
     std::string command = options.program + " pack --resume " + shell_word(out);

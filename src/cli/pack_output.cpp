@@ -218,14 +218,10 @@ bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& c
     if (stats.is_discarded() || !stats.is_object()) return false;
   } else {
     // A folder without stats.json (copied without it): what the checkpoint itself knows.
-    stats = {{"format_version", kStatsFormatVersion},
-             {"animpak", std::string(animpak_version)},
-             {"scene", checkpoint.scene_file.string()},
-             {"seed", checkpoint.seed},
-             {"elements", world.elements.size()},
-             {"vertices", world.topology.vertex_count()},
-             {"iterations", checkpoint.state.iteration},
-             {"stop_reason", checkpoint.stop_reason}};
+    stats = {{"format_version", kStatsFormatVersion},    {"animpak", std::string(animpak_version)},
+             {"scene", checkpoint.scene_file.string()},  {"seed", checkpoint.seed},
+             {"elements", world.elements.size()},        {"vertices", world.topology.vertex_count()},
+             {"iterations", checkpoint.state.iteration}, {"stop_reason", checkpoint.stop_reason}};
   }
   set_quality(stats, world, quality);
   stats["rendered_by"] = build_commit();

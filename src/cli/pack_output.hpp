@@ -45,13 +45,13 @@ bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& c
 /// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
 struct QualitySummary {
   int times = 0;
-  int element_times = 0;        ///< elements × times
-  int outside = 0;              ///< element-times whose art is more than the threshold outside
-  ElementShare worst_outside;   ///< largest outside share at any time, counted or not
+  int element_times = 0;       ///< elements × times
+  int outside = 0;             ///< element-times whose art is more than the threshold outside
+  ElementShare worst_outside;  ///< largest outside share at any time, counted or not
   double worst_outside_t = 0.0;
-  int overlapping = 0;          ///< pair-times whose overlap exceeds the threshold
-  int overlapping_pairs = 0;    ///< distinct pairs among them
-  PairShare worst_overlap;      ///< largest overlap share at any time, counted or not
+  int overlapping = 0;        ///< pair-times whose overlap exceeds the threshold
+  int overlapping_pairs = 0;  ///< distinct pairs among them
+  PairShare worst_overlap;    ///< largest overlap share at any time, counted or not
   double worst_overlap_t = 0.0;
   double coverage_min = 0.0, coverage_max = 0.0, coverage_mean = 0.0;
   double min_gap = 0.0;

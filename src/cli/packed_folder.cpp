@@ -18,7 +18,7 @@ constexpr int kManifestVersion = 1;
 // Every whole-animation file a render writes (animation_file_name in src/render/writers.cpp names them),
 // and the contact plot `render --contact-plot` draws after the swap: a name missing here is neither
 // swapped in nor removed, and would outlive the render it came from.
-const char* const kAnimationFiles[] = {"animation.gif", "animation.mp4",    "animation.json",
+const char* const kAnimationFiles[] = {"animation.gif",    "animation.mp4", "animation.json",
                                        "animation.lottie", "animation.svg", "contact.png"};
 
 std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
@@ -63,8 +63,9 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
       m.art.push_back({a.at("reference").get<std::string>(),
                        {dir / "input" / a.at("file").get<std::string>(), a.at("sha256").get<std::string>()}});
   } catch (const std::exception&) {
-    throw InputError(m.file.string() + ": not a manifest this animpak reads; restore the folder, or pass --scene "
-                                       "FILE with the scene it was packed from");
+    throw InputError(m.file.string() +
+                     ": not a manifest this animpak reads; restore the folder, or pass --scene "
+                     "FILE with the scene it was packed from");
   }
   return m;
 }
@@ -90,8 +91,9 @@ InputSnapshot snapshot_inputs(const fs::path& file, const std::string& text) {
 void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
   const fs::path input = dir / "input";
   if (fs::exists(input) && !fs::exists(input / "manifest.json"))
-    throw InputError(input.string() + ": a folder animpak did not write is in the way of the scene's copy; "
-                                      "move it elsewhere and pack again");
+    throw InputError(input.string() +
+                     ": a folder animpak did not write is in the way of the scene's copy; "
+                     "move it elsewhere and pack again");
   fs::remove_all(input);
   const std::string scene_name = snapshot.scene_file.filename().string();
   write_bytes(input / scene_name, snapshot.scene_text);
@@ -104,11 +106,12 @@ void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
     write_bytes(input / "art" / name, a.bytes);
     art.push_back({{"reference", a.written}, {"file", "art/" + name}, {"sha256", sha256_hex(a.bytes)}});
   }
-  const nlohmann::json manifest = {
-      {"format_version", kManifestVersion},
-      {"scene", {{"file", scene_name}, {"packed_from", snapshot.scene_file.string()},
-                 {"sha256", sha256_hex(snapshot.scene_text)}}},
-      {"art", art}};
+  const nlohmann::json manifest = {{"format_version", kManifestVersion},
+                                   {"scene",
+                                    {{"file", scene_name},
+                                     {"packed_from", snapshot.scene_file.string()},
+                                     {"sha256", sha256_hex(snapshot.scene_text)}}},
+                                   {"art", art}};
   write_bytes(input / "manifest.json", manifest.dump(2) + "\n");
 }
 
@@ -127,8 +130,11 @@ PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, cons
       const ManifestArt* packed = manifest->find(written);
       if (!packed || (fs::is_regular_file(resolved) &&
                       sha256_hex(read_bytes(resolved, "check the scene's art paths")) != packed->sha256))
-        throw InputError(resolved.string() + ": art \"" + written + "\" is not the file packed (its SHA-256 is not "
-                         "the one in " + manifest->file.string() + "), and different art builds a different "
+        throw InputError(resolved.string() + ": art \"" + written +
+                         "\" is not the file packed (its SHA-256 is not "
+                         "the one in " +
+                         manifest->file.string() +
+                         "), and different art builds a different "
                          "packing; give the packed art, or add --force to render with this one");
       return resolved;
     };
@@ -153,7 +159,8 @@ PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, cons
   p.locate = [dir, file = checkpoint.scene_file](const std::string& written, const fs::path& resolved) {
     if (!fs::is_regular_file(resolved))
       throw InputError(file.string() + ": cannot read art \"" + written + "\" (resolved to " + resolved.string() +
-                       "), and " + dir.string() + " has no input/ copy of it; pass --scene FILE, the scene "
+                       "), and " + dir.string() +
+                       " has no input/ copy of it; pass --scene FILE, the scene "
                        "file beside its art");
     return resolved;
   };

@@ -38,22 +38,21 @@ void print_markdown() {
   const Params defaults;
   std::cout << "| name | default | range | paper | meaning |\n|---|---|---|---|---|\n";
   for (const ParamInfo& info : param_table())
-    std::cout << "| `" << info.name << "` | " << shown(param_value(defaults, info), param_is_integer(info))
-              << " | " << range_of(info) << " | " << info.paper << " | " << info.meaning << " |\n";
+    std::cout << "| `" << info.name << "` | " << shown(param_value(defaults, info), param_is_integer(info)) << " | "
+              << range_of(info) << " | " << info.paper << " | " << info.meaning << " |\n";
 }
 
 /// Display width of UTF-8 text: its code points (the table's ≥, Δ and § are one column each).
 std::size_t width(const std::string& text) {
-  return static_cast<std::size_t>(
-      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
 
 void print_text() {
   const Params defaults;
   std::vector<std::vector<std::string>> rows{{"name", "default", "range", "meaning"}};
   for (const ParamInfo& info : param_table())
-    rows.push_back({std::string(info.name), shown(param_value(defaults, info), param_is_integer(info)),
-                    range_of(info), std::string(info.meaning)});
+    rows.push_back({std::string(info.name), shown(param_value(defaults, info), param_is_integer(info)), range_of(info),
+                    std::string(info.meaning)});
   std::vector<std::size_t> widths(3, 0);
   for (const auto& row : rows)
     for (std::size_t c = 0; c < widths.size(); ++c) widths[c] = std::max(widths[c], width(row[c]));

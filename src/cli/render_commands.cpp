@@ -55,7 +55,8 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   out.interpolation = options.interpolation == "hold" ? Interpolation::hold : Interpolation::linear;
   for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
   if (out.style.background.a < 1 && std::count(out.formats.begin(), out.formats.end(), FrameFormat::mp4))
-    throw UsageError("--background " + options.background + ": MP4 (H.264) has no transparency; give the MP4 a "
+    throw UsageError("--background " + options.background +
+                     ": MP4 (H.264) has no transparency; give the MP4 a "
                      "colour (--background white or #rrggbb) or leave mp4 out of --format");
   PackingQuality quality = write_frames(world, world.state, out);
   install_rendered(out.dir, dir);
@@ -120,8 +121,9 @@ class RenderingFrontend final : public Frontend {
                            "background), to hold next to a browser's rendering");
     check_cmd_->add_option("--size", check_.size, "the PNG's longer side in pixels")->check(CLI::Range(16, 8192));
     check_cmd_->add_flag("--json", check_.json, "print the report as JSON (docs/check.md)");
-    check_cmd_->footer("Exit codes: 0 ready to pack (warnings may remain), 2 the file cannot be imported or built "
-                       "into an element.");
+    check_cmd_->footer(
+        "Exit codes: 0 ready to pack (warnings may remain), 2 the file cannot be imported or built "
+        "into an element.");
 
     render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
     render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();

@@ -37,31 +37,34 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_option("SCENE", cl.pack.scene, "scene file (.json)");
   cl.pack_cmd->add_option("--out", cl.pack.out, "folder for state.bin, stats.json and the frames");
   cl.pack_cmd->add_option("--resume", cl.pack.resume,
-                       "continue the interrupted packing in this folder (with the scene and seed it started with)");
+                          "continue the interrupted packing in this folder (with the scene and seed it started with)");
   cl.pack_cmd->add_flag("--force", cl.pack.force, "overwrite the packing already in --out DIR");
   cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");
   cl.pack_cmd->add_option("--max-iterations", cl.pack.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
-  cl.pack_cmd->add_option("--device", cl.pack.device,
-                       "solver: 'reference', or part of an OpenCL device's name (pocl, nvidia; see animpak devices); "
-                       "default: the first GPU, else PoCL, else the reference");
-  cl.pack_cmd->add_option("--grid-sort", cl.pack.grid_sort,
-                       "where the collision grid is sorted on an OpenCL device: auto (device on GPUs, host on CPU "
-                       "devices), host or device; the results are identical")
+  cl.pack_cmd->add_option(
+      "--device", cl.pack.device,
+      "solver: 'reference', or part of an OpenCL device's name (pocl, nvidia; see animpak devices); "
+      "default: the first GPU, else PoCL, else the reference");
+  cl.pack_cmd
+      ->add_option("--grid-sort", cl.pack.grid_sort,
+                   "where the collision grid is sorted on an OpenCL device: auto (device on GPUs, host on CPU "
+                   "devices), host or device; the results are identical")
       ->check(CLI::IsMember({"auto", "host", "device"}));
 }
 
 void add_devices_and_validate_commands(CLI::App& app, CommandLine& cl) {
-  cl.devices_cmd =
-      app.add_subcommand("devices", "List the OpenCL platforms and devices and whether animpak's kernels build on each");
+  cl.devices_cmd = app.add_subcommand(
+      "devices", "List the OpenCL platforms and devices and whether animpak's kernels build on each");
   cl.devices_cmd->add_flag("--verbose", cl.devices.verbose, "print every device's kernel build log");
 
   cl.validate_cmd = app.add_subcommand(
       "validate", "Step the reference and an OpenCL device side by side and compare every force and state bit for bit");
   cl.validate_cmd->add_option("SCENE", cl.validate.scene, "scene file (.json)")->required();
-  cl.validate_cmd->add_option("--device", cl.validate.device,
-                           "part of an OpenCL device's name (pocl, nvidia; see animpak devices); default: the device "
-                           "pack would choose");
+  cl.validate_cmd->add_option(
+      "--device", cl.validate.device,
+      "part of an OpenCL device's name (pocl, nvidia; see animpak devices); default: the device "
+      "pack would choose");
   cl.validate_cmd->add_option("--steps", cl.validate.steps, "steps to compare")->check(CLI::Range(1, 100000));
   cl.validate_cmd->add_flag("--all-devices", cl.validate.all_devices, "every OpenCL device, one summary row each");
   cl.validate_cmd->add_flag("--json", cl.validate.json, "print the results as JSON");
@@ -72,35 +75,42 @@ void add_devices_and_validate_commands(CLI::App& app, CommandLine& cl) {
 void add_bench_command(CLI::App& app, CommandLine& cl) {
   cl.bench_cmd = app.add_subcommand(
       "bench", "Time solver steps per phase on synthetic worlds and the example scenes, or on your own scenes");
-  cl.bench_cmd->add_option("--device", cl.bench.devices,
-                         "devices to time beside the reference: name fragments (pocl, nvidia), see animpak devices")
+  cl.bench_cmd
+      ->add_option("--device", cl.bench.devices,
+                   "devices to time beside the reference: name fragments (pocl, nvidia), see animpak devices")
       ->delimiter(',');
-  cl.bench_cmd->add_option("--series", cl.bench.series,
-                        "synthetic worlds: constant (density: the container grows with the copies; the default), "
-                        "dense (more copies in the same container) or both; with --scene, none unless given")
+  cl.bench_cmd
+      ->add_option("--series", cl.bench.series,
+                   "synthetic worlds: constant (density: the container grows with the copies; the default), "
+                   "dense (more copies in the same container) or both; with --scene, none unless given")
       ->check(CLI::IsMember({"constant", "dense", "both"}));
   cl.bench_cmd->add_option("--scene", cl.bench.scenes,
-                        "time this scene file too (repeatable); without --series, instead of the synthetic worlds "
-                        "and the example scenes");
+                           "time this scene file too (repeatable); without --series, instead of the synthetic worlds "
+                           "and the example scenes");
   cl.bench_cmd->add_option("--state", cl.bench.states,
-                        "time steps from this packed state: a folder written by pack, or its state.bin "
-                        "(repeatable); without --series, instead of the synthetic worlds and the example scenes");
+                           "time steps from this packed state: a folder written by pack, or its state.bin "
+                           "(repeatable); without --series, instead of the synthetic worlds and the example scenes");
   cl.bench_cmd->add_option("--sizes", cl.bench.sizes, "target vertex counts of the synthetic worlds")
       ->delimiter(',')
       ->check(CLI::Range(100, 10000000));
   cl.bench_cmd->add_option("--steps", cl.bench.steps, "timed steps per world")->check(CLI::Range(1, 100000));
   cl.bench_cmd->add_option("--warmup", cl.bench.warmup, "untimed steps before timing")->check(CLI::Range(0, 100000));
-  cl.bench_cmd->add_option("--repeat", cl.bench.repeat,
-                        "rounds per world: each device timed once per round, in turn; rows give the median round, "
-                        "its spread (slowest - fastest) and the median of the rounds' speedups")
+  cl.bench_cmd
+      ->add_option("--repeat", cl.bench.repeat,
+                   "rounds per world: each device timed once per round, in turn; rows give the median round, "
+                   "its spread (slowest - fastest) and the median of the rounds' speedups")
       ->check(CLI::Range(1, 1000));
-  cl.bench_cmd->add_option("--slices", cl.bench.slices, "slices n_s of the dense worlds, and of the constant series at 45 copies (it "
-                        "gives larger worlds more, docs/benchmark.md)")->check(CLI::Range(2, 1000));
+  cl.bench_cmd
+      ->add_option("--slices", cl.bench.slices,
+                   "slices n_s of the dense worlds, and of the constant series at 45 copies (it "
+                   "gives larger worlds more, docs/benchmark.md)")
+      ->check(CLI::Range(2, 1000));
   cl.bench_cmd->add_option("--examples", cl.bench.examples, "the examples folder (element art, example scenes)");
   cl.bench_cmd->add_flag("!--no-example-scenes", cl.bench.example_scenes, "time only the synthetic worlds");
   cl.bench_cmd->add_option("--json", cl.bench.json, "write the results as JSON");
-  cl.bench_cmd->add_option("--grid-sort", cl.bench.grid_sort,
-                        "auto, host or device (see pack --grid-sort), or both: time each OpenCL device with each")
+  cl.bench_cmd
+      ->add_option("--grid-sort", cl.bench.grid_sort,
+                   "auto, host or device (see pack --grid-sort), or both: time each OpenCL device with each")
       ->check(CLI::IsMember({"auto", "host", "device", "both"}));
 }
 
@@ -108,9 +118,8 @@ void add_reference_commands(CLI::App& app, CommandLine& cl) {
   cl.params_cmd = app.add_subcommand(
       "params", "List the constants a scene's \"params\" may override, with their defaults and ranges");
   cl.params_cmd->add_flag("--markdown", cl.params.markdown,
-                       "print the table of docs/parameters.md, with the paper's values");
-  cl.schema_cmd =
-      app.add_subcommand("schema", "Print the JSON Schema of the scene file (docs/scene.schema.json)");
+                          "print the table of docs/parameters.md, with the paper's values");
+  cl.schema_cmd = app.add_subcommand("schema", "Print the JSON Schema of the scene file (docs/scene.schema.json)");
 }
 
 // What the parser cannot say itself: a resume keeps the scene, folder and seed it started with.
@@ -123,8 +132,9 @@ void check_pack_options(const PackOptions& pack) {
   for (const auto& [given, name] : options_given)
     if (pack.resume && given) refused += (refused.empty() ? "" : ", ") + std::string(name);
   if (!refused.empty())
-    throw CLI::ValidationError("--resume", refused + " cannot apply to a resumed packing: it keeps the folder, "
-                                           "scene and seed it started with (state.bin)");
+    throw CLI::ValidationError("--resume", refused +
+                                               " cannot apply to a resumed packing: it keeps the folder, "
+                                               "scene and seed it started with (state.bin)");
   if (!pack.resume && (pack.scene.empty() || pack.out.empty()))
     throw CLI::ValidationError("SCENE", "pack needs SCENE and --out DIR (or --resume DIR)");
 }
@@ -150,8 +160,8 @@ int run_command(const std::string& program, CommandLine& cl, Frontend& frontend)
   } catch (const std::bad_alloc&) {
     return fail(program, ExitCode::internal, "out of memory; try a smaller scene (fewer slices or elements)");
   } catch (const std::exception& e) {
-    return fail(program, ExitCode::internal, std::string("internal error: ") + e.what() +
-                                                 "; please report it with the command and input files");
+    return fail(program, ExitCode::internal,
+                std::string("internal error: ") + e.what() + "; please report it with the command and input files");
   }
 }
 
@@ -163,9 +173,10 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
   app.set_version_flag("--version",
                        program + " " + std::string(animpak_version) + " (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
-  app.footer("Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
-             "that differs from the reference, 130 pack interrupted by Ctrl-C (state.bin holds the state so far; "
-             "pack --resume DIR continues it).");
+  app.footer(
+      "Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
+      "that differs from the reference, 130 pack interrupted by Ctrl-C (state.bin holds the state so far; "
+      "pack --resume DIR continues it).");
 
   CommandLine cl;
   add_pack_command(app, cl);

@@ -28,7 +28,8 @@ class SolverFrontend final : public Frontend {
         ->check([](const std::string&) {
           return std::string("the plot needs the rendering library; use animpak bench --plot, or plot the --json file");
         });
-    app.footer(app.get_footer() + " Not here (they need Cairo and OpenImageIO): inspect, render, bench --plot; "
+    app.footer(app.get_footer() +
+               " Not here (they need Cairo and OpenImageIO): inspect, render, bench --plot; "
                "use the full animpak.");
   }
 
@@ -38,7 +39,8 @@ class SolverFrontend final : public Frontend {
   FrameRenderer frame_renderer() const override {
     return [](const World&, const std::filesystem::path& dir) {
       std::cerr << "animpak: no frames rendered (animpak-solve has no rendering library); render them with "
-                   "`animpak render " << dir.string() << "` on a machine with the rendering stack\n";
+                   "`animpak render "
+                << dir.string() << "` on a machine with the rendering stack\n";
       return PackingQuality{};
     };
   }

@@ -27,8 +27,9 @@ int validate(const ValidateOptions& options) {
   if (options.device && options.all_devices) throw UsageError("give either --device or --all-devices, not both");
   const GridSort sort = parse_grid_sort(options.grid_sort, "--grid-sort");
   if (options.device && is_reference(*options.device))
-    throw UsageError("--device reference: validate compares an OpenCL device with the reference; name a device "
-                     "(see animpak devices) or use --all-devices");
+    throw UsageError(
+        "--device reference: validate compares an OpenCL device with the reference; name a device "
+        "(see animpak devices) or use --all-devices");
   const SceneSpec scene = load_scene(options.scene);
 
   // Which devices: every one, the one named (UsageError when none or several match), or the one pack

@@ -37,8 +37,7 @@ std::string cell(const std::string& value, const WorstError& w) {
 
 std::string checked_text(const DeviceValidation& v, int rebuild) {
   if (v.checked_states.empty()) return "no states";
-  const std::string range =
-      std::to_string(v.checked_states.front()) + ".." + std::to_string(v.checked_states.back());
+  const std::string range = std::to_string(v.checked_states.front()) + ".." + std::to_string(v.checked_states.back());
   if (rebuild == 1) return "states " + range;
   return std::to_string(v.checked_states.size()) + " states in " + range + " (every " + std::to_string(rebuild) +
          " steps, where both sides rebuild the grid, and the last)";
@@ -82,8 +81,7 @@ void print_table(std::ostream& out, const ValidationHeader& header, const Device
                     cell(number(f.rel.value), f.rel), cell(integer(f.ulp.value), f.ulp)});
   print_rows(out, rows, "  ");
   if (v.first_differing_step < 0) {
-    out << "state (x, y, t, vx, vy, vt, spring_rest, growth and the counters): identical for " << v.steps
-        << " steps\n";
+    out << "state (x, y, t, vx, vy, vt, spring_rest, growth and the counters): identical for " << v.steps << " steps\n";
   } else {
     out << "state: first differs after step " << v.first_differing_step << ":\n";
     out.precision(9);
@@ -91,8 +89,8 @@ void print_table(std::ostream& out, const ValidationHeader& header, const Device
       if (m.index == "scalar")
         out << "  " << m.array << ": reference " << m.reference << ", device " << m.device << "\n";
       else
-        out << "  " << m.array << "[" << m.first << "] (" << m.index << "): reference " << m.reference
-            << ", device " << m.device << ", " << m.ulp << " ulp; " << m.count << " of " << m.size << " differ\n";
+        out << "  " << m.array << "[" << m.first << "] (" << m.index << "): reference " << m.reference << ", device "
+            << m.device << ", " << m.ulp << " ulp; " << m.count << " of " << m.size << " differ\n";
   }
   out << "verdict: " << v.verdict() << "\n";
 }
@@ -112,12 +110,21 @@ void print_json(std::ostream& out, const ValidationHeader& header, const std::ve
   for (const DeviceValidation& v : all) {
     nlohmann::json forces = nlohmann::json::array();
     for (const ForceComparison& f : v.forces)
-      forces.push_back({{"force", f.name}, {"differing", f.differing}, {"max_abs_error", worst_json(f.abs)},
-                        {"max_rel_error", worst_json(f.rel)}, {"max_ulp", worst_json(f.ulp, true)}});
+      forces.push_back({{"force", f.name},
+                        {"differing", f.differing},
+                        {"max_abs_error", worst_json(f.abs)},
+                        {"max_rel_error", worst_json(f.rel)},
+                        {"max_ulp", worst_json(f.ulp, true)}});
     nlohmann::json mismatches = nlohmann::json::array();
     for (const StateMismatch& m : v.mismatches)
-      mismatches.push_back({{"array", m.array}, {"index", m.index}, {"first", m.first}, {"reference", m.reference},
-                            {"device", m.device}, {"ulp", m.ulp}, {"differing", m.count}, {"size", m.size}});
+      mismatches.push_back({{"array", m.array},
+                            {"index", m.index},
+                            {"first", m.first},
+                            {"reference", m.reference},
+                            {"device", m.device},
+                            {"ulp", m.ulp},
+                            {"differing", m.count},
+                            {"size", m.size}});
     nlohmann::json d{{"device", v.device.name},
                      {"platform", v.device.platform},
                      {"driver", v.device.driver},

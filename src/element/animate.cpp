@@ -24,7 +24,7 @@ namespace animpak {
 
 namespace {
 
-constexpr int arap_iterations = 20;  // warm-started from the previous slice, so few are needed
+constexpr int arap_iterations = 20;   // warm-started from the previous slice, so few are needed
 constexpr int swim_axis_handles = 9;  // enough to carry a one-wavelength bend, few enough to stay smooth
 constexpr int swim_curve_samples = 256;
 
@@ -94,8 +94,8 @@ struct KeyedTransform {
     if (!tx) return p;
     const double k = (*scale)(t);
     if (!(k > 0.0))
-      throw InputError(fmt("animation.keys: the scale spline dips to ", k) +
-                       fmt(" at t = ", t) + "; add keys between the scale keys or make them closer in value");
+      throw InputError(fmt("animation.keys: the scale spline dips to ", k) + fmt(" at t = ", t) +
+                       "; add keys between the scale keys or make them closer in value");
     return similarity(p, pivot, (*angle)(t), k, Vec2{(*tx)(t), (*ty)(t)} * frame_scale);
   }
 };
@@ -169,12 +169,8 @@ class SwimBend {
  private:
   // amplitude · L · w(u) · sin(2π(u/λ − count·t)), w(u) = u²: the head (u = 0) stays put, the tail
   // swings widest, as in carangiform swimming.
-  double phase(double u, double t) const {
-    return 2.0 * std::numbers::pi * (u / spec_.wavelength - spec_.count * t);
-  }
-  double lateral(double u, double t) const {
-    return spec_.amplitude * length_ * u * u * std::sin(phase(u, t));
-  }
+  double phase(double u, double t) const { return 2.0 * std::numbers::pi * (u / spec_.wavelength - spec_.count * t); }
+  double lateral(double u, double t) const { return spec_.amplitude * length_ * u * u * std::sin(phase(u, t)); }
   double slope(double u, double t) const {  // d lateral / du
     return spec_.amplitude * length_ *
            (2.0 * u * std::sin(phase(u, t)) +
@@ -206,8 +202,8 @@ void validate_preset(const AnimationSpec& spec) {
 
 }  // namespace
 
-std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outline& outline,
-                                              const ArtFrame& frame, const AnimationSpec& spec, int slices) {
+std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
+                                              const AnimationSpec& spec, int slices) {
   if (slices < 2) throw InputError("slices = " + std::to_string(slices) + ": need at least 2 slices");
   if (mesh.vertices.empty()) throw InputError("animation: the slice has no vertices");
   validate_preset(spec);

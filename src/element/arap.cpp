@@ -45,7 +45,7 @@ struct ArapSolver::Impl {
   std::vector<Vec2> rest;
   std::vector<std::vector<Neighbor>> neighbors;
   std::vector<int> handles;
-  std::vector<int> free_index;  ///< vertex -> row of the free system, -1 for handles
+  std::vector<int> free_index;              ///< vertex -> row of the free system, -1 for handles
   Eigen::SparseMatrix<double> free_handle;  ///< L_fh: couples free rows to handle columns
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
 
@@ -159,8 +159,10 @@ struct ArapSolver::Impl {
       for (const Neighbor& nb : neighbors[v]) {
         diagonal += nb.weight;
         const int col = free_index[nb.vertex];
-        if (col >= 0) ff.emplace_back(row, col, -nb.weight);
-        else fh.emplace_back(row, handle_column[nb.vertex], -nb.weight);
+        if (col >= 0)
+          ff.emplace_back(row, col, -nb.weight);
+        else
+          fh.emplace_back(row, handle_column[nb.vertex], -nb.weight);
       }
       ff.emplace_back(row, row, diagonal);
     }
@@ -218,7 +220,7 @@ std::vector<Vec2> ArapSolver::solve(const std::vector<Vec2>& handles, const std:
   Eigen::MatrixXd rhs(free_count, 2);
   for (int it = 0; it < iterations; ++it) {
     for (int v = 0; v < n; ++v) rotation[v] = m.best_rotation(v, p);  // local step
-    for (int v = 0; v < n; ++v) {                                      // global step
+    for (int v = 0; v < n; ++v) {                                     // global step
       const int row = m.free_index[v];
       if (row < 0) continue;
       double bx = 0.0, by = 0.0;

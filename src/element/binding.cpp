@@ -32,8 +32,7 @@ class TriangleGrid {
       const auto [x0, y0] = cell(tb.min);
       const auto [x1, y1] = cell(tb.max);
       for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x)
-          cells_[static_cast<std::size_t>(y) * side_ + x].push_back(static_cast<int>(t));
+        for (int x = x0; x <= x1; ++x) cells_[static_cast<std::size_t>(y) * side_ + x].push_back(static_cast<int>(t));
     }
   }
 

@@ -19,8 +19,7 @@ SpacetimeElement build_element(const std::string& name, const ArtShape& art, con
     // The animation's messages name the field; the element and its art file say which scene entry.
     throw InputError("element '" + name + "' (" + art.source.string() + "): " + e.what());
   }
-  SpacetimeElement element =
-      extrude(name, std::move(normalized), std::move(binding), std::move(slice), per_slice);
+  SpacetimeElement element = extrude(name, std::move(normalized), std::move(binding), std::move(slice), per_slice);
   element.notes = std::move(outline.notes);
   return element;
 }

@@ -15,16 +15,14 @@ SpacetimeElement extrude(std::string name, NormalizedArt art, ArtBinding binding
   const int per = static_cast<int>(slice.vertices.size());
   const int b_count = slice.boundary_count;
   const std::string where = name + " (" + art.art.source.string() + ")";
-  if (slices < 2)
-    throw InputError(where + ": an element needs at least two slices, got " + std::to_string(slices));
+  if (slices < 2) throw InputError(where + ": an element needs at least two slices, got " + std::to_string(slices));
   if (b_count < 3 || b_count > per)
     throw InputError(where + ": the slice has " + std::to_string(b_count) + " boundary vertices of " +
                      std::to_string(per));
   for (int s = 0; s < slices; ++s)
     if (static_cast<int>(per_slice[s].size()) != per)
-      throw InputError(where + ": slice " + std::to_string(s) + " has " +
-                       std::to_string(per_slice[s].size()) + " positions, the slice mesh has " +
-                       std::to_string(per) + " vertices");
+      throw InputError(where + ": slice " + std::to_string(s) + " has " + std::to_string(per_slice[s].size()) +
+                       " positions, the slice mesh has " + std::to_string(per) + " vertices");
 
   SpacetimeElement e;
   e.name = std::move(name);
@@ -59,8 +57,7 @@ SpacetimeElement extrude(std::string name, NormalizedArt art, ArtBinding binding
   for (int s = 0; s < slices; ++s) {
     for (const Edge& d : m.edges) add(e.id(s, d[0]), e.id(s, d[1]), SpringClass::edge);
     for (const Edge& d : m.shear_edges) add(e.id(s, d[0]), e.id(s, d[1]), SpringClass::shear);
-    for (const Edge& d : m.negative_space_edges)
-      add(e.id(s, d[0]), e.id(s, d[1]), SpringClass::negative_space);
+    for (const Edge& d : m.negative_space_edges) add(e.id(s, d[0]), e.id(s, d[1]), SpringClass::negative_space);
     if (s + 1 == slices) continue;
     for (int b = 0; b < b_count; ++b) {
       const int next = (b + 1) % b_count;

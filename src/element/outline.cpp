@@ -35,9 +35,7 @@ constexpr double art_thinning = 2e-3;
 constexpr double bridge_step = 0.005;
 constexpr double max_bridge_radius = 0.25;
 
-std::string source_name(const ArtShape& art) {
-  return art.source.empty() ? std::string("<art>") : art.source.string();
-}
+std::string source_name(const ArtShape& art) { return art.source.empty() ? std::string("<art>") : art.source.string(); }
 
 cl::IntPoint to_int(Vec2 p) {
   return {static_cast<cl::cInt>(std::llround(p.x * clipper_scale)),
@@ -149,12 +147,11 @@ bool on_segment(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint
          c.Y <= std::max(a.Y, b.Y);
 }
 
-bool segments_touch(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c,
-                    const cl::IntPoint& d) {
+bool segments_touch(const cl::IntPoint& a, const cl::IntPoint& b, const cl::IntPoint& c, const cl::IntPoint& d) {
   const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
   if (o1 != o2 && o3 != o4) return true;
-  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) ||
-         (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
+  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) || (o3 == 0 && on_segment(c, d, a)) ||
+         (o4 == 0 && on_segment(c, d, b));
 }
 
 bool ring_is_simple(const cl::Path& ring) {
@@ -178,8 +175,7 @@ bool ring_is_simple(const cl::Path& ring) {
         const cl::IntPoint& a = ring[first];
         const cl::IntPoint& s = ring[(first + 1) % n];
         const cl::IntPoint& c = ring[(first + 2) % n];
-        const wide along =
-            static_cast<wide>(c.X - s.X) * (a.X - s.X) + static_cast<wide>(c.Y - s.Y) * (a.Y - s.Y);
+        const wide along = static_cast<wide>(c.X - s.X) * (a.X - s.X) + static_cast<wide>(c.Y - s.Y) * (a.Y - s.Y);
         if (n > 3 && orient(a, s, c) == 0 && along > 0) return false;
         continue;
       }
@@ -283,8 +279,8 @@ Outline element_outline(const NormalizedArt& art, double offset) {
          << (pieces.size() > 1 ? "; " : "");
   if (pieces.size() > 1) {
     note << (note.tellp() > 0 ? "" : name + ": ") << "kept the largest of " << pieces.size()
-         << " disjoint outline pieces (area " << pieces.front().area / (clipper_scale * clipper_scale)
-         << "); dropped " << pieces.size() - 1 << " with area";
+         << " disjoint outline pieces (area " << pieces.front().area / (clipper_scale * clipper_scale) << "); dropped "
+         << pieces.size() - 1 << " with area";
     for (std::size_t i = 1; i < pieces.size(); ++i)
       note << (i > 1 ? ", " : " ") << pieces[i].area / (clipper_scale * clipper_scale);
     note << " (farther than a closing of radius " << max_bridge_radius

@@ -40,9 +40,7 @@ constexpr double min_triangle_area = 1e-12;
 
 // Portable uniform double in [0, 1): the top 53 bits of the generator (std distributions differ between
 // standard libraries, so they would break determinism across platforms).
-double uniform(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
-}
+double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 // The outline parametrized by arc length from ring[0]: arc[i] is the arc length at ring[i].
 struct ArcRing {
@@ -99,7 +97,8 @@ std::vector<double> boundary_samples(const ArcRing& outline, double spacing, dou
     // Equal arcs no longer than `spacing`, so no chord is either.
     const int parts = static_cast<int>(std::ceil((b - a) / spacing));
     if (norm(q - p) > spacing && parts > 1) {
-      for (int k = parts; k-- > 0;) spans.push_back({a + (b - a) * k / parts, k + 1 == parts ? b : a + (b - a) * (k + 1) / parts});
+      for (int k = parts; k-- > 0;)
+        spans.push_back({a + (b - a) * k / parts, k + 1 == parts ? b : a + (b - a) * (k + 1) / parts});
       continue;
     }
     samples.push_back(a);
@@ -180,9 +179,7 @@ void mark_nesting(Cdt& cdt) {
   }
 }
 
-Edge make_edge(int a, int b) {
-  return a < b ? Edge{a, b} : Edge{b, a};
-}
+Edge make_edge(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
 // Triangle with its smallest vertex first, cyclic order (and so orientation) kept.
 Triangle canonical(Triangle t) {
@@ -263,8 +260,7 @@ SliceMesh build_slice(const Outline& outline, const Params& params, std::uint64_
     throw InputError(name + ": the element's outline has fewer than three points or no area");
   if (!(params.element.boundary_spacing > 0.0) || !(params.element.interior_spacing > 0.0))
     throw InputError(name + ": boundary_spacing and interior_spacing must be positive");
-  if (!(params.element.boundary_tolerance > 0.0))
-    throw InputError(name + ": boundary_tolerance must be positive");
+  if (!(params.element.boundary_tolerance > 0.0)) throw InputError(name + ": boundary_tolerance must be positive");
   const ArcRing arc_ring(outline.ring);
   double spacing = params.element.boundary_spacing, tolerance = params.element.boundary_tolerance;
   // A sampling can still cut across a neck narrower than the tolerance and make the boundary polygon

@@ -79,8 +79,8 @@ Spline::Spline(std::vector<double> times, std::vector<double> values, bool loop)
     if (times_.front() == 0.0) {
       if (values_.back() != values_.front()) {
         std::ostringstream out;
-        out << ": a looping animation's key at t = 1 must equal its key at t = 0 (" << values_.back()
-            << " vs " << values_.front() << "); make them equal, drop the t = 1 key, or set loop to false";
+        out << ": a looping animation's key at t = 1 must equal its key at t = 0 (" << values_.back() << " vs "
+            << values_.front() << "); make them equal, drop the t = 1 key, or set loop to false";
         throw InputError(key_message(last, out.str()));
       }
       times_.pop_back();
@@ -98,7 +98,7 @@ Spline::Spline(std::vector<double> times, std::vector<double> values, bool loop)
 double Spline::operator()(double t) const {
   const std::size_t n = times_.size();
   if (n == 1) return values_[0];
-  std::size_t i = 0;   // piece [times_[i], times_[i] + h] ending at key j
+  std::size_t i = 0;  // piece [times_[i], times_[i] + h] ending at key j
   std::size_t j = 1;
   double h = 0.0;
   if (loop_) {

@@ -113,8 +113,7 @@ JsonField JsonField::required(std::string_view key) const {
 std::vector<std::pair<std::string, JsonField>> JsonField::members() const {
   if (!value_->is_object()) fail("expected an object, got " + shown());
   std::vector<std::pair<std::string, JsonField>> out;
-  for (const auto& [key, value] : value_->items())
-    out.emplace_back(key, JsonField(value, *file_, child_path(key)));
+  for (const auto& [key, value] : value_->items()) out.emplace_back(key, JsonField(value, *file_, child_path(key)));
   return out;
 }
 
@@ -137,9 +136,9 @@ double JsonField::number() const {
 
 double JsonField::number_in(double min, double max) const {
   // Stiffnesses have no upper bound: "in [0, inf]" would read oddly.
-  const std::string wanted = std::isinf(max) ? "expected a number >= " + format_number(min) + ", got "
-                                             : "expected a number in [" + format_number(min) + ", " +
-                                                   format_number(max) + "], got ";
+  const std::string wanted =
+      std::isinf(max) ? "expected a number >= " + format_number(min) + ", got "
+                      : "expected a number in [" + format_number(min) + ", " + format_number(max) + "], got ";
   if (!value_->is_number()) fail(wanted + shown());
   const double v = value_->get<double>();
   if (!(v >= min && v <= max)) fail(wanted + shown());

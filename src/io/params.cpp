@@ -8,10 +8,15 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-// The accessor of member M of group G, as a plain function pointer the table can hold.
+// Member M of group G of a Params, as a function whose address the table can hold.
+template <auto G, auto M>
+auto& member_of(Params& params) {
+  return (params.*G).*M;
+}
+
 template <auto G, auto M>
 constexpr auto field() {
-  return +[](Params& params) -> auto& { return (params.*G).*M; };
+  return &member_of<G, M>;
 }
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
@@ -47,8 +52,8 @@ const std::array<ParamInfo, 42> table{{
      "k_edg of shear springs (Eq. 2)", "10 (Eq. 2)"},
     {"k_negative_space", "forces", field<&Params::forces, &Params::Forces::k_negative_space>(), 0.0, inf,
      "k_edg of negative-space springs (Eq. 2)", "0.1 (Eq. 2)"},
-    {"k_time", "forces", field<&Params::forces, &Params::Forces::k_time>(), 0.0, inf,
-     "k_edg of time springs (Eq. 2)", "0.01 (Eq. 2)"},
+    {"k_time", "forces", field<&Params::forces, &Params::Forces::k_time>(), 0.0, inf, "k_edg of time springs (Eq. 2)",
+     "0.01 (Eq. 2)"},
     {"k_target", "forces", field<&Params::forces, &Params::Forces::k_target>(), 0.0, inf,
      "k_edg of target-point springs (Eq. 2, §4)", "10 (Eq. 2)"},
     {"k_overlap", "forces", field<&Params::forces, &Params::Forces::k_overlap>(), 0.0, inf,
@@ -60,11 +65,12 @@ const std::array<ParamInfo, 42> table{{
     {"k_torsion", "forces", field<&Params::forces, &Params::Forces::k_torsion>(), 0.0, inf,
      "k_tor, torsion strength (Eq. 5)", "k_tor = 0.1 (Eq. 5)"},
     {"k_target_angle", "forces", field<&Params::forces, &Params::Forces::k_target_angle>(), 0.0, inf,
-     "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)", "not stated (§4: an optional orientation at targets)"},
+     "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)",
+     "not stated (§4: an optional orientation at targets)"},
     {"k_temporal", "forces", field<&Params::forces, &Params::Forces::k_temporal>(), 0.0, inf,
      "k_tmp, temporal strength (Eq. 6)", "k_tmp = 1 (Eq. 6)"},
-    {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0,
-     "Δt_sim, symplectic Euler step (§5)", "Δt_sim = 0.01 (§5)"},
+    {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)",
+     "Δt_sim = 0.01 (§5)"},
     {"velocity_cap", "forces", field<&Params::forces, &Params::Forces::velocity_cap>(), 0.0, inf,
      "speeds are capped at velocity_cap · Δt_sim (§5)", "10 Δt_sim (§5)"},
     {"cell_size", "forces", field<&Params::forces, &Params::Forces::cell_size>(), 0.005, 1.0,
@@ -74,7 +80,8 @@ const std::array<ParamInfo, 42> table{{
     {"far_cells", "forces", field<&Params::forces, &Params::Forces::far_cells>(), 0, 1,
      "1: far shell of Eq. 1 by cell aggregates; 0: by every centroid (§5.1)", "per-triangle centroids (§5.1)"},
     {"interval_points", "forces", field<&Params::forces, &Params::Forces::interval_points>(), 1, 15,
-     "times the overlap test checks inside each slice interval, evenly spaced (paper §8)", "none: slices only (§8: future work)"},
+     "times the overlap test checks inside each slice interval, evenly spaced (paper §8)",
+     "none: slices only (§8: future work)"},
     {"growth_rate", "growth", field<&Params::growth, &Params::Growth::growth_rate>(), 0.0, inf,
      "g += growth_rate · Δt_sim per free step (§5.3)", "g += 0.001 Δt_sim per free step (§5.3)"},
     {"shrink_rate", "growth", field<&Params::growth, &Params::Growth::shrink_rate>(), 0.0, inf,

@@ -39,14 +39,17 @@ class PathParser {
   PathParser(const std::string& text, std::string name) : name_(std::move(name)) { split(text); }
 
   ArtShape parse() {
-    if (lines_.empty()) fail(1, "the file is empty", "expected a `.path` file: a region count, two colour lines, then one line per path");
+    if (lines_.empty())
+      fail(1, "the file is empty", "expected a `.path` file: a region count, two colour lines, then one line per path");
     read_region_count(lines_[0]);
     if (lines_.size() < 2) fail(lines_[0].number + 1, "missing the foreground_color_rgb line", kHeaderHelp);
     if (lines_.size() < 3) fail(lines_[1].number + 1, "missing the background_color_rgb line", kHeaderHelp);
     const std::vector<Paint> strokes = read_colours(lines_[1], "foreground_color_rgb");
     const std::vector<Paint> fills = read_colours(lines_[2], "background_color_rgb");
     const size_t path_count = lines_.size() - 3;
-    if (path_count == 0) fail(lines_[2].number + 1, "the file has no path lines", "add one `0 <isClosed> <pathType> x0 y0 ...` line per path");
+    if (path_count == 0)
+      fail(lines_[2].number + 1, "the file has no path lines",
+           "add one `0 <isClosed> <pathType> x0 y0 ...` line per path");
     for (const auto& [colours, line] : {std::pair{&strokes, &lines_[1]}, std::pair{&fills, &lines_[2]}})
       if (colours->size() != path_count)
         fail(line->number, std::to_string(colours->size()) + " colours for " + std::to_string(path_count) + " paths",
@@ -121,7 +124,8 @@ class PathParser {
     const std::optional<long> region = integer(token);
     if (!region) fail(line.number, "expected a region number, got " + backticked(token), "use region 0");
     if (*region != 0)
-      fail(line.number, "region " + std::to_string(*region) + " is not supported", "use region 0 (files hold one region)");
+      fail(line.number, "region " + std::to_string(*region) + " is not supported",
+           "use region 0 (files hold one region)");
   }
 
   std::vector<Paint> read_colours(const Line& line, std::string_view keyword) {
@@ -199,9 +203,11 @@ class PathParser {
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     const std::string position = what + ", token " + std::to_string(token_index + 1);
     if (ec == std::errc::result_out_of_range || (ec == std::errc() && !std::isfinite(value)))
-      fail(line.number, position + ": " + backticked(token) + " is not a finite number", "replace it with a finite coordinate");
+      fail(line.number, position + ": " + backticked(token) + " is not a finite number",
+           "replace it with a finite coordinate");
     if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
-      fail(line.number, position + ": " + backticked(token) + " is not a number", "coordinates must be decimal numbers");
+      fail(line.number, position + ": " + backticked(token) + " is not a number",
+           "coordinates must be decimal numbers");
     return value;
   }
 

@@ -27,8 +27,7 @@ std::string show(Vec2 p) {
 double key_time(const JsonField& key, const ObjectSpec& format, std::size_t index, double previous) {
   const JsonField t = key.required("t");
   const double value = read_number(t, format.at("t"));
-  if (index > 0 && value == previous)
-    t.fail("duplicate t " + format_number(value) + "; each key needs its own time");
+  if (index > 0 && value == previous) t.fail("duplicate t " + format_number(value) + "; each key needs its own time");
   if (index > 0 && value < previous)
     t.fail("keys out of order: t " + format_number(value) + " comes after t " + format_number(previous) +
            "; list keys by increasing t");
@@ -74,8 +73,8 @@ void check_transform_seam(const JsonField& keys_field, const std::vector<Transfo
   if (near(a.translate, b.translate) && near(a.rotate, b.rotate) && near(a.scale, b.scale)) return;
   keys_field.item(keys.size() - 1)
       .fail("the key at t = 1 differs from the key at t = 0 (translate " + show(b.translate) + " vs " +
-            show(a.translate) + ", rotate " + format_number(b.rotate) + " vs " + format_number(a.rotate) +
-            ", scale " + format_number(b.scale) + " vs " + format_number(a.scale) +
+            show(a.translate) + ", rotate " + format_number(b.rotate) + " vs " + format_number(a.rotate) + ", scale " +
+            format_number(b.scale) + " vs " + format_number(a.scale) +
             ") in a looping animation; make them equal, drop the t = 1 key, or set `loop` to false");
 }
 
@@ -145,8 +144,9 @@ AnimationSpec read_animation(const JsonField& field) {
   }
   if (spec.preset != AnimationPreset::none && (!spec.keys.empty() || !spec.handles.empty()))
     field.required(spec.keys.empty() ? "handles" : "keys")
-        .fail("a preset is a complete animation and cannot be mixed with keys or handles; "
-              "use `preset` alone, or express the motion with keys");
+        .fail(
+            "a preset is a complete animation and cannot be mixed with keys or handles; "
+            "use `preset` alone, or express the motion with keys");
   return spec;
 }
 

@@ -70,7 +70,8 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, c
       const int hole = read_integer(f->item(i), *format.at("holes").items);
       if (std::find(holes.begin(), holes.end(), hole) != holes.end())
         f->item(i).fail("path " + std::to_string(hole) + " is listed twice");
-      if (spec.outline == hole) f->item(i).fail("path " + std::to_string(hole) + " is the outline and cannot be a hole");
+      if (spec.outline == hole)
+        f->item(i).fail("path " + std::to_string(hole) + " is the outline and cannot be a hole");
       holes.push_back(hole);
     }
     spec.holes = std::move(holes);
@@ -79,7 +80,7 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, c
 }
 
 std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::path& base_dir,
-                                               const ArtLocator& locate) {
+                                              const ArtLocator& locate) {
   const io_detail::ObjectSpec& format = io_detail::kElementObject;
   std::vector<LibraryElementSpec> elements;
   const std::size_t n = field.array_size();
@@ -186,7 +187,8 @@ void check_guided_loops(const JsonField& field, const std::vector<GuidedSpec>& g
         const std::size_t other = blamed == i ? j : i;
         field.item(blamed).required("loop_to").fail(
             backticked(guided[into[i]].name) + " is already looped into by " + field.item(other).path() + " (" +
-            backticked(guided[other].name) + (field.item(other).has("loop_to") ? "" : ", which has no `loop_to` and loops into itself") +
+            backticked(guided[other].name) +
+            (field.item(other).has("loop_to") ? "" : ", which has no `loop_to` and loops into itself") +
             "); loops must be a permutation: each guided element is looped into by exactly one");
       }
   for (std::size_t i = 0; i < guided.size(); ++i) {
@@ -197,10 +199,13 @@ void check_guided_loops(const JsonField& field, const std::vector<GuidedSpec>& g
     const std::string whose = into[i] == i ? "its own first target (it has no `loop_to`, so it loops into itself)"
                                            : "the first target of " + backticked(guided[into[i]].name) + " (" +
                                                  field.item(into[i]).path() + ".targets[0]), its `loop_to`";
-    field.item(i).required("targets").item(guided[i].targets.size() - 1).fail(
-        "the last target (" + format_number(last.x) + ", " + format_number(last.y) + ") must meet " + whose + " at (" +
-        format_number(first.x) + ", " + format_number(first.y) + ") within " + format_number(kLoopTolerance) +
-        " art units, but is " + format_number(gap) + " away; move one of them or set `loop` to false");
+    field.item(i)
+        .required("targets")
+        .item(guided[i].targets.size() - 1)
+        .fail("the last target (" + format_number(last.x) + ", " + format_number(last.y) + ") must meet " + whose +
+              " at (" + format_number(first.x) + ", " + format_number(first.y) + ") within " +
+              format_number(kLoopTolerance) + " art units, but is " + format_number(gap) +
+              " away; move one of them or set `loop` to false");
   }
 }
 
@@ -237,7 +242,8 @@ OrientationSpec read_orientation(const JsonField& field) {
   if (auto f = field.optional("mode"))
     spec.mode = static_cast<OrientationMode>(io_detail::read_choice(*f, format.at("mode")));
   if (auto f = field.optional("angle")) {
-    if (spec.mode != OrientationMode::fixed) f->fail("applies only to mode `fixed`; remove it or set `mode` to \"fixed\"");
+    if (spec.mode != OrientationMode::fixed)
+      f->fail("applies only to mode `fixed`; remove it or set `mode` to \"fixed\"");
     spec.angle = read_number(*f, format.at("angle"));
   }
   const std::optional<JsonField> vector_field = field.optional("field");
@@ -245,16 +251,18 @@ OrientationSpec read_orientation(const JsonField& field) {
     if (vector_field) vector_field->fail("applies only to mode `field`; remove it or set `mode` to \"field\"");
     return spec;
   }
-  if (!vector_field) field.fail("mode `field` needs a `field` object ({\"kind\": \"constant\"|\"radial\"|\"tangential\", ...})");
+  if (!vector_field)
+    field.fail("mode `field` needs a `field` object ({\"kind\": \"constant\"|\"radial\"|\"tangential\", ...})");
   vector_field->check_keys(field_format.keys());
-  spec.field =
-      static_cast<FieldKind>(io_detail::read_choice(vector_field->required("kind"), field_format.at("kind")));
+  spec.field = static_cast<FieldKind>(io_detail::read_choice(vector_field->required("kind"), field_format.at("kind")));
   if (auto f = vector_field->optional("angle")) {
-    if (spec.field != FieldKind::constant) f->fail("applies only to kind `constant`; radial and tangential fields use `center`");
+    if (spec.field != FieldKind::constant)
+      f->fail("applies only to kind `constant`; radial and tangential fields use `center`");
     spec.angle = read_number(*f, field_format.at("angle"));
   }
   if (auto f = vector_field->optional("center")) {
-    if (spec.field == FieldKind::constant) f->fail("applies only to kinds `radial` and `tangential`; a constant field uses `angle`");
+    if (spec.field == FieldKind::constant)
+      f->fail("applies only to kinds `radial` and `tangential`; a constant field uses `angle`");
     spec.center = f->point();
   }
   return spec;
@@ -296,7 +304,8 @@ void read_count(const JsonField& field, SceneSpec& scene) {
   const io_detail::FieldSpec& count = io_detail::kSceneObject.at("count");
   const std::string_view fill = count.alternative->words.front();
   if (field.json().is_string()) {
-    if (field.string() != fill) field.fail("expected an integer or \"" + std::string(fill) + "\", got " + field.shown());
+    if (field.string() != fill)
+      field.fail("expected an integer or \"" + std::string(fill) + "\", got " + field.shown());
   } else {
     scene.count = read_integer(field, count);
   }
@@ -360,9 +369,12 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
   // A phase shifts the copy's slices round the loop, so the t = 1 slice must meet the t = 0 one.
   for (std::size_t i = 0; i < scene.elements.size() && !scene.loop; ++i)
     if (scene.elements[i].random_phase || scene.elements[i].phase != 0.0)
-      root.required("elements").item(i).required("phase").fail(
-          "a phase needs a looping scene (`loop`: true): shifting the animation would cut it where t = 1 "
-          "meets t = 0; remove the phase or let the scene loop");
+      root.required("elements")
+          .item(i)
+          .required("phase")
+          .fail(
+              "a phase needs a looping scene (`loop`: true): shifting the animation would cut it where t = 1 "
+              "meets t = 0; remove the phase or let the scene loop");
   if (auto f = root.optional("guided")) scene.guided = read_guided(*f, scene.elements, scene.loop);
   if (auto f = root.optional("orientation")) scene.orientation = read_orientation(*f);
   if (auto f = root.optional("count")) read_count(*f, scene);

@@ -33,15 +33,11 @@ constexpr std::array<std::string_view, 3> kKinds{"constant", "radial", "tangenti
 
 const FieldSpec kPathIndex{.key = "", .type = Type::integer, .meaning = "", .range = kCount};
 const FieldSpec kFillWord{.key = "", .type = Type::word, .meaning = "as many as fit", .words = kFill};
-const FieldSpec kRandomWord{
-    .key = "", .type = Type::word, .meaning = "each copy at its own slice", .words = kRandom};
+const FieldSpec kRandomWord{.key = "", .type = Type::word, .meaning = "each copy at its own slice", .words = kRandom};
 
 const std::array kContainerFields{
     FieldSpec{.key = "art", .type = Type::art, .meaning = "the container's art file", .required = true},
-    FieldSpec{.key = "outline",
-              .type = Type::integer,
-              .meaning = "source index of the outline path",
-              .range = kCount},
+    FieldSpec{.key = "outline", .type = Type::integer, .meaning = "source index of the outline path", .range = kCount},
     FieldSpec{.key = "holes",
               .type = Type::array,
               .meaning = "source indices of the hole paths, not the outline",
@@ -49,17 +45,12 @@ const std::array kContainerFields{
               .distinct = true},
 };
 
-const FieldSpec kTransformKeyItem{
-    .key = "", .type = Type::object, .meaning = "", .object = &kTransformKeyObject};
+const FieldSpec kTransformKeyItem{.key = "", .type = Type::object, .meaning = "", .object = &kTransformKeyObject};
 const std::array kTransformKeyFields{
-    FieldSpec{.key = "t",
-              .type = Type::number,
-              .meaning = "key time, strictly increasing",
-              .required = true,
-              .range = kUnit},
-    FieldSpec{.key = "translate", .type = Type::point, .meaning = "offset in element art units"},
     FieldSpec{
-        .key = "rotate", .type = Type::number, .meaning = "degrees about the pivot, clockwise on screen"},
+        .key = "t", .type = Type::number, .meaning = "key time, strictly increasing", .required = true, .range = kUnit},
+    FieldSpec{.key = "translate", .type = Type::point, .meaning = "offset in element art units"},
+    FieldSpec{.key = "rotate", .type = Type::number, .meaning = "degrees about the pivot, clockwise on screen"},
     FieldSpec{.key = "scale",
               .type = Type::number,
               .meaning = "uniform scale about the pivot",
@@ -69,15 +60,10 @@ const std::array kTransformKeyFields{
 
 const FieldSpec kHandleKeyItem{.key = "", .type = Type::object, .meaning = "", .object = &kHandleKeyObject};
 const std::array kHandleKeyFields{
-    FieldSpec{.key = "t",
-              .type = Type::number,
-              .meaning = "key time, strictly increasing",
-              .required = true,
-              .range = kUnit},
-    FieldSpec{.key = "position",
-              .type = Type::point,
-              .meaning = "where the handle's point is at time t",
-              .required = true},
+    FieldSpec{
+        .key = "t", .type = Type::number, .meaning = "key time, strictly increasing", .required = true, .range = kUnit},
+    FieldSpec{
+        .key = "position", .type = Type::point, .meaning = "where the handle's point is at time t", .required = true},
 };
 
 const FieldSpec kHandleItem{.key = "", .type = Type::object, .meaning = "", .object = &kHandleObject};
@@ -100,11 +86,10 @@ const std::array kAnimationFields{
               .meaning = "a built-in animation; not with keys or handles",
               .words = kPresets},
     FieldSpec{.key = "turns", .type = Type::number, .meaning = "rotate only: turns per loop"},
-    FieldSpec{
-        .key = "amplitude",
-        .type = Type::number,
-        .meaning = "pulse ([0, 0.9]): relative scale change; swim: bend as a fraction of the body length",
-        .range = kUnit},
+    FieldSpec{.key = "amplitude",
+              .type = Type::number,
+              .meaning = "pulse ([0, 0.9]): relative scale change; swim: bend as a fraction of the body length",
+              .range = kUnit},
     FieldSpec{.key = "count",
               .type = Type::integer,
               .meaning = "pulse: pulses per loop; swim: waves per loop",
@@ -113,16 +98,13 @@ const std::array kAnimationFields{
               .type = Type::number,
               .meaning = "swim only: wave length as a fraction of the body length",
               .range = {0.05, 10.0}},
-    FieldSpec{
-        .key = "loop", .type = Type::boolean, .meaning = "the animation is periodic: t = 1 equals t = 0"},
-    FieldSpec{
-        .key = "pivot", .type = Type::point, .meaning = "centre of rotation and scaling, element art units"},
+    FieldSpec{.key = "loop", .type = Type::boolean, .meaning = "the animation is periodic: t = 1 equals t = 0"},
+    FieldSpec{.key = "pivot", .type = Type::point, .meaning = "centre of rotation and scaling, element art units"},
     FieldSpec{.key = "keys",
               .type = Type::array,
               .meaning = "keyed transforms of the whole element",
               .items = &kTransformKeyItem},
-    FieldSpec{
-        .key = "handles", .type = Type::array, .meaning = "keyed vertex handles", .items = &kHandleItem},
+    FieldSpec{.key = "handles", .type = Type::array, .meaning = "keyed vertex handles", .items = &kHandleItem},
 };
 
 const FieldSpec kElementItem{.key = "", .type = Type::object, .meaning = "", .object = &kElementObject};
@@ -133,8 +115,7 @@ const std::array kElementFields{
               .type = Type::object,
               .meaning = "its scripted animation (§3.2)",
               .object = &kAnimationObject},
-    FieldSpec{
-        .key = "count", .type = Type::integer, .meaning = "exact number of unguided copies", .range = kCount},
+    FieldSpec{.key = "count", .type = Type::integer, .meaning = "exact number of unguided copies", .range = kCount},
     FieldSpec{.key = "weight",
               .type = Type::number,
               .meaning = "relative frequency of copies; not with count",
@@ -167,8 +148,7 @@ const std::array kTargetFields{
 
 const FieldSpec kGuidedItem{.key = "", .type = Type::object, .meaning = "", .object = &kGuidedObject};
 const std::array kGuidedFields{
-    FieldSpec{
-        .key = "name", .type = Type::string, .meaning = "unique among guided elements", .required = true},
+    FieldSpec{.key = "name", .type = Type::string, .meaning = "unique among guided elements", .required = true},
     FieldSpec{.key = "element", .type = Type::string, .meaning = "a name in elements", .required = true},
     FieldSpec{.key = "targets",
               .type = Type::array,
@@ -182,16 +162,9 @@ const std::array kGuidedFields{
 };
 
 const std::array kVectorFieldFields{
-    FieldSpec{.key = "kind",
-              .type = Type::choice,
-              .meaning = "the field's shape",
-              .required = true,
-              .words = kKinds},
-    FieldSpec{
-        .key = "angle", .type = Type::number, .meaning = "constant only: the field's direction in degrees"},
-    FieldSpec{.key = "center",
-              .type = Type::point,
-              .meaning = "radial and tangential only: container art coordinates"},
+    FieldSpec{.key = "kind", .type = Type::choice, .meaning = "the field's shape", .required = true, .words = kKinds},
+    FieldSpec{.key = "angle", .type = Type::number, .meaning = "constant only: the field's direction in degrees"},
+    FieldSpec{.key = "center", .type = Type::point, .meaning = "radial and tangential only: container art coordinates"},
 };
 
 const std::array kOrientationFields{
@@ -199,8 +172,7 @@ const std::array kOrientationFields{
               .type = Type::choice,
               .meaning = "how unguided elements are turned at the start",
               .words = kModes},
-    FieldSpec{
-        .key = "angle", .type = Type::number, .meaning = "fixed only: every element's angle in degrees"},
+    FieldSpec{.key = "angle", .type = Type::number, .meaning = "fixed only: every element's angle in degrees"},
     FieldSpec{.key = "field",
               .type = Type::object,
               .meaning = "field only: the direction field",
@@ -235,13 +207,10 @@ const std::array kSceneFields{
               .range = kCount,
               .alternative = &kFillWord},
     FieldSpec{.key = "seed", .type = Type::seed, .meaning = "the one random seed of the run"},
-    FieldSpec{
-        .key = "loop", .type = Type::boolean, .meaning = "the t = 1 plane meets the t = 0 plane (§5.2)"},
+    FieldSpec{.key = "loop", .type = Type::boolean, .meaning = "the t = 1 plane meets the t = 0 plane (§5.2)"},
     FieldSpec{.key = "slices", .type = Type::param, .meaning = "n_s, the same as params.slices (give one)"},
-    FieldSpec{
-        .key = "params", .type = Type::params, .meaning = "overrides of the constants (docs/parameters.md)"},
-    FieldSpec{
-        .key = "$schema", .type = Type::any_string, .meaning = "ignored: lets an editor find this schema"},
+    FieldSpec{.key = "params", .type = Type::params, .meaning = "overrides of the constants (docs/parameters.md)"},
+    FieldSpec{.key = "$schema", .type = Type::any_string, .meaning = "ignored: lets an editor find this schema"},
     FieldSpec{.key = "version",
               .type = Type::integer,
               .meaning = "the scene format version; default 1",
@@ -392,20 +361,17 @@ void collect_objects(const ObjectSpec& object, std::vector<const ObjectSpec*>& o
 }  // namespace
 
 const ObjectSpec kSceneObject{"scene", "an animpak scene (docs/scene-format.md)", kSceneFields};
-const ObjectSpec kContainerObject{
-    "container", "the container's art and which of its paths are outline and holes", kContainerFields};
+const ObjectSpec kContainerObject{"container", "the container's art and which of its paths are outline and holes",
+                                  kContainerFields};
 const ObjectSpec kElementObject{"element", "one element of the library", kElementFields};
 const ObjectSpec kAnimationObject{"animation", "a preset, or keys and handles", kAnimationFields};
-const ObjectSpec kTransformKeyObject{"transform_key", "a keyed transform of the whole element",
-                                     kTransformKeyFields};
+const ObjectSpec kTransformKeyObject{"transform_key", "a keyed transform of the whole element", kTransformKeyFields};
 const ObjectSpec kHandleObject{"handle", "a keyed vertex handle", kHandleFields};
 const ObjectSpec kHandleKeyObject{"handle_key", "a keyed position of a handle", kHandleKeyFields};
 const ObjectSpec kGuidedObject{"guided", "an element that passes through target points", kGuidedFields};
 const ObjectSpec kTargetObject{"target", "a spacetime point of a guided element", kTargetFields};
-const ObjectSpec kOrientationObject{"orientation", "how unguided elements are turned at the start",
-                                    kOrientationFields};
-const ObjectSpec kVectorFieldObject{"vector_field", "a direction field the elements align with",
-                                    kVectorFieldFields};
+const ObjectSpec kOrientationObject{"orientation", "how unguided elements are turned at the start", kOrientationFields};
+const ObjectSpec kVectorFieldObject{"vector_field", "a direction field the elements align with", kVectorFieldFields};
 
 std::vector<std::string_view> ObjectSpec::keys() const {
   std::vector<std::string_view> out;

@@ -24,38 +24,38 @@ namespace {
 namespace tag = svgpp::tag;
 namespace mpl = boost::mpl;
 
-using RenderedElements = mpl::set<tag::element::svg, tag::element::g, tag::element::a, tag::element::switch_,
-                                  tag::element::use_, tag::element::path, tag::element::rect, tag::element::circle,
-                                  tag::element::ellipse, tag::element::line, tag::element::polyline,
-                                  tag::element::polygon>::type;
-using SkippedElements = mpl::vector<tag::element::text, tag::element::image, tag::element::mask,
-                                    tag::element::clipPath, tag::element::pattern, tag::element::marker,
-                                    tag::element::filter, tag::element::foreignObject>;
+using RenderedElements =
+    mpl::set<tag::element::svg, tag::element::g, tag::element::a, tag::element::switch_, tag::element::use_,
+             tag::element::path, tag::element::rect, tag::element::circle, tag::element::ellipse, tag::element::line,
+             tag::element::polyline, tag::element::polygon>::type;
+using SkippedElements =
+    mpl::vector<tag::element::text, tag::element::image, tag::element::mask, tag::element::clipPath,
+                tag::element::pattern, tag::element::marker, tag::element::filter, tag::element::foreignObject>;
 using ProcessedElements = mpl::fold<SkippedElements, RenderedElements, mpl::insert<mpl::_1, mpl::_2>>::type;
 // What a `use` may point at: anything rendered, plus `symbol`, which is drawn only through `use`.
-using ReferencedElements = mpl::insert<mpl::fold<SkippedElements, mpl::erase_key<RenderedElements, tag::element::a>::type,
-                                                 mpl::insert<mpl::_1, mpl::_2>>::type,
-                                       tag::element::symbol>::type;
+using ReferencedElements =
+    mpl::insert<mpl::fold<SkippedElements, mpl::erase_key<RenderedElements, tag::element::a>::type,
+                          mpl::insert<mpl::_1, mpl::_2>>::type,
+                tag::element::symbol>::type;
 
 using StyleAttributes =
     mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke, tag::attribute::stroke_width,
                 tag::attribute::fill_rule, tag::attribute::opacity, tag::attribute::fill_opacity,
                 tag::attribute::stroke_opacity, tag::attribute::display, tag::attribute::visibility,
                 tag::attribute::color, tag::attribute::clip_path, tag::attribute::mask, tag::attribute::filter>;
-using ViewportAttributes =
-    mpl::vector<mpl::pair<tag::element::svg, tag::attribute::x>, mpl::pair<tag::element::svg, tag::attribute::y>,
-                mpl::pair<tag::element::svg, tag::attribute::width>, mpl::pair<tag::element::svg, tag::attribute::height>,
-                mpl::pair<tag::element::svg, tag::attribute::viewBox>,
-                mpl::pair<tag::element::svg, tag::attribute::preserveAspectRatio>,
-                mpl::pair<tag::element::symbol, tag::attribute::viewBox>,
-                mpl::pair<tag::element::symbol, tag::attribute::preserveAspectRatio>,
-                mpl::pair<tag::element::use_, tag::attribute::x>, mpl::pair<tag::element::use_, tag::attribute::y>,
-                mpl::pair<tag::element::use_, tag::attribute::width>,
-                mpl::pair<tag::element::use_, tag::attribute::height>>;
-using ProcessedAttributes =
-    mpl::fold<ViewportAttributes,
-              mpl::fold<StyleAttributes, svgpp::traits::shapes_attributes_by_element, mpl::insert<mpl::_1, mpl::_2>>::type,
-              mpl::insert<mpl::_1, mpl::_2>>::type;
+using ViewportAttributes = mpl::vector<
+    mpl::pair<tag::element::svg, tag::attribute::x>, mpl::pair<tag::element::svg, tag::attribute::y>,
+    mpl::pair<tag::element::svg, tag::attribute::width>, mpl::pair<tag::element::svg, tag::attribute::height>,
+    mpl::pair<tag::element::svg, tag::attribute::viewBox>,
+    mpl::pair<tag::element::svg, tag::attribute::preserveAspectRatio>,
+    mpl::pair<tag::element::symbol, tag::attribute::viewBox>,
+    mpl::pair<tag::element::symbol, tag::attribute::preserveAspectRatio>,
+    mpl::pair<tag::element::use_, tag::attribute::x>, mpl::pair<tag::element::use_, tag::attribute::y>,
+    mpl::pair<tag::element::use_, tag::attribute::width>, mpl::pair<tag::element::use_, tag::attribute::height>>;
+using ProcessedAttributes = mpl::fold<
+    ViewportAttributes,
+    mpl::fold<StyleAttributes, svgpp::traits::shapes_attributes_by_element, mpl::insert<mpl::_1, mpl::_2>>::type,
+    mpl::insert<mpl::_1, mpl::_2>>::type;
 
 // Which context type each element gets; all construct from (parent context, xmlNode*).
 template <class Parent, class Element>
@@ -63,8 +63,7 @@ struct ChildContext {
   using type = svgpp::factory::context::on_stack_with_xml_element<GroupContext>;
 };
 template <class Parent, class Element>
-  requires mpl::has_key<svgpp::traits::shape_elements, Element>::value
-struct ChildContext<Parent, Element> {
+requires mpl::has_key<svgpp::traits::shape_elements, Element>::value struct ChildContext<Parent, Element> {
   using type = svgpp::factory::context::on_stack_with_xml_element<ShapeContext>;
 };
 template <class Parent>
@@ -72,8 +71,7 @@ struct ChildContext<Parent, tag::element::use_> {
   using type = svgpp::factory::context::on_stack_with_xml_element<UseContext>;
 };
 template <class Parent, class Element>
-  requires mpl::contains<SkippedElements, Element>::value
-struct ChildContext<Parent, Element> {
+requires mpl::contains<SkippedElements, Element>::value struct ChildContext<Parent, Element> {
   using type = svgpp::factory::context::on_stack_with_xml_element<SkippedContext>;
 };
 template <class Parent>
@@ -92,15 +90,25 @@ struct LenientErrors {
   struct NeverThrown {};
   using intercepted_exception_type = NeverThrown;
   template <class C, class X, class N>
-  static bool unknown_element(const C&, const X&, const N&) { return true; }
+  static bool unknown_element(const C&, const X&, const N&) {
+    return true;
+  }
   template <class C, class X>
-  static bool unexpected_element(const C&, const X&) { return true; }
+  static bool unexpected_element(const C&, const X&) {
+    return true;
+  }
   template <class C, class... A>
-  static bool unknown_attribute(const C&, const A&...) { return true; }
+  static bool unknown_attribute(const C&, const A&...) {
+    return true;
+  }
   template <class C, class... A>
-  static bool unexpected_attribute(const C&, const A&...) { return true; }
+  static bool unexpected_attribute(const C&, const A&...) {
+    return true;
+  }
   template <class C, class T>
-  static bool required_attribute_not_found(const C&, T) { return true; }
+  static bool required_attribute_not_found(const C&, T) {
+    return true;
+  }
   template <class C, class T>
   static bool negative_value(const C& c, T) {
     c.state().faulted.insert(c.node());
@@ -125,16 +133,24 @@ struct LenientErrors {
     return true;
   }
   template <class X>
-  static bool add_element_info(intercepted_exception_type&, const X&) { throw; }
+  static bool add_element_info(intercepted_exception_type&, const X&) {
+    throw;
+  }
 };
 
 struct TraversalControl {
   template <class C>
-  static bool proceed_to_element_content(C& c) { return c.descend(); }
+  static bool proceed_to_element_content(C& c) {
+    return c.descend();
+  }
   template <class C>
-  static bool proceed_to_next_child(C& c) { return c.next_child(); }
+  static bool proceed_to_next_child(C& c) {
+    return c.next_child();
+  }
   template <class C, class X>
-  static bool process_child(C&, X&) { return true; }
+  static bool process_child(C&, X&) {
+    return true;
+  }
 };
 
 using Traversal = svgpp::document_traversal<
@@ -145,7 +161,8 @@ using Traversal = svgpp::document_traversal<
     svgpp::document_traversal_control_policy<TraversalControl>>;  // paths: svgpp's default no_shorthands
 
 using GradientTraversal = svgpp::document_traversal<
-    svgpp::processed_elements<mpl::set<tag::element::linearGradient, tag::element::radialGradient, tag::element::stop>::type>,
+    svgpp::processed_elements<
+        mpl::set<tag::element::linearGradient, tag::element::radialGradient, tag::element::stop>::type>,
     svgpp::processed_attributes<mpl::set<tag::attribute::stop_color, tag::attribute::stop_opacity>::type>,
     svgpp::context_factories<ContextFactories>, svgpp::error_policy<LenientErrors>>;
 
@@ -185,8 +202,10 @@ std::string css_property(const xmlNode* node, const char* name) {
   return attribute(node, name);
 }
 
-bool load_reference(xmlNode* target, UseContext& use) { return Traversal::load_referenced_element<
-    svgpp::referencing_element<tag::element::use_>, svgpp::expected_elements<ReferencedElements>>::load(target, use); }
+bool load_reference(xmlNode* target, UseContext& use) {
+  return Traversal::load_referenced_element<svgpp::referencing_element<tag::element::use_>,
+                                            svgpp::expected_elements<ReferencedElements>>::load(target, use);
+}
 
 std::optional<Rgba> gradient_color(State& state, xmlNode* node) {
   // Inkscape keeps the stops in one gradient and points the used one at it with href.
@@ -194,8 +213,10 @@ std::optional<Rgba> gradient_color(State& state, xmlNode* node) {
     const bool linear = xmlStrEqual(node->name, BAD_CAST "linearGradient");
     if (!linear && !xmlStrEqual(node->name, BAD_CAST "radialGradient")) return std::nullopt;
     GradientContext gradient(state, node);
-    if (linear) GradientTraversal::load_expected_element(node, gradient, tag::element::linearGradient());
-    else GradientTraversal::load_expected_element(node, gradient, tag::element::radialGradient());
+    if (linear)
+      GradientTraversal::load_expected_element(node, gradient, tag::element::linearGradient());
+    else
+      GradientTraversal::load_expected_element(node, gradient, tag::element::radialGradient());
     if (auto c = gradient.average()) return c;
     const std::string ref = href(node);
     node = ref.size() > 1 && ref[0] == '#' ? state.doc.find(ref.substr(1)) : nullptr;
@@ -218,8 +239,9 @@ Paint ShapeContext::resolve(const PaintSpec& spec, double opacity) {
         state_->gradients.push_back(spec.iri);
       color = *gradient;
     } else {
-      state_->warn(what() + ": " + (server ? "paint server url(#" + spec.iri + ") is not a gradient with stops"
-                                           : "url(#" + spec.iri + ") refers to no element") +
+      state_->warn(what() + ": " +
+                   (server ? "paint server url(#" + spec.iri + ") is not a gradient with stops"
+                           : "url(#" + spec.iri + ") refers to no element") +
                    "; its fallback colour (or none) is used");
       kind = spec.fallback_kind;
       color = kind == PaintSpec::Kind::current_color ? style_.current_color : spec.fallback_color;
@@ -239,12 +261,24 @@ void ShapeContext::on_exit_element() {
   const double* v = values_.data();
   for (const Seg kind : kinds_) {
     switch (kind) {
-      case Seg::move: flat.move_to({v[0], v[1]}), v += 2; break;
-      case Seg::line: flat.line_to({v[0], v[1]}), v += 2; break;
-      case Seg::quad: flat.quadratic_to({v[0], v[1]}, {v[2], v[3]}), v += 4; break;
-      case Seg::cubic: flat.cubic_to({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}), v += 6; break;
-      case Seg::arc: flat.arc_to(v[0], v[1], v[2], v[3] != 0.0, v[4] != 0.0, {v[5], v[6]}), v += 7; break;
-      case Seg::close: flat.close(); break;
+      case Seg::move:
+        flat.move_to({v[0], v[1]}), v += 2;
+        break;
+      case Seg::line:
+        flat.line_to({v[0], v[1]}), v += 2;
+        break;
+      case Seg::quad:
+        flat.quadratic_to({v[0], v[1]}, {v[2], v[3]}), v += 4;
+        break;
+      case Seg::cubic:
+        flat.cubic_to({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}), v += 6;
+        break;
+      case Seg::arc:
+        flat.arc_to(v[0], v[1], v[2], v[3] != 0.0, v[4] != 0.0, {v[5], v[6]}), v += 7;
+        break;
+      case Seg::close:
+        flat.close();
+        break;
     }
   }
   state_->spend(node_, 0, flat.point_count());
@@ -299,7 +333,8 @@ std::string ShapeContext::degenerate(const std::vector<Polyline>& kept, size_t d
   std::string kinds;
   if (dropped > 0) kinds = "a single point or only zero-length segments";
   if (zero_area > 0) kinds += std::string(kinds.empty() ? "" : ", or ") + "no area (collinear points) and no stroke";
-  if (kept.empty()) return (total == 1 ? "its geometry is " : "all its subpaths are ") + kinds + "; nothing drawn (dropped)";
+  if (kept.empty())
+    return (total == 1 ? "its geometry is " : "all its subpaths are ") + kinds + "; nothing drawn (dropped)";
   return std::to_string(dropped + zero_area) + " of its " + std::to_string(total) + " subpaths " +
          (dropped + zero_area == 1 ? "is " : "are ") + kinds + "; those dropped";
 }
@@ -396,9 +431,11 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
   }
   if (out.paths.empty()) {
     // The warnings usually say why (a pattern fill, text only), so the first one travels along.
-    const std::string why = out.warnings.empty() ? "" : "; first of " + std::to_string(out.warnings.size()) +
-                                                            " warnings: " + out.warnings.front();
-    throw InputError(message(name, "<svg>", "no drawable geometry (no filled or stroked path or shape is rendered" + why + ")",
+    const std::string why = out.warnings.empty() ? ""
+                                                 : "; first of " + std::to_string(out.warnings.size()) +
+                                                       " warnings: " + out.warnings.front();
+    throw InputError(message(name, "<svg>",
+                             "no drawable geometry (no filled or stroked path or shape is rendered" + why + ")",
                              "convert text and images to paths and make sure something is visible"));
   }
   return out;
@@ -418,9 +455,9 @@ ArtShape load_svg(const std::filesystem::path& file, const SvgOptions& options) 
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) throw InputError(svg::message(name, "file", "cannot be read (" + ec.message() + ")", "check the path"));
   if (size > options.max_file_bytes) {
-    throw InputError(svg::message(name, "file", std::to_string(size) + " bytes is over the limit of " +
-                                                    std::to_string(options.max_file_bytes),
-                                  "simplify the art, or raise the limit if the file is trusted"));
+    throw InputError(svg::message(
+        name, "file", std::to_string(size) + " bytes is over the limit of " + std::to_string(options.max_file_bytes),
+        "simplify the art, or raise the limit if the file is trusted"));
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(svg::message(name, "file", "cannot be opened", "check the path and its permissions"));

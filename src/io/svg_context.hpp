@@ -37,8 +37,10 @@ struct State {
     elements += new_elements;
     points += new_points;
     if (elements > 200000 || points > 4000000) {
-      throw InputError(message(doc.name(), describe(node), "more than 200000 elements or 4000000 points after "
-                               "expanding <use> references", "simplify the art or raise flatten_tolerance"));
+      throw InputError(message(doc.name(), describe(node),
+                               "more than 200000 elements or 4000000 points after "
+                               "expanding <use> references",
+                               "simplify the art or raise flatten_tolerance"));
     }
   }
 };
@@ -54,9 +56,7 @@ struct PaintSpec {
   Rgba fallback_color;
 };
 
-inline Rgba to_rgba(Color c) {
-  return {((c >> 16) & 255) / 255.0, ((c >> 8) & 255) / 255.0, (c & 255) / 255.0, 1.0};
-}
+inline Rgba to_rgba(Color c) { return {((c >> 16) & 255) / 255.0, ((c >> 8) & 255) / 255.0, (c & 255) / 255.0, 1.0}; }
 
 // svgpp's paint events, one overload per form `fill`/`stroke` can take.
 inline void assign(PaintSpec& p, tag::value::none) { p = {}; }
@@ -64,7 +64,9 @@ inline void assign(PaintSpec& p, tag::value::currentColor) { p = PaintSpec(Paint
 inline void assign(PaintSpec&, tag::value::inherit) {}
 inline void assign(PaintSpec& p, Color c) { p = PaintSpec(PaintSpec::Kind::color, to_rgba(c)); }
 template <class Icc>
-void assign(PaintSpec& p, Color c, const Icc&) { assign(p, c); }
+void assign(PaintSpec& p, Color c, const Icc&) {
+  assign(p, c);
+}
 template <class R>
 void assign(PaintSpec& p, tag::iri_fragment, const R& id) {
   p = PaintSpec(PaintSpec::Kind::url, {}, std::string(boost::begin(id), boost::end(id)));
@@ -125,13 +127,19 @@ class BaseContext : public Reporter {
     std::replace(vb.begin(), vb.end(), ',', ' ');
     std::istringstream in(vb);
     double x = 0, y = 0, w = 0, h = 0;
-    if (in >> x >> y >> w >> h && w > 0 && h > 0) lengths_.set_viewport_size(w, h);
-    else lengths_.set_viewport_size(100, 100);
+    if (in >> x >> y >> w >> h && w > 0 && h > 0)
+      lengths_.set_viewport_size(w, h);
+    else
+      lengths_.set_viewport_size(100, 100);
     read_paint_order();
   }
   BaseContext(BaseContext& parent, xmlNode* node)
-      : Reporter(*parent.state_, node), style_(parent.style_), transform_(parent.transform_),
-        opacity_(parent.opacity_), lengths_(parent.lengths_), ref_width_(parent.use_width_),
+      : Reporter(*parent.state_, node),
+        style_(parent.style_),
+        transform_(parent.transform_),
+        opacity_(parent.opacity_),
+        lengths_(parent.lengths_),
+        ref_width_(parent.use_width_),
         ref_height_(parent.use_height_) {
     state_->spend(node, 1, 0);
     if (parent.is_switch_) {
@@ -173,9 +181,13 @@ class BaseContext : public Reporter {
   void disable_rendering() { display_ = false; }
 
   template <class... A>
-  void set(tag::attribute::fill, const A&... a) { assign(style_.fill, a...); }
+  void set(tag::attribute::fill, const A&... a) {
+    assign(style_.fill, a...);
+  }
   template <class... A>
-  void set(tag::attribute::stroke, const A&... a) { assign(style_.stroke, a...); }
+  void set(tag::attribute::stroke, const A&... a) {
+    assign(style_.stroke, a...);
+  }
   void set(tag::attribute::stroke_width, double w) { style_.stroke_width = std::max(0.0, w); }
   void set(tag::attribute::fill_rule, tag::value::nonzero) { style_.fill_rule = FillRule::nonzero; }
   void set(tag::attribute::fill_rule, tag::value::evenodd) { style_.fill_rule = FillRule::evenodd; }
@@ -188,11 +200,17 @@ class BaseContext : public Reporter {
   void set(tag::attribute::visibility, tag::value::collapse) { style_.visible = false; }
   void set(tag::attribute::color, Color c) { style_.current_color = to_rgba(c); }
   template <class R>
-  void set(tag::attribute::clip_path, tag::iri_fragment, const R&) { unsupported("clip-path", "drawn unclipped"); }
+  void set(tag::attribute::clip_path, tag::iri_fragment, const R&) {
+    unsupported("clip-path", "drawn unclipped");
+  }
   template <class R>
-  void set(tag::attribute::mask, tag::iri_fragment, const R&) { unsupported("mask", "drawn unmasked"); }
+  void set(tag::attribute::mask, tag::iri_fragment, const R&) {
+    unsupported("mask", "drawn unmasked");
+  }
   template <class R>
-  void set(tag::attribute::filter, tag::iri_fragment, const R&) { unsupported("filter", "drawn unfiltered"); }
+  void set(tag::attribute::filter, tag::iri_fragment, const R&) {
+    unsupported("filter", "drawn unfiltered");
+  }
   // Everything else svgpp reports (inherit, other display values, attributes we only pass through).
   template <class Tag, class... A>
   void set(Tag, const A&...) {}
@@ -210,8 +228,8 @@ class BaseContext : public Reporter {
     if (tokens.empty() || tokens[0] == "inherit") return;
     const auto fill = std::find(tokens.begin(), tokens.end(), "fill");
     const auto stroke = std::find(tokens.begin(), tokens.end(), "stroke");
-    style_.paint_order = stroke != tokens.end() && stroke < fill ? PaintOrder::stroke_then_fill
-                                                                 : PaintOrder::fill_then_stroke;
+    style_.paint_order =
+        stroke != tokens.end() && stroke < fill ? PaintOrder::stroke_then_fill : PaintOrder::fill_then_stroke;
   }
 
   Style style_;
@@ -249,8 +267,7 @@ class ShapeContext : public BaseContext {
   void path_quadratic_bezier_to(double x1, double y1, double x, double y, tag::coordinate::absolute) {
     add(Seg::quad, {x1, y1, x, y});
   }
-  void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y,
-                            tag::coordinate::absolute) {
+  void path_cubic_bezier_to(double x1, double y1, double x2, double y2, double x, double y, tag::coordinate::absolute) {
     add(Seg::cubic, {x1, y1, x2, y2, x, y});
   }
   void path_elliptical_arc_to(double rx, double ry, double rot, bool large, bool sweep, double x, double y,
@@ -320,7 +337,9 @@ class StopContext : public Reporter {
   StopContext(GradientContext& parent, xmlNode* node) : Reporter(parent.state(), node), parent_(&parent) {}
   void set(tag::attribute::stop_color, Color c) { color_ = to_rgba(c); }
   template <class Icc>
-  void set(tag::attribute::stop_color, Color c, const Icc&) { color_ = to_rgba(c); }
+  void set(tag::attribute::stop_color, Color c, const Icc&) {
+    color_ = to_rgba(c);
+  }
   void set(tag::attribute::stop_opacity, double v) { opacity_ = std::clamp(v, 0.0, 1.0); }
   template <class Tag, class... A>
   void set(Tag, const A&...) {}

@@ -88,9 +88,9 @@ std::string points_error(const std::string& points) {
     if (end == i) {
       const size_t pairs = count / 2;
       return "points error at " + quoted_at(points, i) +
-             (pairs == 0 ? "; nothing before it to render"
-                         : "; rendered the " + std::to_string(pairs) + " point" + (pairs == 1 ? "" : "s") +
-                               " before it");
+             (pairs == 0
+                  ? "; nothing before it to render"
+                  : "; rendered the " + std::to_string(pairs) + " point" + (pairs == 1 ? "" : "s") + " before it");
     }
     last = i;
     ++count;

@@ -49,8 +49,7 @@ std::string message(const std::string& file, const std::string& what, const std:
 }
 
 std::string attribute(const xmlNode* node, const char* name, const char* ns_href) {
-  xmlChar* v = ns_href ? xmlGetNsProp(node, BAD_CAST name, BAD_CAST ns_href)
-                       : xmlGetNoNsProp(node, BAD_CAST name);
+  xmlChar* v = ns_href ? xmlGetNsProp(node, BAD_CAST name, BAD_CAST ns_href) : xmlGetNoNsProp(node, BAD_CAST name);
   if (!v) return {};
   std::string s(reinterpret_cast<const char*>(v));
   xmlFree(v);

@@ -8,8 +8,7 @@
 
 namespace animpak::io_detail {
 
-std::string read_text_file(const std::filesystem::path& file, const std::string& what_to_do,
-                           std::uintmax_t max_bytes) {
+std::string read_text_file(const std::filesystem::path& file, const std::string& what_to_do, std::uintmax_t max_bytes) {
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
   const std::string where = file.string() + ": cannot read \"" + file.string() + "\" (resolved to " +

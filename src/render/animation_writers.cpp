@@ -28,12 +28,14 @@ std::string number(double v, int decimals) {
 std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
+    if (c == '"' || c == '\\')
+      out += '\\', out += c;
     else if (static_cast<unsigned char>(c) < 0x20) {
       char code[8];
       std::snprintf(code, sizeof code, "\\u%04x", c);
       out += code;
-    } else out += c;
+    } else
+      out += c;
   }
   return out + "\"";
 }
@@ -139,7 +141,8 @@ constexpr const char* identity_layer_transform =
     "\"a\":{\"a\":0,\"k\":[0,0,0]},\"s\":{\"a\":0,\"k\":[100,100,100]}}";
 constexpr const char* identity_group_transform =
     "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},\"s\":{\"a\":0,\"k\":[100,100]},"
-    "\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0},\"nm\":\"transform\"}";
+    "\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0},\"nm\":"
+    "\"transform\"}";
 
 std::string colour(Rgba c) {
   std::string s = "[";
@@ -175,8 +178,10 @@ void write_keyframes(std::ostream& json, const std::vector<double>& frames, Inte
   json << "{\"a\":1,\"k\":[";
   for (std::size_t k = 0; k < frames.size(); ++k) {
     json << (k ? ",{\"t\":" : "{\"t\":") << number(frames[k], key_decimals) << ",\"s\":[" << value(k) << "]";
-    if (hold) json << ",\"h\":1";
-    else if (k + 1 < frames.size()) json << "," << easing;
+    if (hold)
+      json << ",\"h\":1";
+    else if (k + 1 < frames.size())
+      json << "," << easing;
     json << "}";
   }
   json << "]}";
@@ -185,7 +190,8 @@ void write_keyframes(std::ostream& json, const std::vector<double>& frames, Inte
 // The decimals that keep a coordinate within 10^−precision pixels when one unit is `pixels_per_unit`
 // pixels.
 int decimals_for(int precision, double pixels_per_unit) {
-  return std::clamp(static_cast<int>(std::ceil(precision + std::log10(std::max(pixels_per_unit, 1e-12)) - 1e-9)), 0, 12);
+  return std::clamp(static_cast<int>(std::ceil(precision + std::log10(std::max(pixels_per_unit, 1e-12)) - 1e-9)), 0,
+                    12);
 }
 
 // The Lottie layers, written top first (Lottie draws layers[0] on top). Coordinates are the PNG frames'
@@ -219,8 +225,8 @@ class LottieLayers {
       json_ << "{\"ty\":\"sh\",\"ks\":" << still(shape_value(pixels, true, decimals_)) << "},";
     }
     json_ << "{\"ty\":\"st\",\"c\":" << still(colour({0.55, 0.55, 0.55, 1})) << ",\"o\":" << still("100")
-          << ",\"w\":" << still(number(std::max(1.0, height_ / 400.0), 3))
-          << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"}," << identity_group_transform << "]}]";
+          << ",\"w\":" << still(number(std::max(1.0, height_ / 400.0), 3)) << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"},"
+          << identity_group_transform << "]}]";
     tail();
   }
 
@@ -246,8 +252,8 @@ class LottieLayers {
  private:
   void head(int type, const std::string& name) {
     json_ << (index_ ? ",\n" : "\n");
-    json_ << "{\"ddd\":0,\"ind\":" << ++index_ << ",\"ty\":" << type
-          << ",\"nm\":" << json_string(name) << ",\"sr\":1,\"ks\":" << identity_layer_transform << ",\"ao\":0";
+    json_ << "{\"ddd\":0,\"ind\":" << ++index_ << ",\"ty\":" << type << ",\"nm\":" << json_string(name)
+          << ",\"sr\":1,\"ks\":" << identity_layer_transform << ",\"ao\":0";
   }
   void tail() { json_ << ",\"ip\":0,\"op\":" << frames_ << ",\"st\":0,\"bm\":0}"; }
 
@@ -397,7 +403,8 @@ void write_svg_head(std::ostream& svg, const SvgView& view, const World& world, 
   if (style.container == ContainerDrawing::outline)
     svg << " stroke=\"#8c8c8c\" stroke-width=\"" << view.n(std::max(1.0, style.size / 400.0) / view.pixels_per_art_unit)
         << "\"";
-  else svg << " stroke=\"none\"";
+  else
+    svg << " stroke=\"none\"";
   svg << "/>\n";
 }
 

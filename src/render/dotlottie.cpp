@@ -17,9 +17,7 @@ struct ZipEntry {
   std::string name, data;
 };
 
-void put16(std::string& out, std::uint32_t v) {
-  out += char(v & 0xff), out += char((v >> 8) & 0xff);
-}
+void put16(std::string& out, std::uint32_t v) { out += char(v & 0xff), out += char((v >> 8) & 0xff); }
 void put32(std::string& out, std::uint32_t v) { put16(out, v & 0xffff), put16(out, v >> 16); }
 
 // Raw deflate (no zlib header), as a zip entry of method 8 holds it.

@@ -32,7 +32,8 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
 double element_scale(const World& world, int element, const std::vector<Vec2>& positions) {
   const SliceMesh& rest = world.library[world.elements[element].library].slice;
   const int B = rest.boundary_count;
-  const std::vector<Vec2> now(positions.begin(), positions.begin() + B), before(rest.vertices.begin(), rest.vertices.begin() + B);
+  const std::vector<Vec2> now(positions.begin(), positions.begin() + B),
+      before(rest.vertices.begin(), rest.vertices.begin() + B);
   return std::sqrt(std::abs(signed_area(now)) / std::max(std::abs(signed_area(before)), 1e-300));
 }
 

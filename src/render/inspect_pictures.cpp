@@ -78,7 +78,8 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
     const int panel = std::max(16, size / 2);
     Picture strip(panel * panels, panel, {{0, 0}, {double(panels), 1}}, {1, 1, 1, 1}, 0.0);
     for (int i = 0; i < panels; ++i) {
-      const int s = panels == 1 ? 0 : static_cast<int>(std::lround(double(i) * (element.slice_count - 1) / (panels - 1)));
+      const int s =
+          panels == 1 ? 0 : static_cast<int>(std::lround(double(i) * (element.slice_count - 1) / (panels - 1)));
       const std::vector<Vec2> pos = slice_positions(element, s);
       // Map this slice's world box into panel i of the strip's [0, panels] x [0, 1] world.
       auto place = [&](Vec2 p) { return Vec2{i + 0.5 + (p.x - centre.x) / span, 0.5 + (p.y - centre.y) / span}; };

@@ -17,7 +17,8 @@ Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_sc
     const ArtPath& path = art.paths[p];
     std::vector<std::vector<Vec2>> rings =
         painted_region(path, points[p], path.stroke_width * stroke_scale, stroke_tolerance);
-    region.rings.insert(region.rings.end(), std::make_move_iterator(rings.begin()), std::make_move_iterator(rings.end()));
+    region.rings.insert(region.rings.end(), std::make_move_iterator(rings.begin()),
+                        std::make_move_iterator(rings.end()));
   }
   return region;
 }
@@ -34,7 +35,8 @@ FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& ar
   std::vector<Region> elements;
   elements.reserve(world.elements.size());
   for (std::size_t i = 0; i < world.elements.size(); ++i)
-    elements.push_back(art_region(world.library[world.elements[i].library].art.art, art[i].points, art[i].stroke_scale));
+    elements.push_back(
+        art_region(world.library[world.elements[i].library].art.art, art[i].points, art[i].stroke_scale));
   FrameMetrics m = measure_regions(elements, container_region(world.container), what);
   m.t = tf;
   return m;

@@ -48,7 +48,8 @@ PixelFit fit_to_picture(int width, int height, Box world, double margin_px) {
   const double usable_w = std::max(1.0, width - 2 * margin_px), usable_h = std::max(1.0, height - 2 * margin_px);
   PixelFit fit;
   fit.scale = std::min(usable_w / w, usable_h / h);
-  fit.offset = {0.5 * (width - fit.scale * (world.min.x + world.max.x)), 0.5 * (height - fit.scale * (world.min.y + world.max.y))};
+  fit.offset = {0.5 * (width - fit.scale * (world.min.x + world.max.x)),
+                0.5 * (height - fit.scale * (world.min.y + world.max.y))};
   return fit;
 }
 
@@ -97,8 +98,10 @@ void Picture::draw_art(const ArtShape& art, const ArtPoints& points, double opac
       cairo_set_line_width(cr, std::max(min_stroke_px, path.stroke_width * stroke_scale * impl_->scale));
       cairo_stroke_preserve(cr);
     };
-    if (path.paint_order == PaintOrder::fill_then_stroke) fill(), stroke();
-    else stroke(), fill();
+    if (path.paint_order == PaintOrder::fill_then_stroke)
+      fill(), stroke();
+    else
+      stroke(), fill();
     cairo_new_path(cr);
   }
 }
@@ -198,9 +201,7 @@ std::vector<unsigned char> Picture::rgba8() const {
 void Picture::write(const std::filesystem::path& file) const {
   const std::vector<unsigned char> pixels = rgba8();
   auto out = OIIO::ImageOutput::create(file.string());
-  if (!out)
-    throw InputError(file.string() + ": cannot write this image format (" + OIIO::geterror() +
-                     "); use .png");
+  if (!out) throw InputError(file.string() + ": cannot write this image format (" + OIIO::geterror() + "); use .png");
   const OIIO::ImageSpec spec(width(), height(), 4, OIIO::TypeDesc::UINT8);
   if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
     throw InputError(file.string() + ": cannot write the image (" + out->geterror() +

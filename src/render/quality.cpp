@@ -127,8 +127,8 @@ class SegmentGrid {
     if (segments_.empty()) return;
     // About one segment per cell, but no more than 1024 cells a side.
     const double extent = std::max({box_.width(), box_.height(), 1e-9});
-    cell_ = std::max({std::sqrt(std::max(box_.width() * box_.height(), 1e-18) / double(segments_.size())),
-                      extent / 1024.0, 1e-9});
+    cell_ = std::max(
+        {std::sqrt(std::max(box_.width() * box_.height(), 1e-18) / double(segments_.size())), extent / 1024.0, 1e-9});
     nx_ = std::max(1, static_cast<int>(std::ceil(box_.width() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(box_.height() / cell_)));
     begin_.assign(std::size_t(nx_) * ny_ + 1, 0);
@@ -139,8 +139,10 @@ class SegmentGrid {
         for (int y = y0; y <= y1; ++y)
           for (int x = x0; x <= x1; ++x) {
             const std::size_t c = std::size_t(y) * nx_ + x;
-            if (pass == 0) ++begin_[c + 1];
-            else items_[fill[c]++] = int(i);
+            if (pass == 0)
+              ++begin_[c + 1];
+            else
+              items_[fill[c]++] = int(i);
           }
       }
       if (pass == 0) {
@@ -396,8 +398,10 @@ double climb(SegmentGrid& grid, Vec2 p, double step) {
       const double du = distance(p + u * step, d + step);
       if (du > best_distance) best = p + u * step, best_distance = du;
     }
-    if (best_distance > d) p = best, d = best_distance;
-    else step /= 2;
+    if (best_distance > d)
+      p = best, d = best_distance;
+    else
+      step /= 2;
   }
   return d;
 }
@@ -480,8 +484,7 @@ FrameMetrics measure_regions(const std::vector<Region>& elements, const Region& 
     boxes[i] = bounds(art[i]);
     m.area[i] = area(art[i]);
     all.insert(all.end(), art[i].begin(), art[i].end());
-    if (m.area[i] > 0.0)
-      m.outside_share[i] = boolean_area(art[i], inside_container, cl::ctDifference) / m.area[i];
+    if (m.area[i] > 0.0) m.outside_share[i] = boolean_area(art[i], inside_container, cl::ctDifference) / m.area[i];
   }
   const double container_area = area(inside_container);
   if (container_area > 0.0) m.coverage = boolean_area(all, inside_container, cl::ctIntersection) / container_area;

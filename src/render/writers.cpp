@@ -25,12 +25,23 @@ std::string xml_escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -80,8 +91,8 @@ std::string frame_name(int i, const char* ext) {
 
 // The path data of polylines mapped by `to`: "M x y L x y … Z".
 template <class Map>
-void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& polylines, const std::vector<bool>& closed,
-                     Map to) {
+void write_path_data(std::ostream& out, const std::vector<std::vector<Vec2>>& polylines,
+                     const std::vector<bool>& closed, Map to) {
   for (std::size_t q = 0; q < polylines.size(); ++q) {
     for (std::size_t k = 0; k < polylines[q].size(); ++k) {
       const Vec2 p = to(polylines[q][k]);
@@ -131,7 +142,8 @@ void write_svg_container(std::ostream& out, const World& world, const FrameStyle
   // draw_frame's grey line, max(1, size / 400) pixels wide.
   if (style.container == ContainerDrawing::outline)
     out << " stroke=\"#8c8c8c\" stroke-width=\"" << std::max(1.0, style.size / 400.0) * h / style.size << "\"";
-  else out << " stroke=\"none\"";
+  else
+    out << " stroke=\"none\"";
   out << "/>\n";
 }
 
@@ -148,7 +160,8 @@ void write_svg(const World& world, const std::vector<ElementArt>& art, const Fra
   for (Vec2 p : world.container.outline) box.add(to_art(p));
   // The margin of draw_frame's pictures: 2 % of the height on every side.
   const double margin = 0.02 * box.height();
-  const double x = box.min.x - margin, y = box.min.y - margin, w = box.width() + 2 * margin, h = box.height() + 2 * margin;
+  const double x = box.min.x - margin, y = box.min.y - margin, w = box.width() + 2 * margin,
+               h = box.height() + 2 * margin;
   out << std::setprecision(10);
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x << ' ' << y << ' ' << w << ' ' << h
       << "\" width=\"" << raster_width({{x, y}, {x + w, y + h}}, style.size) << "\" height=\"" << style.size << "\">\n";
@@ -188,10 +201,14 @@ std::string quoted(const std::filesystem::path& p) {
 
 std::string animation_file_name(FrameFormat format) {
   switch (format) {
-    case FrameFormat::lottie: return "animation.json";
-    case FrameFormat::dotlottie: return "animation.lottie";
-    case FrameFormat::svg_anim: return "animation.svg";
-    default: return "";
+    case FrameFormat::lottie:
+      return "animation.json";
+    case FrameFormat::dotlottie:
+      return "animation.lottie";
+    case FrameFormat::svg_anim:
+      return "animation.svg";
+    default:
+      return "";
   }
 }
 
@@ -202,9 +219,9 @@ namespace {
 void write_gif(const std::string& input, const FrameOutput& out) {
   const auto gif = out.dir / "animation.gif";
   const bool transparent = out.style.background.a < 1;
-  run_ffmpeg(input + " -filter_complex \"[0:v]split[a][b];[a]palettegen=reserve_transparent=" +
-                 (transparent ? "1" : "0") + "[p];[b][p]paletteuse" + (transparent ? "=alpha_threshold=128" : "") +
-                 "\" -loop 0 " + quoted(gif),
+  run_ffmpeg(input +
+                 " -filter_complex \"[0:v]split[a][b];[a]palettegen=reserve_transparent=" + (transparent ? "1" : "0") +
+                 "[p];[b][p]paletteuse" + (transparent ? "=alpha_threshold=128" : "") + "\" -loop 0 " + quoted(gif),
              gif);
 }
 
@@ -249,8 +266,8 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   if (wants(FrameFormat::gif)) write_gif(input, out);
   if (wants(FrameFormat::mp4)) {
     const auto mp4 = out.dir / "animation.mp4";
-    run_ffmpeg(input + " -vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white\" -c:v libx264 -pix_fmt yuv420p " + quoted(mp4),
-               mp4);
+    run_ffmpeg(
+        input + " -vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white\" -c:v libx264 -pix_fmt yuv420p " + quoted(mp4), mp4);
   }
   return quality;
 }

@@ -9,9 +9,7 @@
 namespace animpak {
 namespace {
 
-std::string where(const ArtShape& art, int index) {
-  return art.source.string() + ": path " + std::to_string(index);
-}
+std::string where(const ArtShape& art, int index) { return art.source.string() + ": path " + std::to_string(index); }
 
 const ArtPath* find_source(const ArtShape& art, int index) {
   for (const ArtPath& p : art.paths)
@@ -84,8 +82,9 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
           best = std::abs(signed_area(l.points)), outline = l.points;
     }
     if (outline.empty())
-      throw InputError(art.source.string() +
-                       ": no closed path to use as the container outline; draw a closed shape or set container.outline");
+      throw InputError(
+          art.source.string() +
+          ": no closed path to use as the container outline; draw a closed shape or set container.outline");
   }
 
   Box box;

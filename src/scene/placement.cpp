@@ -55,12 +55,14 @@ std::string describe_target(const std::vector<TargetSpec>& targets, std::size_t 
 void check_target_path(const SceneSpec& scene, std::size_t index, const Container& c, std::vector<std::string>& notes) {
   const GuidedSpec& g = scene.guided[index];
   const std::string who = "guided[" + std::to_string(index) + "] \"" + g.name + "\"";
-  auto where = [&](Vec2 p) { return ring_contains(c.outline, p) ? "in a hole of the container" : "outside the container"; };
+  auto where = [&](Vec2 p) {
+    return ring_contains(c.outline, p) ? "in a hole of the container" : "outside the container";
+  };
   for (std::size_t k = 0; k < g.targets.size(); ++k) {
     const Vec2 p = c.frame.to_unit({g.targets[k].x, g.targets[k].y});
     if (!c.contains(p))
-      throw InputError(scene.file.string() + ": " + who + ".targets[" + std::to_string(k) + "]: " +
-                       describe_target(g.targets, k) + " lies " + where(p) +
+      throw InputError(scene.file.string() + ": " + who + ".targets[" + std::to_string(k) +
+                       "]: " + describe_target(g.targets, k) + " lies " + where(p) +
                        "; the anchor cannot reach it, move it into the container");
   }
   // Samples each stretch every path_step of the unit container (1 unit of a 500-unit artboard): only a
@@ -147,7 +149,8 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
       p.offset.push_back(target.position - scale * rotate(anchor - p.pivot, target.angle));
       p.path.push_back(target.position);
       if (key >= 0)
-        p.keys.push_back({s, {static_cast<float>(target.position.x), static_cast<float>(target.position.y), t},
+        p.keys.push_back({s,
+                          {static_cast<float>(target.position.x), static_cast<float>(target.position.y), t},
                           g.targets[key].angle.has_value()});
     }
     out.push_back(std::move(p));

@@ -15,7 +15,7 @@ struct Placement {
   Vec2 pivot;  ///< the library element's rest centroid (unit element coordinates)
   std::vector<Vec2> offset;
   std::vector<double> scale, angle;
-  int anchor = -1;  ///< slice vertex pulled to the targets (guided only)
+  int anchor = -1;         ///< slice vertex pulled to the targets (guided only)
   std::vector<Vec2> path;  ///< the anchor's initial position per slice (guided only)
   /// A target acting on one slice (paper §4): the anchor's target point, and whether the target gives
   /// an angle that the slice's orientation is held to.
@@ -24,9 +24,9 @@ struct Placement {
     Vec3f point;
     bool hold_angle = false;
   };
-  std::vector<Key> keys;  ///< one per target, in slice order (guided only)
-  int loop_partner = -1;       ///< instance whose first slice this one's last slice meets
-  int phase = 0;  ///< slices by which its animation is ahead round the loop (unguided only)
+  std::vector<Key> keys;   ///< one per target, in slice order (guided only)
+  int loop_partner = -1;   ///< instance whose first slice this one's last slice meets
+  int phase = 0;           ///< slices by which its animation is ahead round the loop (unguided only)
   bool secondary = false;  ///< a secondary element (unguided only; docs/parameters.md, "Secondary elements")
 };
 

@@ -17,7 +17,8 @@ std::vector<Vec2> poisson_disk(const Container& container, double min_distance, 
   std::vector<int> active;
 
   auto cell_of = [&](Vec2 p) {
-    return std::pair{std::clamp(static_cast<int>(p.x / cell), 0, n - 1), std::clamp(static_cast<int>(p.y / cell), 0, n - 1)};
+    return std::pair{std::clamp(static_cast<int>(p.x / cell), 0, n - 1),
+                     std::clamp(static_cast<int>(p.y / cell), 0, n - 1)};
   };
   auto acceptable = [&](Vec2 p) {
     if (p.x < 0 || p.y < 0 || p.x >= 1 || p.y >= 1) return false;

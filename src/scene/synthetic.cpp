@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "animpak/animation.hpp"
-#include "animpak/synthetic.hpp"
 #include "animpak/error.hpp"
+#include "animpak/synthetic.hpp"
 #include "placement.hpp"
 
 namespace animpak {

@@ -53,8 +53,8 @@ double seed_margin(const std::vector<SpacetimeElement>& library, double initial_
 // `wanted` seeds for a fixed count (a random subset of the first blue-noise set that holds enough), or
 // every seed at seed_spacing when the scene fills; `spacing` is the spacing used.
 std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& container,
-                                 const std::vector<Placement>& guided, bool fill, int wanted, double margin,
-                                 Rng& rng, double& spacing) {
+                                 const std::vector<Placement>& guided, bool fill, int wanted, double margin, Rng& rng,
+                                 double& spacing) {
   const std::string file = scene.file.string();
   std::vector<Vec2> seeds;
   spacing = scene.params.placement.seed_spacing;
@@ -79,8 +79,7 @@ std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& contai
 
 // The library element of each of `seeds` seeds: every fixed count, then the rest by weight; shuffled so
 // kinds mix in space.
-std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& weighted, std::size_t seeds,
-                               Rng& rng) {
+std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& weighted, std::size_t seeds, Rng& rng) {
   std::vector<int> picks;
   for (std::size_t i = 0; i < scene.elements.size(); ++i)
     for (int k = 0; k < scene.elements[i].count.value_or(0); ++k) picks.push_back(static_cast<int>(i));
@@ -104,14 +103,15 @@ std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& w
 
 std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
                                       const std::vector<SpacetimeElement>& library,
-                                      const std::vector<Placement>& guided, Rng& rng,
-                                      std::vector<std::string>& notes) {
+                                      const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes) {
   const std::string file = scene.file.string();
   int fixed = 0;
   std::vector<int> weighted;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
-    if (scene.elements[i].count) fixed += *scene.elements[i].count;
-    else if (scene.elements[i].weight > 0) weighted.push_back(static_cast<int>(i));
+    if (scene.elements[i].count)
+      fixed += *scene.elements[i].count;
+    else if (scene.elements[i].weight > 0)
+      weighted.push_back(static_cast<int>(i));
   }
   const bool fill = !scene.count && !weighted.empty();
   const int wanted = scene.count ? *scene.count : fixed;
@@ -191,8 +191,8 @@ void check_placements(const Container& container, const std::vector<SpacetimeEle
         continue;
       for (std::size_t s = 0; s < rings[i].size(); ++s)
         if (rings_overlap(rings[i][s], rings[j][s]))
-          throw InputError("elements " + placements[i].name + " and " + placements[j].name +
-                           " overlap at slice " + std::to_string(s) +
+          throw InputError("elements " + placements[i].name + " and " + placements[j].name + " overlap at slice " +
+                           std::to_string(s) +
                            " after shrinking; lower params.initial_scale or move their seeds or targets apart");
     }
 }

@@ -160,7 +160,8 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
     placements.push_back(std::move(p));
   }
   if (placements.empty())
-    throw InputError(scene.file.string() + ": the scene places no element; give elements a count or weight, or add guided elements");
+    throw InputError(scene.file.string() +
+                     ": the scene places no element; give elements a count or weight, or add guided elements");
   scene_detail::check_placements(container, library, placements);
 
   Topology& topo = world.topology;
@@ -206,7 +207,8 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 }
 
 World make_world(const SceneSpec& scene) {
-  Container container = make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
+  Container container =
+      make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
   std::vector<SpacetimeElement> library;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const LibraryElementSpec& spec = scene.elements[i];

@@ -42,7 +42,8 @@ class Writer {
 
 class Reader {
  public:
-  Reader(const std::string& bytes, std::size_t end, std::string file) : bytes_(bytes), end_(end), file_(std::move(file)) {}
+  Reader(const std::string& bytes, std::size_t end, std::string file)
+      : bytes_(bytes), end_(end), file_(std::move(file)) {}
   template <class T>
   T get() {
     need(sizeof(T));
@@ -100,8 +101,8 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put<std::uint64_t>(c.state.secondary_since);
   w.put<std::uint64_t>(c.state.mark_iteration);
   w.put<double>(c.state.mark_growth);
-  for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt,
-                        &c.state.spring_rest, &c.state.growth})
+  for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
+                        &c.state.growth})
     w.put_array(*a);
   w.put<std::uint64_t>(fnv1a(w.bytes()));
 

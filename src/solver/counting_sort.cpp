@@ -2,8 +2,8 @@
 
 namespace animpak {
 
-void counting_sort(const std::vector<std::int32_t>& item_cell, std::int32_t cells, std::vector<std::int32_t>& cell_start,
-                   std::vector<std::int32_t>& sorted) {
+void counting_sort(const std::vector<std::int32_t>& item_cell, std::int32_t cells,
+                   std::vector<std::int32_t>& cell_start, std::vector<std::int32_t>& sorted) {
   // Count, then an exclusive scan in place: where each cell's range starts; the last entry is the total.
   cell_start.assign(static_cast<std::size_t>(cells) + 1, 0);
   for (const std::int32_t c : item_cell) ++cell_start[c + 1];

@@ -6,14 +6,22 @@ namespace animpak {
 
 const char* stop_reason_name(StopReason r) {
   switch (r) {
-    case StopReason::running: return "running";
-    case StopReason::gap: return "gap";
-    case StopReason::stalled: return "stalled";
-    case StopReason::unsettled: return "unsettled";
-    case StopReason::growth: return "growth";
-    case StopReason::max_iterations: return "max_iterations";
-    case StopReason::interrupted: return "interrupted";
-    case StopReason::non_finite: return "non_finite";
+    case StopReason::running:
+      return "running";
+    case StopReason::gap:
+      return "gap";
+    case StopReason::stalled:
+      return "stalled";
+    case StopReason::unsettled:
+      return "unsettled";
+    case StopReason::growth:
+      return "growth";
+    case StopReason::max_iterations:
+      return "max_iterations";
+    case StopReason::interrupted:
+      return "interrupted";
+    case StopReason::non_finite:
+      return "non_finite";
   }
   return "unknown";
 }
@@ -63,7 +71,8 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     const auto window = static_cast<std::uint64_t>(params.stop.stall_window);
     if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + window) {
       const SimState& mark = result.last_good;
-      stalled = mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stop.stall_growth));
+      stalled =
+          mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stop.stall_growth));
       if (!stalled) mark_progress();
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
@@ -87,7 +96,8 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       result.reason = touching ? StopReason::gap : StopReason::stalled;
       break;
     }
-    if (settling_since != 0 && iteration - settling_since >= static_cast<std::uint64_t>(params.stop.settle_iterations)) {
+    if (settling_since != 0 &&
+        iteration - settling_since >= static_cast<std::uint64_t>(params.stop.settle_iterations)) {
       result.reason = StopReason::unsettled;
       break;
     }

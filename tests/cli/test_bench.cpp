@@ -72,8 +72,10 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
     return animpak::test::skip("no OpenCL device (Debian package pocl-opencl-icd): bench --grid-sort both not tested");
   const animpak::test::TempDir scratch("animpak-bench-");
   const auto json_file = scratch / "bench-sorts.json";
-  const CommandResult r = run_animpak("bench --device pocl --grid-sort both --sizes 2000 --steps 2 --warmup 1 "
-                                      "--no-example-scenes --examples " + examples() + " --json " + json_file.string());
+  const CommandResult r = run_animpak(
+      "bench --device pocl --grid-sort both --sizes 2000 --steps 2 --warmup 1 "
+      "--no-example-scenes --examples " +
+      examples() + " --json " + json_file.string());
   INFO(r.err);
   if (r.code == 1 && r.err.find("pocl") != std::string::npos)
     return animpak::test::skip("no PoCL device (Debian package pocl-opencl-icd): bench --grid-sort both not tested");
@@ -88,14 +90,17 @@ TEST_CASE("animpak bench --grid-sort both: each OpenCL device timed with each so
 
   CHECK(run_animpak("bench --grid-sort sideways --sizes 2000").code == 1);
   CHECK(run_animpak("pack --grid-sort sideways " + examples() + "/default/scene.json --out " +
-                    (scratch / "never").string()).code == 1);
+                    (scratch / "never").string())
+            .code == 1);
 }
 
 TEST_CASE("animpak bench --series both: constant and dense worlds, a fit for each, visits per vertex printed") {
   const animpak::test::TempDir scratch("animpak-bench-");
   const auto json_file = scratch / "bench-series.json";
-  const CommandResult r = run_animpak("bench --series both --sizes 2000,8000 --steps 1 --warmup 0 --no-example-scenes "
-                                      "--examples " + examples() + " --json " + json_file.string());
+  const CommandResult r = run_animpak(
+      "bench --series both --sizes 2000,8000 --steps 1 --warmup 0 --no-example-scenes "
+      "--examples " +
+      examples() + " --json " + json_file.string());
   INFO(r.err);
   REQUIRE(r.code == 0);
   CHECK_THAT(r.out, Catch::Matchers::Contains("reference, constant series: "));
@@ -146,8 +151,10 @@ TEST_CASE("animpak bench --state: times steps from a packed state, a folder or i
   std::ofstream(scene) << animpak::test::star_scene(3, 5, 2);
   REQUIRE(run_animpak("pack " + scene + " --out " + packed + " --max-iterations 30 --no-render").code == 0);
   const auto json_file = scratch / "bench-state.json";
-  CommandResult r = run_animpak("bench --state " + packed + " --state " + packed + "/state.bin --steps 1 --warmup 0 "
-                                "--examples " + examples() + " --json " + json_file.string());
+  CommandResult r = run_animpak("bench --state " + packed + " --state " + packed +
+                                "/state.bin --steps 1 --warmup 0 "
+                                "--examples " +
+                                examples() + " --json " + json_file.string());
   INFO(r.err);
   REQUIRE(r.code == 0);
   nlohmann::json j = nlohmann::json::parse(read_text(json_file));
@@ -188,12 +195,10 @@ TEST_CASE("bench fit: least-squares slope and intercept over one device's rows o
   };
   // ms = 2 + 0.5 per 1,000 vertices with a residual of +1, -2, +1 (which leaves the line unchanged),
   // among rows of another series, another device and a scene that the fit must leave out.
-  const std::vector<BenchRow> rows{row("reference", "constant", 10000, 8.0, 1000000),
-                                   row("reference", "dense", 20000, 500.0, 9000000),
-                                   row("pocl", "constant", 20000, 1.0, 2400000),
-                                   row("reference", "constant", 20000, 10.0, 2400000),
-                                   row("reference", "scene", 30000, 900.0, 1),
-                                   row("reference", "constant", 30000, 18.0, 3300000)};
+  const std::vector<BenchRow> rows{
+      row("reference", "constant", 10000, 8.0, 1000000), row("reference", "dense", 20000, 500.0, 9000000),
+      row("pocl", "constant", 20000, 1.0, 2400000),      row("reference", "constant", 20000, 10.0, 2400000),
+      row("reference", "scene", 30000, 900.0, 1),        row("reference", "constant", 30000, 18.0, 3300000)};
   const animpak::LinearFit f = animpak::fit_series(rows, "reference", "constant");
   CHECK(f.points == 3);
   CHECK(f.slope_ms_per_kvertex == Approx(0.5));
@@ -220,8 +225,8 @@ TEST_CASE("animpak bench --repeat: every device timed once per round, in turn, a
   const std::string scene = (scratch / "scene.json").string();
   std::ofstream(scene) << animpak::test::star_scene(3, 5, 2);
   const auto json_file = scratch / "bench-repeat.json";
-  const CommandResult r = run_animpak("bench --scene " + scene + " --device pocl --steps 1 --warmup 0 --repeat 3 --json " +
-                                      json_file.string());
+  const CommandResult r = run_animpak("bench --scene " + scene +
+                                      " --device pocl --steps 1 --warmup 0 --repeat 3 --json " + json_file.string());
   INFO(r.err);
   REQUIRE(r.code == 0);
   // Rounds alternate between the devices.
@@ -242,7 +247,8 @@ TEST_CASE("animpak bench --repeat: every device timed once per round, in turn, a
   CHECK(pocl.at("ms_per_iter").get<double>() == rounds[1]);
   std::vector<double> ratios;
   for (int k = 0; k < 3; ++k)
-    ratios.push_back(reference.at("rounds_ms_per_iter")[k].get<double>() / pocl.at("rounds_ms_per_iter")[k].get<double>());
+    ratios.push_back(reference.at("rounds_ms_per_iter")[k].get<double>() /
+                     pocl.at("rounds_ms_per_iter")[k].get<double>());
   CHECK(pocl.at("rounds_speedup").get<std::vector<double>>() == ratios);
   std::sort(ratios.begin(), ratios.end());
   CHECK(pocl.at("speedup").get<double>() == ratios[1]);

@@ -47,7 +47,8 @@ TEST_CASE("animpak check --json: a .path element is ready, with its paths, outli
 
 TEST_CASE("animpak check: skipped and reduced features are warnings, and the art is still ready") {
   const animpak::test::TempDir scratch("animpak-check-");
-  const auto svg = scratch_svg(scratch, "reduced.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+  const auto svg =
+      scratch_svg(scratch, "reduced.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
     <text x="5" y="20">hello</text>
     <path id="open" d="M10 10 L90 10 L50 45" fill="red"/>
     <path id="bow" d="M10 40 L40 10 L40 40 L10 10 Z" fill="blue" stroke="black" stroke-width="2"/></svg>)svg");
@@ -76,7 +77,8 @@ TEST_CASE("animpak check: a file that cannot be imported exits 2 with the error,
   CHECK(report["ready"] == false);
   CHECK(report["error"].get<std::string>().find("/nonexistent/bird.svg") != std::string::npos);
   const animpak::test::TempDir scratch("animpak-check-");
-  const auto empty = scratch_svg(scratch, "empty.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>)svg");
+  const auto empty =
+      scratch_svg(scratch, "empty.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>)svg");
   const CommandResult text = run_animpak("check " + empty.string());
   CHECK(text.code == 2);
   CHECK(text.err.find("no drawable geometry") != std::string::npos);
@@ -84,7 +86,8 @@ TEST_CASE("animpak check: a file that cannot be imported exits 2 with the error,
 
 TEST_CASE("animpak check --png: the art at the document's viewport, longer side --size, transparent outside") {
   const animpak::test::TempDir scratch("animpak-check-");
-  const auto svg = scratch_svg(scratch, "viewport.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100"
+  const auto svg =
+      scratch_svg(scratch, "viewport.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100"
       viewBox="0 0 20 10"><rect x="10" y="0" width="10" height="10" fill="black"/></svg>)svg");
   const auto png = scratch / "viewport.png";
   const CommandResult r = run_animpak("check " + svg.string() + " --png " + png.string() + " --size 64");

@@ -19,7 +19,8 @@ TEST_CASE("animpak: --help for the program and every command exits 0 and describ
     CHECK(r.out.find("Usage") != std::string::npos);
   }
   CHECK(run_animpak("--help").out.find("inspect") != std::string::npos);
-  CHECK(run_animpak("--version").out.find("animpak " + std::string(animpak::animpak_version) + " (") != std::string::npos);
+  CHECK(run_animpak("--version").out.find("animpak " + std::string(animpak::animpak_version) + " (") !=
+        std::string::npos);
 }
 
 // That docs/ holds exactly this output is the `docs:` tests' job (tests/docs/generated_docs.py).
@@ -45,7 +46,8 @@ TEST_CASE("animpak params and schema: the constants and the scene format, from t
 TEST_CASE("animpak --version names the commit of the source tree it was built from, read at build time") {
   const std::string version = run_animpak("--version").out;
   std::smatch m;
-  REQUIRE(std::regex_search(version, m, std::regex(R"(animpak [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}|unknown)(-dirty)?\))")));
+  REQUIRE(std::regex_search(
+      version, m, std::regex(R"(animpak [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{7,}|unknown)(-dirty)?\))")));
   // The tree's commit now, without the dirty mark: a test file edited since the build may add one. A
   // commit read when the build folder was configured, many commits ago, fails here.
   const CommandResult git = run_command("git -C '" ANIMPAK_SOURCE_DIR "' rev-parse --short=7 HEAD");
@@ -78,7 +80,8 @@ TEST_CASE("animpak inspect: a missing or unsupported file exits 2 and names it")
 
 TEST_CASE("animpak inspect --json: counts follow the extrusion formulas") {
   const int slices = 7;
-  const CommandResult r = run_animpak("inspect " + shapes_dir() + "/bird.path --json --slices " + std::to_string(slices));
+  const CommandResult r =
+      run_animpak("inspect " + shapes_dir() + "/bird.path --json --slices " + std::to_string(slices));
   REQUIRE(r.code == 0);
   const nlohmann::json report = nlohmann::json::parse(r.out);
   REQUIRE(report["elements"].size() == 1);
@@ -99,7 +102,8 @@ TEST_CASE("animpak inspect --json: counts follow the extrusion formulas") {
 TEST_CASE("animpak inspect --out: writes the slice, art and strip pictures of every element") {
   const animpak::test::TempDir scratch("animpak-inspect-");
   const auto dir = scratch / "out";
-  const CommandResult r = run_animpak("inspect " + shapes_dir() + "/snake.path --slices 4 --size 64 --out " + dir.string());
+  const CommandResult r =
+      run_animpak("inspect " + shapes_dir() + "/snake.path --slices 4 --size 64 --out " + dir.string());
   REQUIRE(r.code == 0);
   for (const char* suffix : {"-slice.png", "-art.png", "-strip.png"}) {
     INFO(suffix);

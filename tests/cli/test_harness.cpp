@@ -25,8 +25,8 @@ int runs(const animpak::test::TempDir& dir) {
 TEST_CASE("CLI harness: a run ended by LeakSanitizer's tracer crash is run once more") {
   const animpak::test::TempDir dir("animpak-harness-");
   // The first run prints the crash LeakSanitizer prints and aborts; the second succeeds.
-  const std::string crash_then_pass = "if [ -e " + (dir / "crashed").string() + " ]; then echo done; exit 0; fi; touch " +
-                                      (dir / "crashed").string() +
+  const std::string crash_then_pass = "if [ -e " + (dir / "crashed").string() +
+                                      " ]; then echo done; exit 0; fi; touch " + (dir / "crashed").string() +
                                       "; echo \"Tracer caught signal 11: addr=0x40b0\" >&2;"
                                       " echo \"==1==LeakSanitizer has encountered a fatal error.\" >&2; exit 134";
   const CommandResult r = run_command(counted(dir, crash_then_pass));
@@ -53,7 +53,8 @@ TEST_CASE("CLI harness: a leak report, a failure or a second tracer crash is ret
   SECTION("the tracer crashing twice") {
     const animpak::test::TempDir dir("animpak-harness-");
     const CommandResult r = run_command(counted(
-        dir, "echo \"Tracer caught signal 11\" >&2; echo \"LeakSanitizer has encountered a fatal error.\" >&2; exit 134"));
+        dir,
+        "echo \"Tracer caught signal 11\" >&2; echo \"LeakSanitizer has encountered a fatal error.\" >&2; exit 134"));
     CHECK(runs(dir) == 2);
     CHECK(r.code == 134);
   }

@@ -56,8 +56,10 @@ int files_with_extension(const fs::path& dir, const std::string& extension) {
 TEST_CASE("animpak render: replaces every rendered file of the run before, keeps the user's own") {
   const ArtBox box("render");
   const std::string out = box.path("out");
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 20 --frames 6"
-                      " --size 32 --format png,svg,gif,lottie,svg-anim").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out +
+                      " --device reference --max-iterations 20 --frames 6"
+                      " --size 32 --format png,svg,gif,lottie,svg-anim")
+              .code == 0);
   std::ofstream(out + "/notes.txt") << "mine";
   std::ofstream(out + "/frames/mine.txt") << "mine";
   const CommandResult rendered = run_animpak("render " + out + " --frames 3 --size 16 --format png");
@@ -75,8 +77,10 @@ TEST_CASE("animpak render: replaces every rendered file of the run before, keeps
 TEST_CASE("animpak pack: refuses a folder holding a packing, --force replaces it with its frames") {
   const ArtBox box("force");
   const std::string out = box.path("out");
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 20 --frames 2"
-                      " --size 16 --format png").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out +
+                      " --device reference --max-iterations 20 --frames 2"
+                      " --size 16 --format png")
+              .code == 0);
   const std::string state = file_bytes(out + "/state.bin");
   const CommandResult again = run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render");
   CHECK(again.code == 1);
@@ -84,8 +88,10 @@ TEST_CASE("animpak pack: refuses a folder holding a packing, --force replaces it
   CHECK(file_bytes(out + "/state.bin") == state);
   CHECK(fs::exists(out + "/frames/frame_0000.png"));
   // Overwriting without rendering must not leave the old frames beside the new state.
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render"
-                      " --force").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out +
+                      " --device reference --max-iterations 10 --no-render"
+                      " --force")
+              .code == 0);
   CHECK(file_bytes(out + "/state.bin") != state);
   CHECK_FALSE(fs::exists(out + "/frames"));
 }
@@ -112,7 +118,8 @@ TEST_CASE("animpak render: a copied folder renders from input/ after its art is 
   const std::string moved = box.path("moved-scenes") + "/scene.json";
   CHECK(run_animpak("render " + out + " --scene " + moved + " --frames 1 --size 16 --format png").code == 0);
   std::ofstream(box.path("moved-scenes") + "/star.svg", std::ios::app) << "<!-- edited -->\n";
-  const CommandResult edited = run_animpak("render " + out + " --scene " + moved + " --frames 1 --size 16 --format png");
+  const CommandResult edited =
+      run_animpak("render " + out + " --scene " + moved + " --frames 1 --size 16 --format png");
   CHECK(edited.code == 2);
   CHECK_THAT(edited.err, Contains("star.svg") && Contains("SHA-256") && Contains("--force"));
   CHECK(run_animpak("render " + out + " --scene " + moved + " --force --frames 1 --size 16 --format png").code == 0);
@@ -144,12 +151,13 @@ TEST_CASE("animpak pack: Ctrl-C prints the resume command, and the resumed run c
   // SIGINT after four seconds, well into the simulation of this tiny scene on the reference solver even on
   // a loaded machine (it stops on its own only after minutes).
   const std::string interrupt = "timeout --preserve-status -s INT 4 ";
-  const CommandResult first =
-      run_command(interrupt + ANIMPAK_EXE + " pack " + box.scene() + " --out " + out + " --device reference --no-render");
+  const CommandResult first = run_command(interrupt + ANIMPAK_EXE + " pack " + box.scene() + " --out " + out +
+                                          " --device reference --no-render");
   REQUIRE(first.code == 130);
   CHECK_THAT(first.err, Contains("animpak pack --resume " + out));
   const nlohmann::json before = nlohmann::json::parse(file_bytes(out + "/stats.json"));
-  const CommandResult second = run_command(interrupt + ANIMPAK_EXE + " pack --resume " + out + " --device reference"
+  const CommandResult second = run_command(interrupt + ANIMPAK_EXE + " pack --resume " + out +
+                                           " --device reference"
                                            " --no-render");
   REQUIRE(second.code == 130);
   CHECK_THAT(second.err, Contains("resuming"));
@@ -185,6 +193,4 @@ TEST_CASE("install_rendered: an interrupted render leaves the one before whole, 
   CHECK_FALSE(fs::exists(scratch));
 }
 
-TEST_CASE("animpak --help: lists exit code 130") {
-  CHECK_THAT(run_animpak("--help").out, Contains("130"));
-}
+TEST_CASE("animpak --help: lists exit code 130") { CHECK_THAT(run_animpak("--help").out, Contains("130")); }

@@ -52,12 +52,14 @@ CommandResult render_state(const Sandbox& box, const std::string& state) {
 
 TEST_CASE("animpak pack --resume: 60 + 60 iterations equal 120 uninterrupted, state.bin byte for byte") {
   const Sandbox box("resume");
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d1") + " --max-iterations 60 --no-render").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d1") + " --max-iterations 60 --no-render").code ==
+          0);
   const std::string halfway = bytes_of(box.path("d1") + "/state.bin");
   const CommandResult resumed = run_animpak("pack --resume " + box.path("d1") + " --max-iterations 120 --no-render");
   INFO(resumed.err);
   REQUIRE(resumed.code == 0);
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d2") + " --max-iterations 120 --no-render").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("d2") + " --max-iterations 120 --no-render").code ==
+          0);
   const std::string a = bytes_of(box.path("d1") + "/state.bin"), b = bytes_of(box.path("d2") + "/state.bin");
   REQUIRE(a.size() > 1000);
   CHECK(a != halfway);  // the resumed run did continue
@@ -66,7 +68,8 @@ TEST_CASE("animpak pack --resume: 60 + 60 iterations equal 120 uninterrupted, st
 
 TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer states exit 2 with their message") {
   const Sandbox box("damaged");
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("good") + " --max-iterations 10 --no-render").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("good") + " --max-iterations 10 --no-render").code ==
+          0);
   const std::string good = bytes_of(box.path("good") + "/state.bin");
   REQUIRE(good.size() > 100);
 
@@ -105,10 +108,11 @@ TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer 
 }
 
 TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them, no SCENE nor --resume exits 1") {
-  const Sandbox box("overlap", animpak::test::star_scene(0, 5, 1, {R"(, "guided": [
+  const Sandbox box("overlap", animpak::test::star_scene(0, 5, 1,
+                                                         {R"(, "guided": [
       {"name": "left-star", "element": "star", "targets": [{"x": 230, "y": 280, "t": 0}, {"x": 230, "y": 280, "t": 1}]},
       {"name": "right-star", "element": "star", "targets": [{"x": 270, "y": 280, "t": 0}, {"x": 270, "y": 280, "t": 1}]}])",
-                                                                   R"("initial_scale": 0.3)"}));
+                                                          R"("initial_scale": 0.3)"}));
   const CommandResult overlap = run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --no-render");
   CHECK(overlap.code == 2);
   CHECK_THAT(overlap.err, Contains("elements left-star and right-star overlap") && Contains("initial_scale"));
@@ -120,8 +124,8 @@ TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them
 
 TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a complete stats.json") {
   const Sandbox box("render");
-  const CommandResult r =
-      run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 20 --frames 4 --format png,svg --size 64");
+  const CommandResult r = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
+                                      " --max-iterations 20 --frames 4 --format png,svg --size 64");
   INFO(r.err);
   REQUIRE(r.code == 0);
   const fs::path frames = box.path("out") + "/frames";
@@ -208,7 +212,8 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
   const Sandbox box("moved");
-  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 10 --no-render").code == 0);
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 10 --no-render").code ==
+          0);
   // Move the scene and the output folder together; nothing is left at the old place.
   const fs::path moved = fs::path(box.path("elsewhere"));
   fs::create_directories(moved);
@@ -259,7 +264,8 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   CHECK(bytes_of(out + "/stats.json") == "{ not json");
 }
 
-TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and animation.svg with their sizes printed, no PNG") {
+TEST_CASE(
+    "animpak pack/render --format lottie,svg-anim: animation.json and animation.svg with their sizes printed, no PNG") {
   const Sandbox box("animated");
   const CommandResult packed = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
                                            " --max-iterations 10 --frames 4 --size 48 --format lottie,svg-anim");
@@ -277,8 +283,8 @@ TEST_CASE("animpak pack/render --format lottie,svg-anim: animation.json and anim
   CHECK(lottie["h"] == 48);
 
   // render again: held keys, whole pixels.
-  const CommandResult rendered =
-      run_animpak("render " + out.string() + " --frames 3 --size 48 --format lottie --interpolation hold --precision 0");
+  const CommandResult rendered = run_animpak(
+      "render " + out.string() + " --frames 3 --size 48 --format lottie --interpolation hold --precision 0");
   INFO(rendered.err);
   REQUIRE(rendered.code == 0);
   const std::string text = read_text(out / "animation.json");
@@ -304,8 +310,8 @@ TEST_CASE("animpak render --background, --container and --format dotlottie, and 
   CHECK_THAT(none.err, Contains((out / "animation.lottie").string() + " ("));
   CHECK(fs::is_regular_file(out / "animation.gif"));  // ffmpeg took the transparent palette
   CHECK_THAT(read_text(out / "animation.json"), !Contains("\"ty\":1,"));
-  const CommandResult dark = run_animpak("render " + out.string() +
-                                         " --frames 2 --size 48 --format lottie --background '#1e1e1e' --container fill");
+  const CommandResult dark = run_animpak(
+      "render " + out.string() + " --frames 2 --size 48 --format lottie --background '#1e1e1e' --container fill");
   INFO(dark.err);
   REQUIRE(dark.code == 0);
   CHECK_THAT(read_text(out / "animation.json"), Contains("\"sc\":\"#1e1e1e\""));

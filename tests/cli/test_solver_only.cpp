@@ -45,8 +45,8 @@ TEST_CASE("animpak-solve pack, then animpak render: state and statistics here, f
   std::ofstream(dir / "scene.json") << animpak::test::star_scene(3, 5, 2);
   const std::string out = (dir / "out").string();
 
-  const CommandResult packed =
-      run_animpak_solve("pack " + (dir / "scene.json").string() + " --out " + out + " --max-iterations 20 --device reference");
+  const CommandResult packed = run_animpak_solve("pack " + (dir / "scene.json").string() + " --out " + out +
+                                                 " --max-iterations 20 --device reference");
   INFO(packed.err);
   REQUIRE(packed.code == 0);
   CHECK(fs::exists(dir / "out" / "state.bin"));

@@ -59,8 +59,9 @@ TEST_CASE("animpak validate --device pocl: identical to the reference, exit 0") 
 TEST_CASE("animpak validate --all-devices --json: one row per OpenCL device") {
   const auto devices = animpak::list_devices();
   if (devices.empty())
-    return animpak::test::skip("no OpenCL device (Debian package pocl-opencl-icd): --all-devices has nothing to "
-                               "validate");
+    return animpak::test::skip(
+        "no OpenCL device (Debian package pocl-opencl-icd): --all-devices has nothing to "
+        "validate");
   const Scene scene;
   const CommandResult r = run_animpak("validate " + scene.file() + " --all-devices --json --steps 2");
   INFO(r.out << r.err);
@@ -101,7 +102,8 @@ TEST_CASE("animpak validate: a spring kernel reassociated in one line differs, e
   CHECK_THAT(r.out, Contains("state: first differs after step "));
 }
 
-TEST_CASE("animpak validate: --device reference and --device with --all-devices are usage errors, a bad scene is input") {
+TEST_CASE(
+    "animpak validate: --device reference and --device with --all-devices are usage errors, a bad scene is input") {
   const Scene scene;
   const CommandResult reference = run_animpak("validate " + scene.file() + " --device reference");
   CHECK(reference.code == 1);

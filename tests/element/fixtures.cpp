@@ -28,14 +28,12 @@ double area_of(const cl::Paths& paths) {
 }
 }  // namespace
 
-ArtShape star_art() {
-  return load_art(std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/star.svg");
-}
+ArtShape star_art() { return load_art(std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/star.svg"); }
 
 ArtCoverage art_outside_boundary(const Built& b) {
   const cl::Paths art = to_paths(painted_region(b.art.art));
-  const cl::Paths boundary = to_paths(
-      {std::vector<Vec2>(b.mesh.vertices.begin(), b.mesh.vertices.begin() + b.mesh.boundary_count)});
+  const cl::Paths boundary =
+      to_paths({std::vector<Vec2>(b.mesh.vertices.begin(), b.mesh.vertices.begin() + b.mesh.boundary_count)});
   cl::Clipper clipper;
   clipper.AddPaths(art, cl::ptSubject, true);
   clipper.AddPaths(boundary, cl::ptClip, true);
@@ -57,13 +55,10 @@ Built build(const ArtShape& art, const Params& params, std::uint64_t seed) {
 }
 
 namespace {
-double orient(Vec2 a, Vec2 b, Vec2 c) {
-  return cross(b - a, c - a);
-}
+double orient(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - a); }
 bool segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-  if (((o1 > 0) != (o2 > 0) && o1 != 0 && o2 != 0) && ((o3 > 0) != (o4 > 0) && o3 != 0 && o4 != 0))
-    return true;
+  if (((o1 > 0) != (o2 > 0) && o1 != 0 && o2 != 0) && ((o3 > 0) != (o4 > 0) && o3 != 0 && o4 != 0)) return true;
   auto on = [](Vec2 p, Vec2 q, Vec2 r, double o) {
     return o == 0 && std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
            r.y <= std::max(p.y, q.y);

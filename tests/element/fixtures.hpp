@@ -30,29 +30,19 @@ inline std::vector<Vec2> rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-inline ArtShape square_art() {
-  return filled_art({rect(0, 0, 10, 10)}, "square.svg");
-}
-inline ArtShape l_art() {
-  return filled_art({{{0, 0}, {4, 0}, {4, 6}, {10, 6}, {10, 10}, {0, 10}}}, "l.svg");
-}
-inline ArtShape bar_art() {
-  return filled_art({rect(0, 0, 100, 5)}, "bar.svg");
-}
+inline ArtShape square_art() { return filled_art({rect(0, 0, 10, 10)}, "square.svg"); }
+inline ArtShape l_art() { return filled_art({{{0, 0}, {4, 0}, {4, 6}, {10, 6}, {10, 10}, {0, 10}}}, "l.svg"); }
+inline ArtShape bar_art() { return filled_art({rect(0, 0, 100, 5)}, "bar.svg"); }
 /// A square frame: the hole is filled by element_outline (the element is solid).
 inline ArtShape frame_art() {
   return filled_art({rect(0, 0, 10, 10), rect(3, 3, 7, 7)}, "frame.svg", FillRule::evenodd);
 }
 /// Two blobs farther apart (0.7 of the unit square) than the outline bridges: the smaller is dropped
 /// with a note.
-inline ArtShape two_blobs_art() {
-  return filled_art({rect(0, 0, 10, 40), rect(40, 0, 43, 3)}, "blobs.svg");
-}
+inline ArtShape two_blobs_art() { return filled_art({rect(0, 0, 10, 40), rect(40, 0, 43, 3)}, "blobs.svg"); }
 
 /// The five animals of examples/shapes, by file name.
-inline std::vector<std::string> animal_names() {
-  return {"bird", "cat", "fox", "penguin", "snake"};
-}
+inline std::vector<std::string> animal_names() { return {"bird", "cat", "fox", "penguin", "snake"}; }
 std::string shape_path(const std::string& name);
 
 /// Everything a test needs about one element at given params.

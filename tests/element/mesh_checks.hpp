@@ -26,9 +26,7 @@ inline void check_boundary_sampling(const Outline& outline, const SliceMesh& mes
     while (next < b) {
       const Vec2 s = mesh.vertices[next];
       const double along = dot(s - a, c - a) / std::max(len, 1e-300);
-      if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 ||
-          along > len + 1e-9)
-        break;
+      if (std::fabs(cross(c - a, s - a)) / std::max(len, 1e-300) > 1e-9 || along < -1e-9 || along > len + 1e-9) break;
       CHECK(arc + along > last);
       last = arc + along;
       ++next;

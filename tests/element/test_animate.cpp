@@ -104,8 +104,8 @@ TEST_CASE("animate_slices: swim bends the body with a wave that loops, the head 
     worst_midline = std::max(worst_midline, std::fabs(0.5 * sides - 1.0));
   }
   INFO("head " << head << " tail " << tail << " worst relative edge change " << worst_stretch
-                << " worst mid-line change " << worst_midline);
-  CHECK(tail > 0.08);        // it really swims: the tail swings by a good part of amplitude · length
+               << " worst mid-line change " << worst_midline);
+  CHECK(tail > 0.08);  // it really swims: the tail swings by a good part of amplitude · length
   CHECK(head < 0.25 * tail);
   // Bending, not stretching or shearing: the mid-line keeps its length, and single edges change only by
   // what curvature does to the sides of a body 0.15 thick (the inner side of the tail's sharpest bend
@@ -144,7 +144,7 @@ TEST_CASE("animate_slices: a handle vertex lands exactly on its key position at 
   const ArtFrame frame{{50.0, 50.0}, {0.0, 0.0}, 1.0 / 200.0};
   auto art = [&](Vec2 unit) { return unit * 200.0 + Vec2{50.0, 50.0}; };
   AnimationSpec spec;
-  HandleSpec pinned{art({0.3, 0.3}) + Vec2{1.0, -2.0}, {{0.0, art({0.3, 0.3})}}};  // near vertex 0
+  HandleSpec pinned{art({0.3, 0.3}) + Vec2{1.0, -2.0}, {{0.0, art({0.3, 0.3})}}};         // near vertex 0
   HandleSpec dragged{art({0.7, 0.7}), {{0.0, art({0.7, 0.7})}, {0.5, art({0.8, 0.9})}}};  // vertex 24
   spec.handles = {pinned, dragged};
   const int n = 5;

@@ -69,7 +69,7 @@ TEST_CASE("build_element: animation errors name the element and its art file") {
   AnimationSpec spec;
   spec.preset = AnimationPreset::rotate;
   spec.turns = 1.5;
-  CHECK_THROWS_WITH(build_element("box", art, spec, Params{}, 1),
-                    Catch::Contains("element 'box'") && Catch::Contains("square.svg") &&
-                        Catch::Contains("animation.turns"));
+  CHECK_THROWS_WITH(build_element("box", art, spec, Params{}, 1), Catch::Contains("element 'box'") &&
+                                                                      Catch::Contains("square.svg") &&
+                                                                      Catch::Contains("animation.turns"));
 }

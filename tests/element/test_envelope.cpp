@@ -34,14 +34,14 @@ TEST_CASE("the art of every example shape lies inside its slice's boundary polyg
   }
 }
 
-TEST_CASE("the boundary polygon follows the outline within the tolerance, in short edges",
-          "[element][envelope]") {
+TEST_CASE("the boundary polygon follows the outline within the tolerance, in short edges", "[element][envelope]") {
   Params coarse;
   coarse.element.boundary_spacing = 0.3;
   coarse.element.boundary_tolerance = 0.01;
   for (const Params& params : {Params{}, coarse})
     for (const auto& [name, art] : example_shapes()) {
-      INFO(name << " at spacing " << params.element.boundary_spacing << ", tolerance " << params.element.boundary_tolerance);
+      INFO(name << " at spacing " << params.element.boundary_spacing << ", tolerance "
+                << params.element.boundary_tolerance);
       const Built b = build(art, params);
       check_boundary_sampling(b.outline, b.mesh, params);
     }

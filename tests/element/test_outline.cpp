@@ -108,6 +108,5 @@ TEST_CASE("element_outline includes open strokes and rejects art without area", 
 
   line.paths[0].stroke.enabled = false;
   CHECK_THROWS_WITH(element_outline(normalize_art(line), 0.04), Catch::Contains("line.svg"));
-  CHECK_THROWS_AS(element_outline(normalize_art(filled_art({{{0, 0}, {1, 1}, {2, 2}}}, "flat.svg")), 0.04),
-                  InputError);
+  CHECK_THROWS_AS(element_outline(normalize_art(filled_art({{{0, 0}, {1, 1}, {2, 2}}}, "flat.svg")), 0.04), InputError);
 }

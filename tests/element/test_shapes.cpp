@@ -69,8 +69,7 @@ TEST_CASE("the container shape also triangulates and binds", "[element][shapes]"
   check_replay(b.art, b.mesh);
 }
 
-TEST_CASE("synthetic shapes: art replays, an outside point binds to the nearest triangle",
-          "[element][binding]") {
+TEST_CASE("synthetic shapes: art replays, an outside point binds to the nearest triangle", "[element][binding]") {
   for (const ArtShape& art : {square_art(), l_art(), bar_art(), frame_art(), two_blobs_art()}) {
     INFO(art.source);
     const Built b = build(art);
@@ -107,8 +106,8 @@ TEST_CASE("print slice sizes of the example shapes", "[.counts]") {
   for (const std::string& name : animal_names()) shapes.emplace_back(name, load_path_file(shape_path(name)));
   shapes.emplace_back("heart-container", load_path_file(shape_path("heart-container")));
   shapes.emplace_back("star", star_art());
-  std::printf("%-16s %8s %8s %8s %6s %6s %6s %6s %9s %9s %10s\n", "shape", "vertices", "boundary", "interior",
-              "tris", "edges", "shear", "negsp", "art pts", "min angle", "outside");
+  std::printf("%-16s %8s %8s %8s %6s %6s %6s %6s %9s %9s %10s\n", "shape", "vertices", "boundary", "interior", "tris",
+              "edges", "shear", "negsp", "art pts", "min angle", "outside");
   for (const auto& [name, art] : shapes) {
     const Built b = build(art, params);
     std::size_t points = 0;
@@ -118,13 +117,14 @@ TEST_CASE("print slice sizes of the example shapes", "[.counts]") {
     for (const Triangle& t : b.mesh.triangles)
       for (int k = 0; k < 3; ++k) {
         const Vec2 p = b.mesh.vertices[t[k]], q = b.mesh.vertices[t[(k + 1) % 3]], r = b.mesh.vertices[t[(k + 2) % 3]];
-        min_angle = std::min(min_angle, std::acos(dot(q - p, r - p) / (norm(q - p) * norm(r - p))) * 180.0 / 3.14159265358979);
+        min_angle =
+            std::min(min_angle, std::acos(dot(q - p, r - p) / (norm(q - p) * norm(r - p))) * 180.0 / 3.14159265358979);
       }
     const ArtCoverage coverage = art_outside_boundary(b);
     std::printf("%-16s %8zu %8d %8zu %6zu %6zu %6zu %6zu %9zu %9.2f %10.3e\n", name.c_str(), b.mesh.vertices.size(),
                 b.mesh.boundary_count, b.mesh.vertices.size() - b.mesh.boundary_count, b.mesh.triangles.size(),
-                b.mesh.edges.size(), b.mesh.shear_edges.size(), b.mesh.negative_space_edges.size(), points,
-                min_angle, coverage.outside / coverage.art);
+                b.mesh.edges.size(), b.mesh.shear_edges.size(), b.mesh.negative_space_edges.size(), points, min_angle,
+                coverage.outside / coverage.art);
     for (const std::string& note : b.outline.notes) std::printf("  note: %s\n", note.c_str());
   }
 }

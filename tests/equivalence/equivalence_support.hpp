@@ -57,8 +57,9 @@ inline std::uint64_t seed_stride() {
 /// none that ANIMPAK_TEST_DEVICE names); the caller returns at once.
 inline bool skip_without_devices(const std::vector<DeviceChoice>& devices) {
   if (!devices.empty()) return false;
-  skip("no OpenCL device (or none matching ANIMPAK_TEST_DEVICE; Debian package pocl-opencl-icd): "
-       "nothing was compared");
+  skip(
+      "no OpenCL device (or none matching ANIMPAK_TEST_DEVICE; Debian package pocl-opencl-icd): "
+      "nothing was compared");
   return true;
 }
 
@@ -103,8 +104,9 @@ inline std::string breakdown_difference(const reference::ForceBreakdown& ref, co
   for (const NamedForce& force : breakdown_forces) {
     const std::string n(force.name);
     const reference::ForceField &r = ref.*force.field, &d = dev.*force.field;
-    for (const std::string& line : {bit_difference(n + ".x (vertex)", r.x, d.x), bit_difference(n + ".y (vertex)", r.y, d.y),
-                                    bit_difference(n + ".t (vertex)", r.t, d.t)})
+    for (const std::string& line :
+         {bit_difference(n + ".x (vertex)", r.x, d.x), bit_difference(n + ".y (vertex)", r.y, d.y),
+          bit_difference(n + ".t (vertex)", r.t, d.t)})
       if (!line.empty()) out += line + "\n";
   }
   return out;
@@ -138,10 +140,10 @@ inline void fill_reference_copy(TinyWorld& w) {
 struct RandomWorldShape {
   int elements = 4;
   int slices = 5;
-  int ring = 6;          ///< boundary vertices per slice
+  int ring = 6;  ///< boundary vertices per slice
   float min_radius = 0.03f, max_radius = 0.12f;
-  bool hole = true;      ///< a square hole in the container
-  bool targets = true;   ///< target points on element 0's first and last slices, which hold their angle
+  bool hole = true;     ///< a square hole in the container
+  bool targets = true;  ///< target points on element 0's first and last slices, which hold their angle
 };
 
 /// Ring elements at random places (so some overlap, some cross the container or the hole), random

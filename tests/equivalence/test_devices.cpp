@@ -24,7 +24,8 @@ TEST_CASE("choose_device: reference by name, unknown names refused", "[opencl]")
   // The default is a device exactly when one qualifies: a GPU, else PoCL, never a simulator.
   bool qualifies = false;
   for (const DeviceInfo& d : list_devices())
-    qualifies = qualifies || (!d.simulator && (d.gpu || d.platform.find("Portable Computing Language") != std::string::npos));
+    qualifies =
+        qualifies || (!d.simulator && (d.gpu || d.platform.find("Portable Computing Language") != std::string::npos));
   CHECK(def.reference == !qualifies);
   CHECK_FALSE(def.device.simulator);
 }
@@ -37,8 +38,8 @@ TEST_CASE("default device: real GPUs, then PoCL, then the reference, never a sim
     return d;
   };
   DeviceInfo oclgrind = device("Oclgrind", "OpenCL 1.2 (Oclgrind 21.10)", "Oclgrind Simulator", "Oclgrind", true);
-  DeviceInfo pocl = device("Portable Computing Language", "OpenCL 3.0 PoCL 3.1+debian", "pthread-skylake-avx512-AMD EPYC",
-                           "AuthenticAMD", false);
+  DeviceInfo pocl = device("Portable Computing Language", "OpenCL 3.0 PoCL 3.1+debian",
+                           "pthread-skylake-avx512-AMD EPYC", "AuthenticAMD", false);
   DeviceInfo nvidia = device("NVIDIA CUDA", "OpenCL 3.0 CUDA", "NVIDIA H100 80GB HBM3", "NVIDIA Corporation", true);
   const DeviceInfo emulator = device("Intel(R) FPGA Emulation Platform for OpenCL(TM)", "OpenCL 1.2 Intel(R) FPGA SDK",
                                      "Intel(R) FPGA Emulation Device", "Intel(R) Corporation", false);
@@ -93,7 +94,8 @@ TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its l
   CHECK(broken.log.find("temporal.cl") != std::string::npos);
 }
 
-TEST_CASE("device_build_options: CPU devices take the near block in 16 lanes, GPUs (and Oclgrind) one slot at a time", "[opencl]") {
+TEST_CASE("device_build_options: CPU devices take the near block in 16 lanes, GPUs (and Oclgrind) one slot at a time",
+          "[opencl]") {
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (skip_without_devices(devices)) return;
   for (const DeviceChoice& d : devices) {
@@ -119,8 +121,10 @@ TEST_CASE("annotate_build_log: whole-program line numbers become kernel file and
   const int third = directive_line + 3;  // the third line of temporal.cl
   CHECK(opencl::program_location(source, third) == "temporal.cl:3");
   CHECK(opencl::program_location(source, 1) == "program line 1");
-  const std::string log = "<kernel>:" + std::to_string(third) + ":1: error: unknown type name 'this'\n"
-                          "<kernel>:" + std::to_string(directive_line + 1) + ":8: note: here\nno location\n";
+  const std::string log = "<kernel>:" + std::to_string(third) +
+                          ":1: error: unknown type name 'this'\n"
+                          "<kernel>:" +
+                          std::to_string(directive_line + 1) + ":8: note: here\nno location\n";
   CHECK(opencl::annotate_build_log(log, source) ==
         "temporal.cl:3:1: error: unknown type name 'this'\ntemporal.cl:1:8: note: here\nno location\n");
   // Oclgrind's compiler names the program "input.cl" and counts lines in all of it, as NVIDIA's does.

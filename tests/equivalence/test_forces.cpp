@@ -24,26 +24,26 @@ Coverage check_forces(const TinyWorld& w, const Params& params, const std::strin
     c.inside += (ref.contact[v] & contact_inside) != 0;
     c.crossing += (ref.contact[v] & (contact_overlap | contact_inside)) == contact_overlap;
     c.yield += (ref.contact[v] & contact_yield) != 0;
-    c.paused += (ref.contact[v] & (contact_overlap | contact_block | contact_yield)) == (contact_overlap | contact_block);
+    c.paused +=
+        (ref.contact[v] & (contact_overlap | contact_block | contact_yield)) == (contact_overlap | contact_block);
     c.ignored += (ref.contact[v] & (contact_overlap | contact_block)) == contact_overlap;
     c.wall += (ref.contact[v] & contact_wall) != 0;
     c.boundary += ref_parts.boundary.x[v] != 0.0f;
     c.target += ref_parts.target.x[v] != 0.0f;
     c.repulsion += ref_parts.repulsion.x[v] != 0.0f;
   }
-  for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
-    auto backend = make_opencl_backend(w.topo, w.state, params, d, sort);
-    reference::ForceBreakdown dev_parts;
-    const reference::StepForces dev = backend->evaluate_forces(&dev_parts);
-    const std::string diff = breakdown_difference(ref_parts, dev_parts) +
-                             bit_difference("total.x", ref.total.x, dev.total.x) +
-                             bit_difference("total.y", ref.total.y, dev.total.y) +
-                             bit_difference("total.t", ref.total.t, dev.total.t) +
-                             bit_difference("closest", ref.closest, dev.closest) +
-                             bit_difference("contact", ref.contact, dev.contact);
-    INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
-    CHECK(diff.empty());
-  }
+  for (const DeviceChoice& d : devices_under_test())
+    for (const GridSort sort : grid_sorts) {
+      auto backend = make_opencl_backend(w.topo, w.state, params, d, sort);
+      reference::ForceBreakdown dev_parts;
+      const reference::StepForces dev = backend->evaluate_forces(&dev_parts);
+      const std::string diff =
+          breakdown_difference(ref_parts, dev_parts) + bit_difference("total.x", ref.total.x, dev.total.x) +
+          bit_difference("total.y", ref.total.y, dev.total.y) + bit_difference("total.t", ref.total.t, dev.total.t) +
+          bit_difference("closest", ref.closest, dev.closest) + bit_difference("contact", ref.contact, dev.contact);
+      INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
+      CHECK(diff.empty());
+    }
   return c;
 }
 
@@ -82,10 +82,10 @@ BroadphaseUse broadphase_use(const TinyWorld& w) {
     const float ex0 = std::min(w.state.x[v], w.state.x[next]), ex1 = std::max(w.state.x[v], w.state.x[next]);
     const float ey0 = std::min(w.state.y[v], w.state.y[next]), ey1 = std::max(w.state.y[v], w.state.y[next]);
     reference::overlap_candidates(g, w.topo.element_count(), ex0, ex1, ey0, ey1, w.state.t[v], found);
-    const int cells_x = reference::grid_axis_cell(ex1 - g.x0, g.cell, g.nx) -
-                        reference::grid_axis_cell(ex0 - g.x0, g.cell, g.nx) + 1;
-    const int cells_y = reference::grid_axis_cell(ey1 - g.y0, g.cell, g.ny) -
-                        reference::grid_axis_cell(ey0 - g.y0, g.cell, g.ny) + 1;
+    const int cells_x =
+        reference::grid_axis_cell(ex1 - g.x0, g.cell, g.nx) - reference::grid_axis_cell(ex0 - g.x0, g.cell, g.nx) + 1;
+    const int cells_y =
+        reference::grid_axis_cell(ey1 - g.y0, g.cell, g.ny) - reference::grid_axis_cell(ey0 - g.y0, g.cell, g.ny) + 1;
     ++u.queries;
     u.candidates += static_cast<long>(found.size());
     u.two_cells += cells_x * cells_y == 2;
@@ -181,7 +181,8 @@ TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]
   if (!have_devices()) return;
   WorldBuilder b;
   // Two slices 1e-7 apart in t and a nearly collinear ring: slivers in every Voronoi region.
-  b.add_element(tube({{0.30f, 0.30f}, {0.34f, 0.300001f}, {0.38f, 0.30f}, {0.34f, 0.34f}}, {0.0f, 0.5f, 0.5000001f, 1.0f}));
+  b.add_element(
+      tube({{0.30f, 0.30f}, {0.34f, 0.300001f}, {0.38f, 0.30f}, {0.34f, 0.34f}}, {0.0f, 0.5f, 0.5000001f, 1.0f}));
   b.add_element(tube({{0.33f, 0.29f}, {0.37f, 0.29f}, {0.37f, 0.33f}, {0.33f, 0.33f}}, {0.0f, 0.5f, 1.0f}));
   b.add_element(tube({{0.35f, 0.31f}, {0.35f, 0.31f}, {0.36f, 0.32f}, {0.35f, 0.32f}}, {0.0f, 0.49f, 1.0f}));
   const TinyWorld w = finish(b);
@@ -199,21 +200,23 @@ std::int32_t longest_near_row(const TinyWorld& w, const Params& params) {
     const std::int32_t qx = reference::grid_axis_cell(w.state.x[v], g.cell, g.n);
     const std::int32_t qy = reference::grid_axis_cell(w.state.y[v], g.cell, g.n);
     const std::int32_t qt = reference::grid_axis_cell(w.state.t[v], g.cell, g.n);
-    for (std::int32_t dz = -1; dz <= 1; ++dz) for (std::int32_t dy = -1; dy <= 1; ++dy) {
-      const std::int32_t cy = qy + dy, ct = qt + dz;
-      if (cy < 0 || ct < 0 || cy >= g.n || ct >= g.n) continue;
-      const std::int32_t x0 = std::max(qx - 1, 0), x1 = std::min(qx + 1, g.n - 1);
-      const std::int32_t row = (ct * g.n + cy) * g.n;
-      bool other = false;
-      for (std::int32_t k = g.cell_start[row + x0]; k < g.cell_start[row + x1 + 1]; ++k)
-        other = other || w.topo.env_element[g.sorted_triangles[k]] != w.topo.element[v];
-      if (other) longest = std::max(longest, g.cell_start[row + x1 + 1] - g.cell_start[row + x0]);
-    }
+    for (std::int32_t dz = -1; dz <= 1; ++dz)
+      for (std::int32_t dy = -1; dy <= 1; ++dy) {
+        const std::int32_t cy = qy + dy, ct = qt + dz;
+        if (cy < 0 || ct < 0 || cy >= g.n || ct >= g.n) continue;
+        const std::int32_t x0 = std::max(qx - 1, 0), x1 = std::min(qx + 1, g.n - 1);
+        const std::int32_t row = (ct * g.n + cy) * g.n;
+        bool other = false;
+        for (std::int32_t k = g.cell_start[row + x0]; k < g.cell_start[row + x1 + 1]; ++k)
+          other = other || w.topo.env_element[g.sorted_triangles[k]] != w.topo.element[v];
+        if (other) longest = std::max(longest, g.cell_start[row + x1 + 1] - g.cell_start[row + x0]);
+      }
   }
   return longest;
 }
 
-TEST_CASE("forces: near rows and outlines long enough for the kernel's lanes, with slivers and repeated points", "[equivalence][opencl]") {
+TEST_CASE("forces: near rows and outlines long enough for the kernel's lanes, with slivers and repeated points",
+          "[equivalence][opencl]") {
   if (!have_devices()) return;
   // A simulator takes the one-slot paths (device_build_options), which the other worlds cover, and this
   // world's long rows cost it minutes: skipped there.
@@ -255,10 +258,10 @@ TEST_CASE("forces: elements touching the container and a hole", "[equivalence][o
   if (!have_devices()) return;
   WorldBuilder b;
   b.set_container({square(0.5f, 0.5f, 0.45f), square(0.5f, 0.5f, 0.1f), square(0.2f, 0.8f, 0.05f)});
-  b.add_element(square_tube(0.05f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));   // across the outline
-  b.add_element(square_tube(0.5f, 0.5f, 0.05f, {0.0f, 0.5f, 1.0f}));    // inside the hole
-  b.add_element(square_tube(0.62f, 0.5f, 0.04f, {0.0f, 0.5f, 1.0f}));   // across the hole's edge
-  b.add_element(square_tube(0.2f, 0.8f, 0.06f, {0.0f, 0.5f, 1.0f}));    // around the second hole
+  b.add_element(square_tube(0.05f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));  // across the outline
+  b.add_element(square_tube(0.5f, 0.5f, 0.05f, {0.0f, 0.5f, 1.0f}));   // inside the hole
+  b.add_element(square_tube(0.62f, 0.5f, 0.04f, {0.0f, 0.5f, 1.0f}));  // across the hole's edge
+  b.add_element(square_tube(0.2f, 0.8f, 0.06f, {0.0f, 0.5f, 1.0f}));   // around the second hole
   const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
 }
@@ -267,8 +270,8 @@ TEST_CASE("forces: boundary edges across a reflex corner of the container, both 
   if (!have_devices()) return;
   WorldBuilder b;
   b.set_container({{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.7f}, {0.0f, 1.0f}}});
-  b.add_element(square_tube(0.5f, 0.65f, 0.1f, {0.0f, 0.5f, 1.0f}));   // straddles the notch
-  b.add_element(square_tube(0.2f, 0.3f, 0.05f, {0.0f, 0.5f, 1.0f}));   // clear of it
+  b.add_element(square_tube(0.5f, 0.65f, 0.1f, {0.0f, 0.5f, 1.0f}));  // straddles the notch
+  b.add_element(square_tube(0.2f, 0.3f, 0.05f, {0.0f, 0.5f, 1.0f}));  // clear of it
   const TinyWorld w = finish(b);
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "notch");
 }
@@ -299,8 +302,8 @@ TEST_CASE("forces: secondary elements give way to primary ones", "[equivalence][
   if (!have_devices()) return;
   WorldBuilder b;
   b.add_element(square_tube(0.5f, 0.5f, 0.005f, {0.0f, 0.5f, 1.0f}));  // primary, deep inside the next
-  b.add_element(square_tube(0.5f, 0.5f, 0.12f, {0.0f, 0.4f, 1.0f}));    // secondary
-  b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));  // secondary
+  b.add_element(square_tube(0.5f, 0.5f, 0.12f, {0.0f, 0.4f, 1.0f}));   // secondary
+  b.add_element(tube({{0.2f, 0.78f}, {0.4f, 0.78f}, {0.4f, 0.8f}, {0.2f, 0.8f}}, {0.0f, 0.5f, 1.0f}));    // secondary
   b.add_element(tube({{0.29f, 0.7f}, {0.31f, 0.7f}, {0.31f, 0.9f}, {0.29f, 0.9f}}, {0.0f, 0.6f, 1.0f}));  // primary
   TinyWorld w = finish(b);
   w.topo.element_secondary = {0, 1, 1, 0};
@@ -314,12 +317,13 @@ TEST_CASE("forces: secondary elements give way to primary ones", "[equivalence][
   }
 }
 
-TEST_CASE("forces: sparse targets and keyed slices holding their angle, turned off their rest", "[equivalence][opencl]") {
+TEST_CASE("forces: sparse targets and keyed slices holding their angle, turned off their rest",
+          "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;
   b.add_element(square_tube(0.4f, 0.5f, 0.08f, {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}));
   b.add_element(square_tube(0.7f, 0.5f, 0.06f, {0.0f, 0.5f, 1.0f}));
-  b.add_target(0, 0.3f, 0.45f, 0.0f);   // element 0, slices 0 and 2 only
+  b.add_target(0, 0.3f, 0.45f, 0.0f);  // element 0, slices 0 and 2 only
   b.add_target(8, 0.45f, 0.55f, 0.5f);
   TinyWorld w = finish(b);
   for (std::int32_t v : {0, 1, 2, 3, 8, 9, 10, 11}) w.topo.flags[v] |= vertex_hold_angle;

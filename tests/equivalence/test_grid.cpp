@@ -7,19 +7,21 @@ namespace {
 
 void check_grid(const TinyWorld& w, const Params& params, const std::string& label) {
   const reference::CollisionGrid ref = reference::build_collision_grid(w.topo, w.state, params);
-  for (const DeviceChoice& d : devices_under_test()) for (const GridSort sort : grid_sorts) {
-    const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->build_and_read_grid();
-    CHECK(dev.n == ref.n);
-    CHECK(dev.cell == ref.cell);
-    const std::string diff =
-        bit_difference("centroid x", ref.cx, dev.cx) + bit_difference("centroid y", ref.cy, dev.cy) +
-        bit_difference("centroid t", ref.ct, dev.ct) + bit_difference("triangle_cell", ref.triangle_cell, dev.triangle_cell) +
-        bit_difference("cell_start", ref.cell_start, dev.cell_start) +
-        bit_difference("sorted_triangles", ref.sorted_triangles, dev.sorted_triangles) +
-        bit_difference("slot_element", ref.slot_element, dev.slot_element);
-    INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
-    CHECK(diff.empty());
-  }
+  for (const DeviceChoice& d : devices_under_test())
+    for (const GridSort sort : grid_sorts) {
+      const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->build_and_read_grid();
+      CHECK(dev.n == ref.n);
+      CHECK(dev.cell == ref.cell);
+      const std::string diff = bit_difference("centroid x", ref.cx, dev.cx) +
+                               bit_difference("centroid y", ref.cy, dev.cy) +
+                               bit_difference("centroid t", ref.ct, dev.ct) +
+                               bit_difference("triangle_cell", ref.triangle_cell, dev.triangle_cell) +
+                               bit_difference("cell_start", ref.cell_start, dev.cell_start) +
+                               bit_difference("sorted_triangles", ref.sorted_triangles, dev.sorted_triangles) +
+                               bit_difference("slot_element", ref.slot_element, dev.slot_element);
+      INFO(label << " on " << d.device.name << ", grid sorted on the " << grid_sort_name(sort) << "\n" << diff);
+      CHECK(diff.empty());
+    }
 }
 
 }  // namespace

@@ -31,28 +31,29 @@ void check_steps(const Topology& topo, const SimState& initial, const Params& pa
                  const std::string& label, int settle_at = 0, int secondary_at = 0) {
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (skip_without_devices(devices)) return;
-  for (const DeviceChoice& d : devices) for (const GridSort sort : grid_sorts) {
-    auto ref = make_reference_backend(topo, initial, params);
-    auto dev = make_opencl_backend(topo, initial, params, d, sort);
-    const std::string where = label + " on " + d.device.name + " (grid sorted on the " + grid_sort_name(sort) + ")";
-    CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
-    for (int step = 1; step <= steps; ++step) {
-      if (step == settle_at + 1 && settle_at > 0) ref->stop_growth(), dev->stop_growth();
-      if (step == secondary_at + 1 && secondary_at > 0) {
-        REQUIRE(ref->start_secondary_growth());
-        REQUIRE(dev->start_secondary_growth());
+  for (const DeviceChoice& d : devices)
+    for (const GridSort sort : grid_sorts) {
+      auto ref = make_reference_backend(topo, initial, params);
+      auto dev = make_opencl_backend(topo, initial, params, d, sort);
+      const std::string where = label + " on " + d.device.name + " (grid sorted on the " + grid_sort_name(sort) + ")";
+      CHECK(statistics_difference(ref->statistics(), dev->statistics()).empty());
+      for (int step = 1; step <= steps; ++step) {
+        if (step == settle_at + 1 && settle_at > 0) ref->stop_growth(), dev->stop_growth();
+        if (step == secondary_at + 1 && secondary_at > 0) {
+          REQUIRE(ref->start_secondary_growth());
+          REQUIRE(dev->start_secondary_growth());
+        }
+        ref->step();
+        dev->step();
+        if (step % compare_every != 0 && step != steps) continue;
+        const std::string diff = state_difference(ref->state(), dev->state());
+        INFO(where << ", after step " << step << "\n" << diff);
+        REQUIRE(diff.empty());
       }
-      ref->step();
-      dev->step();
-      if (step % compare_every != 0 && step != steps) continue;
-      const std::string diff = state_difference(ref->state(), dev->state());
-      INFO(where << ", after step " << step << "\n" << diff);
-      REQUIRE(diff.empty());
+      const std::string stats = statistics_difference(ref->statistics(), dev->statistics());
+      INFO(where << ": statistics\n" << stats);
+      CHECK(stats.empty());
     }
-    const std::string stats = statistics_difference(ref->statistics(), dev->statistics());
-    INFO(where << ": statistics\n" << stats);
-    CHECK(stats.empty());
-  }
 }
 
 }  // namespace
@@ -91,7 +92,8 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
   check_steps(world.topology, world.state, world.params, 60, 10, "star scene, settling from step 30", 30);
 }
 
-TEST_CASE("steps: a small real scene with secondary elements, held, then growing, gives identical states", "[equivalence][opencl]") {
+TEST_CASE("steps: a small real scene with secondary elements, held, then growing, gives identical states",
+          "[equivalence][opencl]") {
   const std::string text = R"({
     "container": {"art": "../shapes/heart-container.path"},
     "elements": [{"name": "star", "art": "star.svg", "count": 3, "animation": {"preset": "rotate", "turns": 1}},

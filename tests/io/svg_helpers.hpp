@@ -18,8 +18,8 @@ using animpak::InputError;
 using animpak::Vec2;
 
 inline std::string doc(const std::string& body, const std::string& root_attrs = "") {
-  return R"~(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" )~" + root_attrs +
-         ">" + body + "</svg>";
+  return R"~(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" )~" + root_attrs + ">" +
+         body + "</svg>";
 }
 
 inline ArtShape parse(const std::string& body, const std::string& root_attrs = "", double tolerance = 0.1) {

@@ -45,7 +45,8 @@ std::vector<fs::path> sample_files(const fs::path& root) {
 TEST_CASE("openclipart: a sample from every category imports or is refused by name", "[svg][openclipart]") {
   const fs::path root = animpak::test::openclipart_root();
   if (!fs::is_directory(root))
-    return animpak::test::skip(root.string() + " is absent (Debian package openclipart-svg); no openclipart file "
+    return animpak::test::skip(root.string() +
+                               " is absent (Debian package openclipart-svg); no openclipart file "
                                "was tried");
   const auto files = sample_files(root);
   REQUIRE(files.size() >= 40);

@@ -35,9 +35,11 @@ TEST_CASE("param_table: writing through an entry changes exactly that member") {
   for (const ParamInfo& info : param_table()) {
     INFO(info.name);
     Params p;
-    std::visit([&](auto member) { member(p) = static_cast<std::remove_reference_t<decltype(member(p))>>(
-                                      param_value(p, info) + 1); },
-               info.field);
+    std::visit(
+        [&](auto member) {
+          member(p) = static_cast<std::remove_reference_t<decltype(member(p))>>(param_value(p, info) + 1);
+        },
+        info.field);
     CHECK(param_value(p, info) == param_value(Params{}, info) + 1);
     int changed = 0;
     for (const ParamInfo& other : param_table()) changed += param_value(p, other) != param_value(Params{}, other);

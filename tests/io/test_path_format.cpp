@@ -87,8 +87,8 @@ TEST_CASE("load_path_file: every example shape loads with drawing order reversed
     const char* name;
     std::vector<size_t> points_in_file_order;
   };
-  const Expected all[] = {{"bird", {32, 185}},          {"cat", {80, 80, 160}},  {"fox", {12, 14, 24, 102}},
-                          {"penguin", {32, 244}},       {"snake", {18, 18, 552}}, {"heart-container", {56}}};
+  const Expected all[] = {{"bird", {32, 185}},    {"cat", {80, 80, 160}},   {"fox", {12, 14, 24, 102}},
+                          {"penguin", {32, 244}}, {"snake", {18, 18, 552}}, {"heart-container", {56}}};
   for (const Expected& e : all) {
     INFO(e.name);
     const ArtShape shape = load_path_file(shape_file(e.name));
@@ -207,8 +207,10 @@ TEST_CASE("parse_path_text: unknown pathType") {
 }
 
 TEST_CASE("parse_path_text: bad isClosed flag and short path prefix") {
-  CHECK_THAT(path_error_of(kHeader + "0 2 0 0 0 10 0 0 10\n"), StartsWith("bad.path:4: path 0: expected isClosed 0 or 1, got `2`;"));
-  CHECK_THAT(path_error_of(kHeader + "0 1\n"), StartsWith("bad.path:4: path 0 has no `<region> <isClosed> <pathType>` prefix;"));
+  CHECK_THAT(path_error_of(kHeader + "0 2 0 0 0 10 0 0 10\n"),
+             StartsWith("bad.path:4: path 0: expected isClosed 0 or 1, got `2`;"));
+  CHECK_THAT(path_error_of(kHeader + "0 1\n"),
+             StartsWith("bad.path:4: path 0 has no `<region> <isClosed> <pathType>` prefix;"));
 }
 
 TEST_CASE("parse_path_text: region other than 0") {

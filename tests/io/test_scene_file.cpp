@@ -133,8 +133,10 @@ TEST_CASE("parse_scene: a minimal scene takes every default") {
 }
 
 TEST_CASE("parse_scene: fixed and constant-field orientations, count fill") {
-  CHECK(parse_scene_text(scene(kBird, R"(, "orientation": {"mode": "fixed", "angle": 45}, "count": "fill")")).orientation.angle == 45);
-  const SceneSpec s = parse_scene_text(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "constant", "angle": 30}})"));
+  CHECK(parse_scene_text(scene(kBird, R"(, "orientation": {"mode": "fixed", "angle": 45}, "count": "fill")"))
+            .orientation.angle == 45);
+  const SceneSpec s = parse_scene_text(
+      scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "constant", "angle": 30}})"));
   CHECK(s.orientation.field == FieldKind::constant);
   CHECK(s.orientation.angle == 30);
 }
@@ -168,7 +170,8 @@ TEST_CASE("parse_scene: a key given twice in one object") {
 TEST_CASE("parse_scene: unknown top-level field suggests the close one") {
   CHECK(scene_error_of(R"({"container": "heart-container.path", "elemnts": []})") ==
         "scene.json: elemnts: unknown field; did you mean `elements`?");
-  CHECK_THAT(scene_error_of(scene(kBird, R"(, "zzz": 1)")), StartsWith("scene.json: zzz: unknown field; expected one of `container`"));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "zzz": 1)")),
+             StartsWith("scene.json: zzz: unknown field; expected one of `container`"));
 }
 
 TEST_CASE("parse_scene: unknown nested field and a prefix suggestion") {
@@ -178,14 +181,17 @@ TEST_CASE("parse_scene: unknown nested field and a prefix suggestion") {
 
 TEST_CASE("parse_scene: missing required fields") {
   CHECK(scene_error_of(R"({"elements": []})") == "scene.json: top level: missing required field `container`");
-  CHECK(scene_error_of(R"({"container": "heart-container.path"})") == "scene.json: top level: missing required field `elements`");
+  CHECK(scene_error_of(R"({"container": "heart-container.path"})") ==
+        "scene.json: top level: missing required field `elements`");
   CHECK_THAT(scene_error_of(scene("[]")), StartsWith("scene.json: elements: expected at least one element"));
 }
 
 TEST_CASE("parse_scene: type errors name the field and the value") {
-  CHECK_THAT(scene_error_of(scene(kBird, R"(, "seed": "abc")")), StartsWith("scene.json: seed: expected an integer in [0, "));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "seed": "abc")")),
+             StartsWith("scene.json: seed: expected an integer in [0, "));
   CHECK(scene_error_of(scene(kBird, R"(, "loop": 1)")) == "scene.json: loop: expected true or false, got 1");
-  CHECK(scene_error_of(scene(R"({"art": "bird.path"})")) == "scene.json: elements: expected an array, got {\"art\":\"bird.path\"}");
+  CHECK(scene_error_of(scene(R"({"art": "bird.path"})")) ==
+        "scene.json: elements: expected an array, got {\"art\":\"bird.path\"}");
 }
 
 TEST_CASE("parse_scene: key time out of range") {
@@ -196,22 +202,28 @@ TEST_CASE("parse_scene: key time out of range") {
 TEST_CASE("parse_scene: keys out of order or with duplicate t") {
   CHECK_THAT(scene_error_of(animated_bird(R"({"keys": [{"t": 0.5}, {"t": 0.25}]})")),
              StartsWith("scene.json: elements[0].animation.keys[1].t: keys out of order: t 0.25 comes after t 0.5"));
-  CHECK_THAT(scene_error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0.5, "position": [0, 0]}, {"t": 0.5, "position": [1, 1]}]}]})")),
-             StartsWith("scene.json: elements[0].animation.handles[0].keys[1].t: duplicate t 0.5"));
+  CHECK_THAT(
+      scene_error_of(animated_bird(
+          R"({"handles": [{"point": [1, 2], "keys": [{"t": 0.5, "position": [0, 0]}, {"t": 0.5, "position": [1, 1]}]}]})")),
+      StartsWith("scene.json: elements[0].animation.handles[0].keys[1].t: duplicate t 0.5"));
 }
 
 TEST_CASE("parse_scene: a looping animation whose t = 1 key differs from t = 0") {
   CHECK_THAT(scene_error_of(animated_bird(R"({"keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")),
              StartsWith("scene.json: elements[0].animation.keys[1]: the key at t = 1 differs from the key at t = 0 "
                         "(translate [0, 0] vs [0, 0], rotate 90 vs 0, scale 1 vs 1) in a looping animation"));
-  CHECK_THAT(scene_error_of(animated_bird(R"({"handles": [{"point": [1, 2], "keys": [{"t": 0, "position": [1, 2]}, {"t": 1, "position": [3, 2]}]}]})")),
-             StartsWith("scene.json: elements[0].animation.handles[0].keys[1]: the key at t = 1 (position [3, 2]) differs"));
-  CHECK(scene_error_of(animated_bird(R"({"loop": false, "keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")) == "(no error)");
+  CHECK_THAT(
+      scene_error_of(animated_bird(
+          R"({"handles": [{"point": [1, 2], "keys": [{"t": 0, "position": [1, 2]}, {"t": 1, "position": [3, 2]}]}]})")),
+      StartsWith("scene.json: elements[0].animation.handles[0].keys[1]: the key at t = 1 (position [3, 2]) differs"));
+  CHECK(scene_error_of(animated_bird(R"({"loop": false, "keys": [{"t": 0, "rotate": 0}, {"t": 1, "rotate": 90}]})")) ==
+        "(no error)");
 }
 
 TEST_CASE("parse_scene: preset mistakes") {
   CHECK(scene_error_of(animated_bird(R"({"preset": "rotat"})")) ==
-        "scene.json: elements[0].animation.preset: expected one of `none`, `rotate`, `pulse`, `swim`, got \"rotat\"; did you mean `rotate`?");
+        "scene.json: elements[0].animation.preset: expected one of `none`, `rotate`, `pulse`, `swim`, got \"rotat\"; "
+        "did you mean `rotate`?");
   CHECK_THAT(scene_error_of(animated_bird(R"({"preset": "pulse", "turns": 2})")),
              StartsWith("scene.json: elements[0].animation.turns: does not apply to preset `pulse`"));
   CHECK_THAT(scene_error_of(animated_bird(R"({"amplitude": 0.1})")),
@@ -244,71 +256,101 @@ TEST_CASE("parse_scene: art file missing or not art") {
 }
 
 TEST_CASE("parse_scene: container holes listed twice or naming the outline") {
-  CHECK(scene_error_of(R"({"container": {"art": "heart-container.path", "holes": [1, 1]}, "elements": [{"art": "bird.path"}]})") ==
+  CHECK(scene_error_of(
+            R"({"container": {"art": "heart-container.path", "holes": [1, 1]}, "elements": [{"art": "bird.path"}]})") ==
         "scene.json: container.holes[1]: path 1 is listed twice");
-  CHECK(scene_error_of(R"({"container": {"art": "heart-container.path", "outline": 2, "holes": [2]}, "elements": [{"art": "bird.path"}]})") ==
-        "scene.json: container.holes[0]: path 2 is the outline and cannot be a hole");
+  CHECK(
+      scene_error_of(
+          R"({"container": {"art": "heart-container.path", "outline": 2, "holes": [2]}, "elements": [{"art": "bird.path"}]})") ==
+      "scene.json: container.holes[0]: path 2 is the outline and cannot be a hole");
 }
 
 TEST_CASE("parse_scene: guided element naming an unknown library element") {
-  CHECK(scene_error_of(guided(R"([{"name": "g", "element": "brid", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
-        "scene.json: guided[0].element: no element in `elements` is named `brid`; did you mean `bird`?");
+  CHECK(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "brid", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
+      "scene.json: guided[0].element: no element in `elements` is named `brid`; did you mean `bird`?");
 }
 
 TEST_CASE("parse_scene: guided targets must start at t = 0, end at t = 1 and increase") {
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0.1}, {"x": 1, "y": 1, "t": 1}]}])")),
-             StartsWith("scene.json: guided[0].targets[0].t: the first target must have t = 0, got 0.1"));
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.9}]}])")),
-             StartsWith("scene.json: guided[0].targets[1].t: the last target must have t = 1, got 0.9"));
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.6}, {"x": 1, "y": 1, "t": 0.4}, {"x": 1, "y": 1, "t": 1}]}])")),
-             StartsWith("scene.json: guided[0].targets[2].t: targets out of order: t 0.4 comes after t 0.6"));
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0.1}, {"x": 1, "y": 1, "t": 1}]}])")),
+      StartsWith("scene.json: guided[0].targets[0].t: the first target must have t = 0, got 0.1"));
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.9}]}])")),
+      StartsWith("scene.json: guided[0].targets[1].t: the last target must have t = 1, got 0.9"));
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "bird", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 0.6}, {"x": 1, "y": 1, "t": 0.4}, {"x": 1, "y": 1, "t": 1}]}])")),
+      StartsWith("scene.json: guided[0].targets[2].t: targets out of order: t 0.4 comes after t 0.6"));
 }
 
 TEST_CASE("parse_scene: loop_to naming an unknown guided element") {
-  CHECK(scene_error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "h", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
-        "scene.json: guided[0].loop_to: no guided element is named `h`; did you mean `g`?");
+  CHECK(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "bird", "loop_to": "h", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])")) ==
+      "scene.json: guided[0].loop_to: no guided element is named `h`; did you mean `g`?");
 }
 
 TEST_CASE("parse_scene: loops that are not a permutation") {
   const std::string t = R"("targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}])";
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "b", "element": "bird", "loop_to": "a", )" + t + "}]")),
-             StartsWith("scene.json: guided[1].loop_to: `a` is already looped into by guided[0] (`a`, which has no `loop_to` and loops into itself)"));
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t +
+                                   R"(}, {"name": "b", "element": "bird", "loop_to": "a", )" + t + "}]")),
+             StartsWith("scene.json: guided[1].loop_to: `a` is already looped into by guided[0] (`a`, which has no "
+                        "`loop_to` and loops into itself)"));
 }
 
 TEST_CASE("parse_scene: loop_to without looping") {
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "g", "element": "bird", "loop_to": "g", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])",
-                             R"(, "loop": false)")),
-             StartsWith("scene.json: guided[0].loop_to: needs `loop: true` at the top level"));
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "g", "element": "bird", "loop_to": "g", "targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}]}])",
+          R"(, "loop": false)")),
+      StartsWith("scene.json: guided[0].loop_to: needs `loop: true` at the top level"));
 }
 
 TEST_CASE("parse_scene: guided paths that do not meet where they loop") {
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", "loop_to": "b", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 3, "y": 4, "t": 1}]},
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "a", "element": "bird", "loop_to": "b", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 3, "y": 4, "t": 1}]},
                                 {"name": "b", "element": "bird", "loop_to": "a", "targets": [{"x": 3, "y": 0, "t": 0}, {"x": 0, "y": 0, "t": 1}]}])")),
-             StartsWith("scene.json: guided[0].targets[1]: the last target (3, 4) must meet the first target of `b` "
-                        "(guided[1].targets[0]), its `loop_to` at (3, 0) within 1e-06 art units, but is 4 away"));
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 1e-5, "t": 1}]}])")),
-             Contains("must meet its own first target (it has no `loop_to`, so it loops into itself)"));
-  CHECK(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 5e-7, "t": 1}]}])")) == "(no error)");
-  CHECK(scene_error_of(guided(R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 1}]}])", R"(, "loop": false)")) == "(no error)");
+      StartsWith("scene.json: guided[0].targets[1]: the last target (3, 4) must meet the first target of `b` "
+                 "(guided[1].targets[0]), its `loop_to` at (3, 0) within 1e-06 art units, but is 4 away"));
+  CHECK_THAT(
+      scene_error_of(guided(
+          R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 1e-5, "t": 1}]}])")),
+      Contains("must meet its own first target (it has no `loop_to`, so it loops into itself)"));
+  CHECK(
+      scene_error_of(guided(
+          R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 0, "y": 5e-7, "t": 1}]}])")) ==
+      "(no error)");
+  CHECK(scene_error_of(guided(
+            R"([{"name": "a", "element": "bird", "targets": [{"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 1}]}])",
+            R"(, "loop": false)")) == "(no error)");
 }
 
 TEST_CASE("parse_scene: duplicate guided names") {
   const std::string t = R"("targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}])";
-  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t + R"(}, {"name": "a", "element": "bird", )" + t + "}]")),
+  CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t +
+                                   R"(}, {"name": "a", "element": "bird", )" + t + "}]")),
              StartsWith("scene.json: guided[1].name: name `a` is already used by guided[0]"));
 }
 
 TEST_CASE("parse_scene: params overrides are checked by name, type and range") {
   CHECK(scene_error_of(scene(kBird, R"(, "params": {"k_edeg": 1})")) ==
         "scene.json: params.k_edeg: unknown parameter; did you mean `k_edge`?");
-  CHECK(scene_error_of(scene(kBird, R"(, "params": {"dt": 0})")) == "scene.json: params.dt: expected a number in [1e-06, 1], got 0");
-  CHECK(scene_error_of(scene(kBird, R"(, "params": {"k_edge": -1})")) == "scene.json: params.k_edge: expected a number >= 0, got -1");
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"dt": 0})")) ==
+        "scene.json: params.dt: expected a number in [1e-06, 1], got 0");
+  CHECK(scene_error_of(scene(kBird, R"(, "params": {"k_edge": -1})")) ==
+        "scene.json: params.k_edge: expected a number >= 0, got -1");
   CHECK(scene_error_of(scene(kBird, R"(, "params": {"check_interval": 2.5})")) ==
         "scene.json: params.check_interval: expected an integer in [1, 100000], got 2.5");
 }
 
 TEST_CASE("parse_scene: slices out of range or given twice") {
-  CHECK(scene_error_of(scene(kBird, R"(, "slices": 1)")) == "scene.json: slices: expected an integer in [2, 1000], got 1");
+  CHECK(scene_error_of(scene(kBird, R"(, "slices": 1)")) ==
+        "scene.json: slices: expected an integer in [2, 1000], got 1");
   CHECK(scene_error_of(scene(kBird, R"(, "slices": 20, "params": {"slices": 30})")) ==
         "scene.json: slices: given twice, here and as params.slices; keep one");
 }
@@ -318,16 +360,20 @@ TEST_CASE("parse_scene: orientation fields that do not apply to the mode") {
              StartsWith("scene.json: orientation.angle: applies only to mode `fixed`"));
   CHECK_THAT(scene_error_of(scene(kBird, R"(, "orientation": {"mode": "field"})")),
              StartsWith("scene.json: orientation: mode `field` needs a `field` object"));
-  CHECK_THAT(scene_error_of(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "radial", "angle": 3}})")),
-             StartsWith("scene.json: orientation.field.angle: applies only to kind `constant`"));
+  CHECK_THAT(
+      scene_error_of(scene(kBird, R"(, "orientation": {"mode": "field", "field": {"kind": "radial", "angle": 3}})")),
+      StartsWith("scene.json: orientation.field.angle: applies only to kind `constant`"));
 }
 
 TEST_CASE("parse_scene: total count disagreeing with the element counts") {
   CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 4}])", R"(, "count": 6)")) ==
-        "scene.json: count: 6 unguided elements, but the elements' `count`s add up to 4 and no element is drawn by weight; "
+        "scene.json: count: 6 unguided elements, but the elements' `count`s add up to 4 and no element is drawn by "
+        "weight; "
         "make them agree or use \"fill\"");
-  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 4}, {"art": "cat.path"}])", R"(, "count": 6)")) == "(no error)");
-  CHECK(scene_error_of(scene(kBird, R"(, "count": "all")")) == "scene.json: count: expected an integer or \"fill\", got \"all\"");
+  CHECK(scene_error_of(scene(R"([{"art": "bird.path", "count": 4}, {"art": "cat.path"}])", R"(, "count": 6)")) ==
+        "(no error)");
+  CHECK(scene_error_of(scene(kBird, R"(, "count": "all")")) ==
+        "scene.json: count: expected an integer or \"fill\", got \"all\"");
 }
 
 TEST_CASE("parse_scene: the example in docs/scene-format.md is valid") {

@@ -26,7 +26,8 @@ TEST_CASE("svg: absolute commands, shorthand curves and quadratic end where they
   const auto art = parse(R"~(<path d="M0 0 C 0 10 10 10 10 0 S 20 -10 20 0 Q 25 10 30 0 T 40 0 L 40 20 Z"/>)~");
   const auto& pts = art.paths.at(0).polylines.at(0).points;
   auto contains = [&](Vec2 q) {
-    for (Vec2 p : pts) if (near(p, q)) return true;
+    for (Vec2 p : pts)
+      if (near(p, q)) return true;
     return false;
   };
   CHECK(contains({10, 0}));
@@ -63,9 +64,11 @@ TEST_CASE("svg: rounded rect corners are quarter ellipses", "[svg]") {
   for (Vec2 p : line.points) {
     const double cx = std::clamp(p.x, 20.0, 100.0), cy = std::clamp(p.y, 25.0, 65.0);
     const double u = (p.x - cx) / 10, v = (p.y - cy) / 5;
-    if (u != 0 && v != 0) CHECK(std::abs(std::hypot(u, v) - 1) < 1e-6);
-    else CHECK((std::abs(p.x - 10) < 1e-9 || std::abs(p.x - 110) < 1e-9 || std::abs(p.y - 20) < 1e-9 ||
-                std::abs(p.y - 70) < 1e-9));
+    if (u != 0 && v != 0)
+      CHECK(std::abs(std::hypot(u, v) - 1) < 1e-6);
+    else
+      CHECK((std::abs(p.x - 10) < 1e-9 || std::abs(p.x - 110) < 1e-9 || std::abs(p.y - 20) < 1e-9 ||
+             std::abs(p.y - 70) < 1e-9));
   }
   const auto plain = parse(R"~(<rect x="1" y="2" width="3" height="4"/>)~");
   require_points(plain.paths.at(0).polylines.at(0).points, {{1, 2}, {4, 2}, {4, 6}, {1, 6}});
@@ -133,7 +136,8 @@ TEST_CASE("svg: viewBox with mm units and preserveAspectRatio", "[svg]") {
   const auto mm = parse(R"~(<rect x="10" y="10" width="80" height="80"/>)~",
                         R"~(width="100mm" height="100mm" viewBox="0 0 100 100")~");
   const double s = 96.0 / 25.4;
-  require_points(mm.paths.at(0).polylines.at(0).points, {{10 * s, 10 * s}, {90 * s, 10 * s}, {90 * s, 90 * s}, {10 * s, 90 * s}}, 1e-9);
+  require_points(mm.paths.at(0).polylines.at(0).points,
+                 {{10 * s, 10 * s}, {90 * s, 10 * s}, {90 * s, 90 * s}, {10 * s, 90 * s}}, 1e-9);
   // A 2:1 viewport showing a square viewBox: uniform scale 1, centred (xMidYMid meet).
   const auto meet = parse(R"~(<rect width="10" height="10"/>)~", R"~(width="20" height="10" viewBox="0 0 10 10")~");
   CHECK(near(meet.bounds().min, {5, 0}));

@@ -102,6 +102,6 @@ TEST_CASE("svg: files are read with a size limit, load_art dispatches by extensi
   tiny.max_file_bytes = 10;
   CHECK_THROWS_WITH(animpak::load_svg(file, tiny), Catch::Contains("over the limit"));
   CHECK_THROWS_WITH(animpak::load_svg(dir / "missing.svg"), Catch::Contains("missing.svg"));
-  CHECK_THROWS_WITH(animpak::load_art(dir / "art.png"), Catch::Contains("art.png") && Catch::Contains(".svg") &&
-                                                            Catch::Contains(".path"));
+  CHECK_THROWS_WITH(animpak::load_art(dir / "art.png"),
+                    Catch::Contains("art.png") && Catch::Contains(".svg") && Catch::Contains(".path"));
 }

@@ -100,14 +100,16 @@ TEST_CASE("svg: points with an odd coordinate drop it, invalid points stop there
   REQUIRE(odd.polylines.size() == 1);
   CHECK(odd.polylines[0].closed);
   require_points(odd.polylines[0].points, {{10, 10}, {50, 10}, {50, 50}});
-  CHECK(has_warning(art, "test.svg: polygon#odd: odd number of coordinates in points; the last one (\"30\", "
-                         "character 19) dropped"));
+  CHECK(has_warning(art,
+                    "test.svg: polygon#odd: odd number of coordinates in points; the last one (\"30\", "
+                    "character 19) dropped"));
   const auto& bad = path_with_id(art, "bad");
   REQUIRE(bad.polylines.size() == 1);
   CHECK(!bad.polylines[0].closed);
   require_points(bad.polylines[0].points, {{0, 0}, {10, 0}, {10, 10}});
-  CHECK(has_warning(art, "test.svg: polyline#bad: points error at character 16 (\"x\"); rendered the 3 points "
-                         "before it"));
+  CHECK(has_warning(art,
+                    "test.svg: polyline#bad: points error at character 16 (\"x\"); rendered the 3 points "
+                    "before it"));
 }
 
 TEST_CASE("svg: degenerate shapes are dropped with one warning each naming the element", "[svg]") {
@@ -125,8 +127,9 @@ TEST_CASE("svg: degenerate shapes are dropped with one warning each naming the e
   INFO(warnings_of(art));
   for (const char* id : {"dot", "zero", "line", "out-and-back", "flat-rect", "thin-rect", "no-circle", "no-ellipse"})
     CHECK(!has_path(art, id));
-  CHECK(has_warning(art, "test.svg: path#dot: its geometry is a single point or only zero-length segments; "
-                         "nothing drawn (dropped)"));
+  CHECK(has_warning(art,
+                    "test.svg: path#dot: its geometry is a single point or only zero-length segments; "
+                    "nothing drawn (dropped)"));
   CHECK(has_warning(art, "test.svg: path#zero: its geometry is a single point or only zero-length segments"));
   CHECK(has_warning(art, "test.svg: polygon#line: its geometry is no area (collinear points) and no stroke"));
   CHECK(has_warning(art, "test.svg: polygon#out-and-back: its geometry is no area"));
@@ -138,8 +141,9 @@ TEST_CASE("svg: degenerate shapes are dropped with one warning each naming the e
   const auto& half = path_with_id(art, "half");
   REQUIRE(half.polylines.size() == 1);
   require_points(half.polylines[0].points, {{0, 0}, {10, 0}, {10, 10}});
-  CHECK(has_warning(art, "test.svg: path#half: 2 of its 3 subpaths are a single point or only zero-length "
-                         "segments, or no area (collinear points) and no stroke; those dropped"));
+  CHECK(has_warning(art,
+                    "test.svg: path#half: 2 of its 3 subpaths are a single point or only zero-length "
+                    "segments, or no area (collinear points) and no stroke; those dropped"));
   // A stroked line has no area but draws: kept, no warning.
   CHECK(has_path(art, "stroked-line"));
   CHECK(art.warnings.size() == 9);

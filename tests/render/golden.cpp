@@ -89,14 +89,15 @@ GoldenResult compare_golden(const animpak::Picture& actual, const std::string& c
       if (off > worst) worst = off, worst_x = x, worst_y = y;
       const bool differs = off > thresholds.pixel;
       differing += differs;
-      for (int c = 0; c < 3; ++c) diff[i + c] = differs ? (c == 0 ? 255 : 0) : static_cast<unsigned char>(191 + got[i + c] / 4);
+      for (int c = 0; c < 3; ++c)
+        diff[i + c] = differs ? (c == 0 ? 255 : 0) : static_cast<unsigned char>(191 + got[i + c] / 4);
       diff[i + 3] = 255;
     }
   const double share = double(differing) / (double(expected.width) * expected.height);
   result.pass = share <= thresholds.max_share && worst <= thresholds.hard;
-  report << differing << " pixels differ by more than " << thresholds.pixel << " (" << 100.0 * share
-         << " %, allowed " << 100.0 * thresholds.max_share << " %); max difference " << worst << " at (" << worst_x
-         << ", " << worst_y << "), allowed " << thresholds.hard << ": " << (result.pass ? "PASS" : "FAILURE");
+  report << differing << " pixels differ by more than " << thresholds.pixel << " (" << 100.0 * share << " %, allowed "
+         << 100.0 * thresholds.max_share << " %); max difference " << worst << " at (" << worst_x << ", " << worst_y
+         << "), allowed " << thresholds.hard << ": " << (result.pass ? "PASS" : "FAILURE");
   if (!result.pass) {
     const auto dir = std::filesystem::absolute("golden-failures") / case_name;
     std::filesystem::create_directories(dir);

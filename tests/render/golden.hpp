@@ -12,15 +12,15 @@
 #include "animpak/render.hpp"
 
 struct GoldenThresholds {
-  int pixel = 16;              ///< a channel off by more than this (0–255) makes its pixel differ
-  double max_share = 0.005;    ///< share of differing pixels still accepted
-  int hard = 230;              ///< no channel of any pixel may be off by more than this
+  int pixel = 16;            ///< a channel off by more than this (0–255) makes its pixel differ
+  double max_share = 0.005;  ///< share of differing pixels still accepted
+  int hard = 230;            ///< no channel of any pixel may be off by more than this
 };
 
 struct GoldenResult {
   bool pass = false;
-  bool updated = false;   ///< the reference was (re)written
-  std::string report;     ///< one paragraph: counts, worst pixel, files written on failure
+  bool updated = false;  ///< the reference was (re)written
+  std::string report;    ///< one paragraph: counts, worst pixel, files written on failure
 };
 
 struct Image {

@@ -30,8 +30,12 @@ class Checker {
   }
 
  private:
-  void fail(const std::string& path, const std::string& what) { errors.push_back((path.empty() ? "(root)" : path) + ": " + what); }
-  static std::string at(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+  void fail(const std::string& path, const std::string& what) {
+    errors.push_back((path.empty() ? "(root)" : path) + ": " + what);
+  }
+  static std::string at(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
 
   bool has(const json& o, const std::string& path, const std::string& key) {
     if (o.contains(key)) return true;
@@ -93,7 +97,8 @@ class Checker {
     for (const char* key : {"i", "o", "v"}) {
       if (!array_key(v, path, key)) continue;
       if (v[key].size() != v["v"].size()) fail(at(path, key), "not as many points as v");
-      for (std::size_t k = 0; k < v[key].size(); ++k) numbers(v[key][k], at(path, key) + "[" + std::to_string(k) + "]", 2);
+      for (std::size_t k = 0; k < v[key].size(); ++k)
+        numbers(v[key][k], at(path, key) + "[" + std::to_string(k) + "]", 2);
     }
     if (has(v, path, "c") && !v["c"].is_boolean()) fail(at(path, "c"), "expected true or false");
   }
@@ -105,14 +110,18 @@ class Checker {
       case Kind::scalar:
         if (!v.is_number() && !(v.is_array() && v.size() == 1 && v[0].is_number())) fail(path, "expected a number");
         break;
-      case Kind::vector: numbers(v, path, 0); break;
+      case Kind::vector:
+        numbers(v, path, 0);
+        break;
       case Kind::colour:
         if (!v.is_array() || v.size() < 3 || v.size() > 4) return fail(path, "expected 3 or 4 numbers");
         numbers(v, path, v.size());
         for (const json& c : v)
           if (c.is_number() && (c.get<double>() < 0 || c.get<double>() > 1)) return fail(path, "channel outside 0–1");
         break;
-      case Kind::shape: shape_value(v, path); break;
+      case Kind::shape:
+        shape_value(v, path);
+        break;
     }
   }
 
@@ -161,8 +170,10 @@ class Checker {
         previous = k["t"].get<double>();
       }
       const bool last = i + 1 == keys.size();
-      if (k.contains("s")) key_value(k["s"], at(kp, "s"), kind);
-      else if (!last) fail(at(kp, "s"), "missing");
+      if (k.contains("s"))
+        key_value(k["s"], at(kp, "s"), kind);
+      else if (!last)
+        fail(at(kp, "s"), "missing");
       if (k.contains("e")) key_value(k["e"], at(kp, "e"), kind);
       const bool hold = k.contains("h") && k["h"] == 1;
       if (k.contains("h")) one_of(k, kp, "h", {0, 1});

@@ -12,9 +12,9 @@
 #include <regex>
 #include <sstream>
 
-#include "animpak/version.hpp"
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
+#include "animpak/version.hpp"
 #include "frame_writers.hpp"
 #include "golden.hpp"
 #include "lottie_schema.hpp"
@@ -83,7 +83,9 @@ bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1")
 
 }  // namespace
 
-TEST_CASE("lottie: animation.json passes the schema check, one layer per element named by its id, one key per slice ending on frame N") {
+TEST_CASE(
+    "lottie: animation.json passes the schema check, one layer per element named by its id, one key per slice ending "
+    "on frame N") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "lottie";
@@ -106,7 +108,8 @@ TEST_CASE("lottie: animation.json passes the schema check, one layer per element
   const std::vector<std::string> ids = frame_writers::element_ids(world);
   REQUIRE(doc["layers"].size() == world.elements.size() + 1);
   CHECK(doc["layers"][0]["nm"] == "container");
-  for (std::size_t e = 0; e < world.elements.size(); ++e) CHECK(doc["layers"][world.elements.size() - e]["nm"] == ids[e]);
+  for (std::size_t e = 0; e < world.elements.size(); ++e)
+    CHECK(doc["layers"][world.elements.size() - e]["nm"] == ids[e]);
   CHECK(ids[0] == world.elements[0].name);
 
   const nlohmann::json& shape = doc["layers"][1]["shapes"][0]["it"][0];
@@ -178,8 +181,9 @@ TEST_CASE("lottie schema check: broken documents fail, each error naming its JSO
 
 TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames, alpha IoU at least 0.97") {
 #ifndef ANIMPAK_HAVE_RLOTTIE
-  animpak::test::skip("rlottie was not found when the build was configured (Debian package librlottie-dev); "
-                      "nothing was compared");
+  animpak::test::skip(
+      "rlottie was not found when the build was configured (Debian package librlottie-dev); "
+      "nothing was compared");
 #else
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
@@ -199,7 +203,9 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
 #endif
 }
 
-TEST_CASE("svg-anim and Chromium: paused at five frames' times, at slices and between them, it covers animpak's PNG frames, alpha IoU at least 0.97") {
+TEST_CASE(
+    "svg-anim and Chromium: paused at five frames' times, at slices and between them, it covers animpak's PNG frames, "
+    "alpha IoU at least 0.97") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
   const World world = big_star_world();
@@ -212,18 +218,22 @@ TEST_CASE("svg-anim and Chromium: paused at five frames' times, at slices and be
   for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
     const Image ours = read_rgba(dir / "frames" / frame_png(i));
     // The SVG inline, so that the page's script reaches its timeline: paused at frame i's time.
-    const fs::path page = dir / ("frame" + std::to_string(i) + ".html"), shot = dir / ("chromium" + std::to_string(i) + ".png");
+    const fs::path page = dir / ("frame" + std::to_string(i) + ".html"),
+                   shot = dir / ("chromium" + std::to_string(i) + ".png");
     std::ofstream(page) << "<!DOCTYPE html><html><head><style>html,body{margin:0;padding:0;overflow:hidden;"
                            "background:transparent}svg{display:block}</style></head><body>"
                         << svg << "<script>const svg = document.querySelector('svg'); svg.pauseAnimations(); "
                         << "svg.setCurrentTime(" << i / out.fps << ");</script></body></html>\n";
     // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's; a
     // profile of its own keeps a Chromium already running (another test run) from taking the page over.
-    const std::string command = "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-                                "--user-data-dir='" + (dir / "profile").string() + "' "
-                                "--default-background-color=00000000 --window-size=" +
-                                std::to_string(ours.width) + "," + std::to_string(ours.height) + " --screenshot='" +
-                                shot.string() + "' 'file://" + page.string() + "' >/dev/null 2>&1";
+    const std::string command =
+        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+        "--user-data-dir='" +
+        (dir / "profile").string() +
+        "' "
+        "--default-background-color=00000000 --window-size=" +
+        std::to_string(ours.width) + "," + std::to_string(ours.height) + " --screenshot='" + shot.string() +
+        "' 'file://" + page.string() + "' >/dev/null 2>&1";
     REQUIRE(std::system(command.c_str()) == 0);
     const Image theirs = read_rgba(shot);
     REQUIRE(theirs.width == ours.width);
@@ -234,7 +244,9 @@ TEST_CASE("svg-anim and Chromium: paused at five frames' times, at slices and be
   }
 }
 
-TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over its slices, keyTimes at their times, one cycle N / fps long") {
+TEST_CASE(
+    "svg-anim: the SVG frames' groups and ids, each path's d over its slices, keyTimes at their times, one cycle N / "
+    "fps long") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "svg-anim";
@@ -251,11 +263,12 @@ TEST_CASE("svg-anim: the SVG frames' groups and ids, each path's d over its slic
   CHECK(group_ids(svg) == group_ids(frame0));
   CHECK_THAT(svg, Contains("<path id=\"container\" d=\"M"));
 
-  const std::regex animate("<animate attributeName=\"d\" dur=\"([^\"]*)\" repeatCount=\"indefinite\" "
-                           "calcMode=\"linear\" keyTimes=\"([^\"]*)\" values=\"([^\"]*)\"/>");
+  const std::regex animate(
+      "<animate attributeName=\"d\" dur=\"([^\"]*)\" repeatCount=\"indefinite\" "
+      "calcMode=\"linear\" keyTimes=\"([^\"]*)\" values=\"([^\"]*)\"/>");
   std::smatch m;
   REQUIRE(std::regex_search(svg, m, animate));
-  CHECK(m[1] == "0.24s");  // 6 frames at 25 per second
+  CHECK(m[1] == "0.24s");                          // 6 frames at 25 per second
   CHECK(m[2] == "0;0.3333333333;0.6666666667;1");  // the 4 slices' times
   std::vector<std::string> values;
   std::stringstream list(m[3]);
@@ -330,10 +343,13 @@ TEST_CASE("lottie: a world that does not loop holds its last slice from frame N 
   CHECK(frame_writers::element_keys(world, world.state, 0, out).frames == std::vector<double>{0});
 }
 
-TEST_CASE("lottie and rlottie: keyed at drifted slices, every frame, between slices too, covers the PNG frame, IoU at least 0.99") {
+TEST_CASE(
+    "lottie and rlottie: keyed at drifted slices, every frame, between slices too, covers the PNG frame, IoU at least "
+    "0.99") {
 #ifndef ANIMPAK_HAVE_RLOTTIE
-  animpak::test::skip("rlottie was not found when the build was configured (Debian package librlottie-dev); "
-                      "nothing was compared");
+  animpak::test::skip(
+      "rlottie was not found when the build was configured (Debian package librlottie-dev); "
+      "nothing was compared");
 #else
   const World world = big_star_world();
   const SimState state = drifted_state(world);
@@ -355,11 +371,13 @@ TEST_CASE("lottie and rlottie: keyed at drifted slices, every frame, between sli
 #endif
 }
 
-TEST_CASE("background none: transparent PNG corners, no Lottie solid layer, no SVG backdrop, and a colour fills all three") {
+TEST_CASE(
+    "background none: transparent PNG corners, no Lottie solid layer, no SVG backdrop, and a colour fills all three") {
   const World world = big_star_world();
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "background";
-  FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
+  FrameOutput out =
+      animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
   out.style.container = ContainerDrawing::outline;
   auto has_solid_layer = [&] {
     const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
@@ -378,7 +396,8 @@ TEST_CASE("background none: transparent PNG corners, no Lottie solid layer, no S
   CHECK(std::vector<int>(png.rgba.begin(), png.rgba.begin() + 4) == std::vector<int>{30, 30, 30, 255});
   CHECK(has_solid_layer());
   CHECK_THAT(text_of(dir / "animation.json"), Contains("\"sc\":\"#1e1e1e\""));
-  CHECK_THAT(text_of(dir / "frames" / "frame_0000.svg"), Contains("<rect id=\"background\"") && Contains("fill=\"#1e1e1e\""));
+  CHECK_THAT(text_of(dir / "frames" / "frame_0000.svg"),
+             Contains("<rect id=\"background\"") && Contains("fill=\"#1e1e1e\""));
   CHECK_THAT(text_of(dir / "animation.svg"), Contains("<rect id=\"background\"") && Contains("fill=\"#1e1e1e\""));
 }
 
@@ -387,7 +406,8 @@ TEST_CASE("container fill: its art painted under the elements in the PNG, the SV
   REQUIRE_FALSE(world.container.art.paths.empty());
   const animpak::test::TempDir temp("animpak-animation-");
   const auto dir = temp / "container";
-  FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
+  FrameOutput out =
+      animated_output(dir, {FrameFormat::png, FrameFormat::svg, FrameFormat::lottie, FrameFormat::svg_anim});
   auto opaque_pixels = [&] {
     const Image png = read_rgba(dir / "frames" / frame_png(0));
     std::size_t n = 0;
@@ -426,10 +446,11 @@ TEST_CASE("dotlottie: animation.lottie is a zip of manifest.json and animations/
   const auto dir = temp / "dotlottie";
   write_frames(world, world.state, animated_output(dir, {FrameFormat::lottie, FrameFormat::dotlottie}));
   // Python's zipfile checks every entry's CRC (testzip) and unpacks both files beside it.
-  const std::string command = "python3 -c \"import sys, zipfile; z = zipfile.ZipFile(sys.argv[1]); "
-                              "assert z.testzip() is None; print(' '.join(z.namelist())); z.extractall(sys.argv[2])\" '" +
-                              (dir / "animation.lottie").string() + "' '" + (dir / "unzipped").string() + "' > '" +
-                              (dir / "names.txt").string() + "'";
+  const std::string command =
+      "python3 -c \"import sys, zipfile; z = zipfile.ZipFile(sys.argv[1]); "
+      "assert z.testzip() is None; print(' '.join(z.namelist())); z.extractall(sys.argv[2])\" '" +
+      (dir / "animation.lottie").string() + "' '" + (dir / "unzipped").string() + "' > '" +
+      (dir / "names.txt").string() + "'";
   REQUIRE(std::system(command.c_str()) == 0);
   CHECK(text_of(dir / "names.txt") == "manifest.json animations/animation.json\n");
   const nlohmann::json manifest = nlohmann::json::parse(text_of(dir / "unzipped" / "manifest.json"));

@@ -21,14 +21,13 @@ TEST_CASE("run_simulation: three stars in the heart pack to the gap criterion wi
   // boundary sampling coarser than the default: a 0.2 spacing cuts the stars' tips off their slice
   // outline and the art overlaps where the outlines do not.
   const int slices = 5;
-  World w = make_world(parse_scene(
-      animpak::test::star_scene(3, slices, 1,
-                                {"", R"("cell_size": 0.2,
+  World w = make_world(parse_scene(animpak::test::star_scene(3, slices, 1, {"", R"("cell_size": 0.2,
                                         "interior_spacing": 0.5, "max_iterations": 60000)"},
-                                "{}"),
-      "tiny.json", "/"));
+                                                             "{}"),
+                                   "tiny.json", "/"));
   double initial = 0.0;
-  for (int s = 0; s < slices; ++s) initial = std::max(initial, measure_frame(w, w.state, s / double(slices - 1)).coverage);
+  for (int s = 0; s < slices; ++s)
+    initial = std::max(initial, measure_frame(w, w.state, s / double(slices - 1)).coverage);
   // At 7 % of full size three stars cover about 1.2 % of the heart.
   CHECK(initial < 0.03);
 

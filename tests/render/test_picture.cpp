@@ -100,8 +100,7 @@ TEST_CASE("Picture: bad sizes and unwritable files are input errors naming the p
   Picture pic(8, 8, unit_box());
   CHECK_THROWS_WITH(pic.write("/nonexistent-folder/x.png"), Catch::Contains("/nonexistent-folder/x.png"));
   const test::TempDir temp("animpak-picture-");
-  CHECK_THROWS_WITH(pic.write(temp / "x.unknownformat"),
-                    Catch::Contains("cannot write this image format"));
+  CHECK_THROWS_WITH(pic.write(temp / "x.unknownformat"), Catch::Contains("cannot write this image format"));
 }
 
 TEST_CASE("Picture: the world box is fitted with its aspect ratio kept and centred") {

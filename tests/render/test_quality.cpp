@@ -10,7 +10,9 @@ using namespace animpak;
 
 namespace {
 
-std::vector<Vec2> square(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+std::vector<Vec2> square(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 Region box(double x0, double y0, double x1, double y1) { return {{square(x0, y0, x1, y1)}, FillRule::nonzero}; }
 
@@ -110,7 +112,8 @@ TEST_CASE("measure_regions: the channel CV of two squares side by side") {
   CHECK(m.min_gap == Approx(0.5).margin(1e-9));
 
   // Centred in a square container every sample is equally far from the container: no variation.
-  const FrameMetrics centred = measure_regions({box(0.25, 0.25, 0.75, 0.75)}, {{square(0, 0, 1, 1)}, FillRule::nonzero});
+  const FrameMetrics centred =
+      measure_regions({box(0.25, 0.25, 0.75, 0.75)}, {{square(0, 0, 1, 1)}, FillRule::nonzero});
   CHECK(centred.channel_cv == Approx(0.0).margin(1e-9));
 }
 

@@ -106,8 +106,8 @@ Outcome compare_with_rsvg(const fs::path& svg, const fs::path& dir) {
                                ? width + height
                            : view_width > view_height ? width
                                                       : height;
-  const std::string command = "rsvg-convert" + side + " -o '" + theirs_file.string() + "' '" + svg.string() +
-                              "' 2>/dev/null";
+  const std::string command =
+      "rsvg-convert" + side + " -o '" + theirs_file.string() + "' '" + svg.string() + "' 2>/dev/null";
   fs::remove(theirs_file);
   if (std::system(command.c_str()) != 0) {
     outcome.skipped = "rsvg-convert refused it";
@@ -130,8 +130,10 @@ Outcome compare_with_rsvg(const fs::path& svg, const fs::path& dir) {
     // Both pictures beside the test binary, to hold side by side.
     outcome.kept = fs::current_path() / "svg-fidelity";
     fs::create_directories(outcome.kept);
-    fs::copy_file(ours_file, outcome.kept / (svg.stem().string() + "-animpak.png"), fs::copy_options::overwrite_existing);
-    fs::copy_file(theirs_file, outcome.kept / (svg.stem().string() + "-rsvg.png"), fs::copy_options::overwrite_existing);
+    fs::copy_file(ours_file, outcome.kept / (svg.stem().string() + "-animpak.png"),
+                  fs::copy_options::overwrite_existing);
+    fs::copy_file(theirs_file, outcome.kept / (svg.stem().string() + "-rsvg.png"),
+                  fs::copy_options::overwrite_existing);
   }
   return outcome;
 }

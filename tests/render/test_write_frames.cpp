@@ -36,7 +36,9 @@ FrameOutput small_output(const std::filesystem::path& dir, std::vector<FrameForm
 
 }  // namespace
 
-TEST_CASE("write_frames: png and svg write exactly N frames named frame_0000 on, one metric each and three per slice interval") {
+TEST_CASE(
+    "write_frames: png and svg write exactly N frames named frame_0000 on, one metric each and three per slice "
+    "interval") {
   const World world = tiny_star_world();
   const animpak::test::TempDir temp("animpak-frames-");
   const auto dir = temp / "png-svg";

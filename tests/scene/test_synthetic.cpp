@@ -46,7 +46,8 @@ TEST_CASE("Synthetic worlds: constant density keeps the covered share from 4k to
     CHECK(std::abs(d.world.topology.vertex_count() - vertices) < 0.15 * vertices);
     // A container √(copies / 45) times wider than the reference world's, seen in unit space: the
     // cell and the slice gap shrink with the copies.
-    CHECK(c.world.params.forces.cell_size * std::sqrt(double(c.elements)) == Approx(0.04 * std::sqrt(45.0)).epsilon(1e-9));
+    CHECK(c.world.params.forces.cell_size * std::sqrt(double(c.elements)) ==
+          Approx(0.04 * std::sqrt(45.0)).epsilon(1e-9));
     CHECK(c.slices - 1 == std::lround(19 * std::sqrt(c.elements / 45.0)));
     CHECK(d.slices == 20);
     constant.push_back(covered_share(c.world));

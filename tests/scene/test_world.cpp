@@ -111,7 +111,8 @@ TEST_CASE("build_world: a target path through a hole warns, a target outside or 
            targets + R"(]}], "loop": false, "seed": 1, "slices": 9})";
   };
   // Straight across the ring's middle: the hole (r 95 about (250, 250)) lies on the way.
-  const World across = world_of(ring(R"({"x": 420, "y": 250, "t": 0}, {"x": 80, "y": 250, "t": 0.5}, {"x": 250, "y": 80, "t": 1})"));
+  const World across =
+      world_of(ring(R"({"x": 420, "y": 250, "t": 0}, {"x": 80, "y": 250, "t": 0.5}, {"x": 250, "y": 80, "t": 1})"));
   std::string notes;
   for (const std::string& n : across.notes) notes += n + "\n";
   CHECK_THAT(notes, Contains("guided \"crosser\": the straight path from target 0 (x 420, y 250, t 0) to target 1 runs "
@@ -149,7 +150,7 @@ TEST_CASE("build_world: loop pairs join an unguided element to itself and loop_t
   for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
     const std::int32_t end = topo.loop_end[i], start = topo.loop_start[i];
     CHECK(topo.slice[end] == topo.element_slice_begin[topo.element[end] + 1] - 1);  // a last slice
-    CHECK(topo.slice[start] == topo.element_slice_begin[topo.element[start]]);     // a first slice
+    CHECK(topo.slice[start] == topo.element_slice_begin[topo.element[start]]);      // a first slice
   }
 
   const World open = world_of(star_scene(2, kSlices, 3, {R"(, "loop": false)", ""}));
@@ -183,7 +184,8 @@ TEST_CASE("build_world: rest copy centroids are slice means and initial rest len
   const Topology& topo = w.topology;
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     double sx = 0, sy = 0;
-    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) sx += topo.rest_copy_x[v], sy += topo.rest_copy_y[v];
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v)
+      sx += topo.rest_copy_x[v], sy += topo.rest_copy_y[v];
     const double n = topo.slice_begin[s + 1] - topo.slice_begin[s];
     CHECK(topo.slice_rest_copy_cx[s] == Approx(sx / n).margin(1e-6));
     CHECK(topo.slice_rest_copy_cy[s] == Approx(sy / n).margin(1e-6));
@@ -202,7 +204,8 @@ TEST_CASE("build_world: every vertex of every element starts inside the containe
   for (const std::string& text : {star_scene(4, kSlices, 11), star_scene(1, kSlices, 3, kSwap)}) {
     const World w = world_of(text);
     int outside = 0;
-    for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v) outside += !w.container.contains({w.state.x[v], w.state.y[v]});
+    for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v)
+      outside += !w.container.contains({w.state.x[v], w.state.y[v]});
     CHECK(outside == 0);
   }
 }
@@ -265,7 +268,8 @@ std::vector<double> slice_sizes(const World& w, int element) {
     double sum = 0.0;
     const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1];
     for (std::int32_t v = lo; v < hi; ++v)
-      sum += std::hypot(topo.rest_copy_x[v] - topo.slice_rest_copy_cx[s], topo.rest_copy_y[v] - topo.slice_rest_copy_cy[s]);
+      sum += std::hypot(topo.rest_copy_x[v] - topo.slice_rest_copy_cx[s],
+                        topo.rest_copy_y[v] - topo.slice_rest_copy_cy[s]);
     sizes.push_back(sum / (hi - lo));
   }
   return sizes;
@@ -345,8 +349,9 @@ TEST_CASE("build_world: fixed orientation turns every unguided element alike, ta
   const World fixed = world_of(star_scene(3, kSlices, 2, {R"(, "orientation": {"mode": "fixed", "angle": 30})", ""}));
   for (const ElementInstance& e : fixed.elements) CHECK(e.angle == Approx(30.0 * std::numbers::pi / 180.0));
 
-  const World field = world_of(star_scene(
-      3, kSlices, 2, {R"(, "orientation": {"mode": "field", "field": {"kind": "tangential", "center": [250, 280]}})", ""}));
+  const World field = world_of(
+      star_scene(3, kSlices, 2,
+                 {R"(, "orientation": {"mode": "field", "field": {"kind": "tangential", "center": [250, 280]}})", ""}));
   const Vec2 c = field.container.frame.to_unit({250, 280});
   for (const ElementInstance& e : field.elements) {
     INFO(e.name);
@@ -359,7 +364,7 @@ TEST_CASE("build_world: warns when slices are farther apart in t than the collis
     return std::any_of(w.notes.begin(), w.notes.end(),
                        [](const std::string& n) { return n.rfind("warning: slices are", 0) == 0; });
   };
-  CHECK(warned(world_of(star_scene(2, 5, 1))));   // 0.25 apart, grid reach 0.12
+  CHECK(warned(world_of(star_scene(2, 5, 1))));  // 0.25 apart, grid reach 0.12
   CHECK_FALSE(warned(world_of(star_scene(2, 20, 1))));
   CHECK_FALSE(warned(world_of(star_scene(2, 5, 1, {"", R"("cell_size": 0.1)"}))));
 }

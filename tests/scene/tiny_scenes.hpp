@@ -25,10 +25,9 @@ inline constexpr const char* rotating = R"({"preset": "rotate", "turns": 1})";
 inline std::string star_scene(int count, int slices, std::uint64_t seed, const SceneExtras& extras = {},
                               const std::string& animation = rotating) {
   return R"({"container": {"art": ")" + example_file("shapes/heart-container.path") +
-         R"("}, "elements": [{"name": "star", "art": ")" + example_file("default/star.svg") +
-         R"(", "count": )" + std::to_string(count) + R"(, "animation": )" + animation + "}]" +
-         extras.top + R"(, "seed": )" + std::to_string(seed) + R"(, "slices": )" + std::to_string(slices) +
-         R"(, "params": {)" + extras.params + "}}";
+         R"("}, "elements": [{"name": "star", "art": ")" + example_file("default/star.svg") + R"(", "count": )" +
+         std::to_string(count) + R"(, "animation": )" + animation + "}]" + extras.top + R"(, "seed": )" +
+         std::to_string(seed) + R"(, "slices": )" + std::to_string(slices) + R"(, "params": {)" + extras.params + "}}";
 }
 
 /// Two guided stars swapping places on separate arcs (so they never meet) and looping into each other;

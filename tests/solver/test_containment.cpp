@@ -49,7 +49,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
   for (int k = 0; k <= 25; ++k) times.push_back(static_cast<float>(k) / 25.0f);
   std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.05f, times);
   slices[7].ring = test::square(0.95f - p.stop.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
-  slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                     // slice 9 spills past it
+  slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                        // slice 9 spills past it
   b.add_element(slices);
   const test::TinyWorld w = b.build();
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);

@@ -128,7 +128,7 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
 
 TEST_CASE("boundary: the wall repels a boundary vertex inside the container like Eq. 1, interior vertices not") {
   Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
-  p.forces.wall_range = 0.2;               // both vertices below are within reach
+  p.forces.wall_range = 0.2;        // both vertices below are within reach
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);

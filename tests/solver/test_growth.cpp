@@ -17,15 +17,15 @@ using namespace animpak;
 
 namespace {
 
-World growth_world() {
-  return make_world(parse_scene(animpak::test::star_scene(2, 5, 6), "tiny.json", "/"));
-}
+World growth_world() { return make_world(parse_scene(animpak::test::star_scene(2, 5, 6), "tiny.json", "/")); }
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("growth: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the others grow, capped") {
+TEST_CASE(
+    "growth: spilling slices and the larger of overlapping ones shrink, the smaller and slices at the wall pause, the "
+    "others grow, capped") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   REQUIRE(topo.slice_count() == 10);
@@ -41,14 +41,15 @@ TEST_CASE("growth: spilling slices and the larger of overlapping ones shrink, th
   SimState state = w.state;
   const std::int32_t overlapping = 1, smaller = 2, nearly_full = 3, outside = 4, at_wall = 6, full = 7, at_floor = 8;
   state.growth[overlapping] = 1.5f;
-  state.growth[smaller] = 1.5f;       // overlaps a larger element: pauses
+  state.growth[smaller] = 1.5f;      // overlaps a larger element: pauses
   state.growth[nearly_full] = 1.9f;  // 1.9 + 0.15 passes the cap: clamps to 2
   state.growth[outside] = 1.5f;
   state.growth[at_wall] = 1.5f;
-  state.growth[full] = 2.0f;         // already at the cap: does not count as growing
-  state.growth[at_floor] = 1.05f;    // overlapping: shrinks to 1, never below the start
+  state.growth[full] = 2.0f;       // already at the cap: does not count as growing
+  state.growth[at_floor] = 1.05f;  // overlapping: shrinks to 1, never below the start
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
-  contact[topo.slice_begin[overlapping + 1] - 1] = contact_overlap | contact_block | contact_yield;  // the last vertex only
+  contact[topo.slice_begin[overlapping + 1] - 1] =
+      contact_overlap | contact_block | contact_yield;  // the last vertex only
   contact[topo.slice_begin[smaller]] = contact_overlap | contact_block;
   contact[topo.slice_begin[outside]] = contact_outside;
   contact[topo.slice_begin[at_wall] + 1] = contact_wall;
@@ -84,7 +85,9 @@ TEST_CASE("growth: spilling slices and the larger of overlapping ones shrink, th
   CHECK(state.spring_rest == before.spring_rest);
 }
 
-TEST_CASE("growth: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side too") {
+TEST_CASE(
+    "growth: while settling, nothing grows and every overlapping slice shrinks at settle_shrink_rate, the smaller side "
+    "too") {
   const World w = growth_world();
   const Topology& topo = w.topology;
   Params params = w.params;
@@ -182,7 +185,7 @@ TEST_CASE("growth: no slice outgrows growth_ratio × the smallest slice of its e
   CHECK(state.growth[2] == 1.0f);
   CHECK(state.growth[0] == 1.3f);
   CHECK((changed[0] & reference::growth_held) != 0);  // it would grow: the limit holds it
-  CHECK(changed[2] == reference::growth_kept);         // the wall holds this one, not the limit
+  CHECK(changed[2] == reference::growth_kept);        // the wall holds this one, not the limit
   // Element 1 is free and grows evenly: 40 steps of 0.05.
   for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
     CHECK(state.growth[s] == Approx(3.0).epsilon(1e-5));

@@ -24,7 +24,8 @@ World ring_world(const std::string& params) {
       animpak::test::example_file("default/star.svg") +
       R"(", "count": 0, "animation": {"preset": "rotate", "turns": 0}}], "guided": [{"name": "crosser", "element": "star",
       "targets": [{"x": 420, "y": 200, "t": 0}, {"x": 80, "y": 200, "t": 0.5, "angle": 90}, {"x": 80, "y": 300, "t": 1}]}],
-      "loop": false, "seed": 1, "slices": 9, "params": {)" + params + "}}";
+      "loop": false, "seed": 1, "slices": 9, "params": {)" +
+      params + "}}";
   return make_world(parse_scene(text, "ring.json", "/"));
 }
 
@@ -96,7 +97,9 @@ TEST_CASE("guided: a target's slice turned 20 degrees off the target's angle tur
     // bounds sit between what the two stiffnesses leave after 400 steps.
     for (int i = 0; i < 400; ++i) backend->step();
     const double left = std::abs(slice_turn(w.topology, backend->state(), keyed));
-    if (hold) CHECK(left < 1.0);
-    else CHECK(left > 2.0);
+    if (hold)
+      CHECK(left < 1.0);
+    else
+      CHECK(left > 2.0);
   }
 }

@@ -62,8 +62,7 @@ TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
     CHECK(speed <= cap * (1.0 + 1e-6));
     const Vec3f f = forces[v];
     const double fl = std::sqrt(double(f.x) * f.x + double(f.y) * f.y + double(f.t) * f.t);
-    CHECK((w.state.vx[v] * f.x + w.state.vy[v] * f.y + w.state.vt[v] * f.t) / (speed * fl) ==
-          Approx(1.0).margin(1e-6));
+    CHECK((w.state.vx[v] * f.x + w.state.vy[v] * f.y + w.state.vt[v] * f.t) / (speed * fl) == Approx(1.0).margin(1e-6));
     const double moved = std::hypot(w.state.x[v] - before.state.x[v], w.state.y[v] - before.state.y[v],
                                     w.state.t[v] - before.state.t[v]);
     CHECK(moved <= cap * p.forces.dt * (1.0 + 1e-4));
@@ -101,7 +100,8 @@ TEST_CASE("constraints: end-to-end and simultaneity hold after application, per 
     }
   }
   // Element 1 was not touched.
-  for (std::int32_t v = w.topo.slice_begin[4]; v < w.topo.vertex_count(); ++v) CHECK(w.state.t[v] == jittered.state.t[v]);
+  for (std::int32_t v = w.topo.slice_begin[4]; v < w.topo.vertex_count(); ++v)
+    CHECK(w.state.t[v] == jittered.state.t[v]);
   apply_end_to_end(w.topo, w.state, 1);
   apply_simultaneity(w.topo, w.state, 1);
   for (std::int32_t v = w.topo.slice_begin[4]; v < w.topo.slice_begin[5]; ++v) CHECK(w.state.t[v] == 0.0f);

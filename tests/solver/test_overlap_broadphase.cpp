@@ -65,8 +65,8 @@ struct Tally {
 
 // One query against the brute-force box test: every accepted element is a candidate, and the
 // candidates increase strictly.
-void check_query(const test::TinyWorld& w, const SliceBoxes& boxes, const OverlapGrid& grid, std::int32_t start, float px,
-                 float py, float pt, float nx, float ny, Tally& tally) {
+void check_query(const test::TinyWorld& w, const SliceBoxes& boxes, const OverlapGrid& grid, std::int32_t start,
+                 float px, float py, float pt, float nx, float ny, Tally& tally) {
   std::vector<std::int32_t> found;
   overlap_candidates(grid, w.topo.element_count(), std::min(px, nx), std::max(px, nx), std::min(py, ny),
                      std::max(py, ny), pt, found);

@@ -89,8 +89,10 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
   // cell, with centroids 0.012 apart in x.
   WorldBuilder b;
   b.add_element({{{{0.5f, 0.5f}}, 0.5f}}, false);
-  b.add_element({{{{0.482f, 0.482f}, {0.494f, 0.482f}, {0.482f, 0.494f}, {0.494f, 0.494f}, {0.506f, 0.482f},
-                   {0.494f, 0.494f}}, 0.59375f}}, false);
+  b.add_element(
+      {{{{0.482f, 0.482f}, {0.494f, 0.482f}, {0.482f, 0.494f}, {0.494f, 0.494f}, {0.506f, 0.482f}, {0.494f, 0.494f}},
+        0.59375f}},
+      false);
   test::TinyWorld w = b.build();
   w.topo.env_a = {1, 4};
   w.topo.env_b = {2, 5};
@@ -165,7 +167,8 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
   float part[4][3] = {}, plain[3] = {};
   for (const std::int32_t k : q.near) {
     const std::int32_t tri = g.sorted_triangles[k];
-    const Vec3f c = closest_point_on_triangle(pt(0), pt(w.topo.env_a[tri]), pt(w.topo.env_b[tri]), pt(w.topo.env_c[tri]));
+    const Vec3f c =
+        closest_point_on_triangle(pt(0), pt(w.topo.env_a[tri]), pt(w.topo.env_b[tri]), pt(w.topo.env_c[tri]));
     add(0.5f - c.x, 0.5f - c.y, 0.5f - c.t, 1.0f, part[k & 3]);
     add(0.5f - c.x, 0.5f - c.y, 0.5f - c.t, 1.0f, plain);
   }
@@ -231,7 +234,7 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
   const Params p = test::paper_params();
   WorldBuilder b;
   const auto times = times26();
-  b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));  // A: vertex 12·4 + 1 is (0.5, 0.49)
+  b.add_element(test::square_tube(0.49f, 0.5f, 0.01f, times));    // A: vertex 12·4 + 1 is (0.5, 0.49)
   b.add_element(test::square_tube(0.5f, 0.5f, 0.03f, times));     // B: contains it, boundary 0.02 away
   b.add_element(test::square_tube(0.525f, 0.49f, 0.01f, times));  // C: outside, 0.015 away
   const test::TinyWorld w = b.build();
@@ -247,7 +250,8 @@ TEST_CASE("overlap: found inside a second element even when a third element's tr
   for (const std::int32_t k : q.near) {
     const std::int32_t tri = g.sorted_triangles[k];
     const auto pt = [&](std::int32_t i) { return Vec3f{w.state.x[i], w.state.y[i], w.state.t[i]}; };
-    const Vec3f c = closest_point_on_triangle(pt(v), pt(w.topo.env_a[tri]), pt(w.topo.env_b[tri]), pt(w.topo.env_c[tri]));
+    const Vec3f c =
+        closest_point_on_triangle(pt(v), pt(w.topo.env_a[tri]), pt(w.topo.env_b[tri]), pt(w.topo.env_c[tri]));
     const float d = std::hypot(c.x - 0.5f, c.y - 0.49f, c.t - w.state.t[v]);
     if (d < best) best = d, best_element = w.topo.env_element[tri];
   }
@@ -387,7 +391,8 @@ TEST_CASE("overlap: elements that cross only between two slices are found at the
   for (std::int32_t v = 0; v < s.topo.vertex_count(); ++v) CHECK_FALSE(overlap_at(s, v).overlap);
 }
 
-TEST_CASE("overlap: a pass between the middle and a slice is found at the quarter point, which the middle alone misses") {
+TEST_CASE(
+    "overlap: a pass between the middle and a slice is found at the quarter point, which the middle alone misses") {
   // A (half-size 0.04) moves from x 0.4 to 0.6, B (0.05) from 0.8 to 0.5: their centres are
   // 0.4 - 0.5 t apart, so they overlap only for 0.62 < t < 0.98. The slices (t 0 and 1) and the
   // middle (0.5) are clear; the quarter point 0.75 is 0.065 deep in the pass. The default packs showed

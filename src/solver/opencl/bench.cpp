@@ -122,8 +122,17 @@ std::vector<BenchRow> bench_world(const BenchWorldView& w, const std::vector<Ben
   // The reference is always the first target (bench_targets).
   std::vector<BenchRow> rows;
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    BenchRow row{targets[i].label, w.scene, w.series, w.topology.vertex_count(), w.elements,
-                 median_round(rounds[i]), median_round(rounds[0]).ms_per_iter, 0, grid_sorts[i], {}, {}};
+    BenchRow row{targets[i].label,
+                 w.scene,
+                 w.series,
+                 w.topology.vertex_count(),
+                 w.elements,
+                 median_round(rounds[i]),
+                 median_round(rounds[0]).ms_per_iter,
+                 0,
+                 grid_sorts[i],
+                 {},
+                 {}};
     for (std::size_t r = 0; r < rounds[i].size(); ++r) {
       row.rounds_ms.push_back(rounds[i][r].ms_per_iter);
       row.rounds_speedup.push_back(rounds[0][r].ms_per_iter / rounds[i][r].ms_per_iter);

@@ -25,7 +25,8 @@ const char* OpenclError::code_name() const { return opencl_error_name(code_); }
 const char* opencl_error_name(int code) {
   switch (code) {
 #define AP_CL_ERROR(name) \
-  case name: return #name;
+  case name:              \
+    return #name;
     AP_CL_ERROR(CL_SUCCESS)
     AP_CL_ERROR(CL_DEVICE_NOT_FOUND)
     AP_CL_ERROR(CL_DEVICE_NOT_AVAILABLE)
@@ -87,7 +88,8 @@ const char* opencl_error_name(int code) {
     AP_CL_ERROR(CL_INVALID_DEVICE_PARTITION_COUNT)
 #undef AP_CL_ERROR
     // The ICD loader's own code for "no platform installed" (cl_khr_icd).
-    case -1001: return "CL_PLATFORM_NOT_FOUND_KHR";
+    case -1001:
+      return "CL_PLATFORM_NOT_FOUND_KHR";
   }
   return "unknown OpenCL error";
 }

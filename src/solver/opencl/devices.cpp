@@ -60,7 +60,8 @@ DeviceChoice default_device(const std::vector<DeviceInfo>& devices) {
     if (d.gpu && !d.simulator) return pick(d, "the first GPU");
   for (const DeviceInfo& d : devices)
     if (is_pocl(d) && !d.simulator) return pick(d, "no GPU found; PoCL's CPU device");
-  choice.reason = "reference: none of the " + std::to_string(devices.size()) + " OpenCL devices is a GPU or PoCL" + aside;
+  choice.reason =
+      "reference: none of the " + std::to_string(devices.size()) + " OpenCL devices is a GPU or PoCL" + aside;
   return choice;
 }
 
@@ -92,8 +93,8 @@ std::vector<FoundDevice> find_devices() {
       info.global_memory = device_info<cl_ulong>(d, CL_DEVICE_GLOBAL_MEM_SIZE, "CL_DEVICE_GLOBAL_MEM_SIZE");
       info.max_allocation = device_info<cl_ulong>(d, CL_DEVICE_MAX_MEM_ALLOC_SIZE, "CL_DEVICE_MAX_MEM_ALLOC_SIZE");
       // Strings from some drivers carry their C terminator inside the std::string.
-      for (std::string* s : {&info.name, &info.vendor, &info.driver, &info.version, &info.platform,
-                             &info.platform_version})
+      for (std::string* s :
+           {&info.name, &info.vendor, &info.driver, &info.version, &info.platform, &info.platform_version})
         s->erase(std::find(s->begin(), s->end(), '\0'), s->end());
       info.simulator = is_simulator(info);
       found.push_back({d, info});

@@ -35,7 +35,8 @@ ForceParams force_params(const Params& params) {
   p.k_repulsion = static_cast<float>(params.forces.k_repulsion);
   p.repulsion_epsilon = static_cast<float>(params.forces.repulsion_epsilon);
   p.k_wall = static_cast<float>(params.forces.wall_repulsion * params.forces.k_repulsion);
-  for (int c = 0; c < AP_SPRING_CLASSES; ++c) p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
+  for (int c = 0; c < AP_SPRING_CLASSES; ++c)
+    p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
   p.k_target = static_cast<float>(params.forces.k_target);
   p.k_overlap = static_cast<float>(params.forces.k_overlap);
   p.k_overlap_depth = static_cast<float>(params.forces.k_overlap_depth);
@@ -59,8 +60,8 @@ ForceParams force_params(const Params& params) {
 }
 
 ContainerIndexInfo container_index_info(const ContainerIndex& index) {
-  return {index.x0, index.y0, index.cell, index.nx, index.ny, index.band_segments, index.cell_start,
-          index.cell_segments};
+  return {index.x0,         index.y0,           index.cell, index.nx, index.ny, index.band_segments,
+          index.cell_start, index.cell_segments};
 }
 
 GridInfo grid_info(const Params& params, std::int32_t triangles) {

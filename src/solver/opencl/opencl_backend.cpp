@@ -26,9 +26,12 @@ GridSort parse_grid_sort(std::string_view text, std::string_view option) {
 
 const char* grid_sort_name(GridSort sort) {
   switch (sort) {
-    case GridSort::host: return "host";
-    case GridSort::device: return "device";
-    case GridSort::automatic: break;
+    case GridSort::host:
+      return "host";
+    case GridSort::device:
+      return "device";
+    case GridSort::automatic:
+      break;
   }
   return "auto";
 }
@@ -54,17 +57,26 @@ void validate(const Topology& topo) {
 
 class DeviceBackend final : public OpenclBackend {
  public:
-  DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info,
-                GridSort sort)
-      : topo_(topology), info_(info), iteration_(initial.iteration), settling_since_(initial.settling_since),
+  DeviceBackend(const Topology& topology, SimState initial, const Params& params, const DeviceInfo& info, GridSort sort)
+      : topo_(topology),
+        info_(info),
+        iteration_(initial.iteration),
+        settling_since_(initial.settling_since),
         secondary_since_(initial.secondary_since),
-        mark_iteration_(initial.mark_iteration), mark_growth_(initial.mark_growth),
+        mark_iteration_(initial.mark_iteration),
+        mark_growth_(initial.mark_growth),
         rebuild_(params.forces.grid_rebuild_interval),
-        sort_(sort != GridSort::automatic ? sort : info.gpu ? GridSort::device : GridSort::host) {
+        sort_(sort != GridSort::automatic ? sort
+              : info.gpu                  ? GridSort::device
+                                          : GridSort::host) {
     validate(topo_);
     const cl::Program program = create_queue();
-    world_ = {topo_.vertex_count(), topo_.slice_count(), topo_.element_count(),
-              static_cast<std::int32_t>(topo_.loop_end.size()), static_cast<std::int32_t>(topo_.container.ax.size()), 0};
+    world_ = {topo_.vertex_count(),
+              topo_.slice_count(),
+              topo_.element_count(),
+              static_cast<std::int32_t>(topo_.loop_end.size()),
+              static_cast<std::int32_t>(topo_.container.ax.size()),
+              0};
     grid_ = opencl::grid_info(params, topo_.envelope_count());
     upload_state(initial);
     topo_buf_ = opencl::upload_topology(context_, queue_, topo_);
@@ -161,8 +173,8 @@ class DeviceBackend final : public OpenclBackend {
     order_boundary_by_cell();
     const std::int32_t n = world_.vertices;
     if (out != nullptr) {
-      breakdown_ = opencl::make_buffer(context_, CL_MEM_READ_WRITE, sizeof(float) * 3 * AP_FORCE_COMPONENTS * n,
-                                       "breakdown");
+      breakdown_ =
+          opencl::make_buffer(context_, CL_MEM_READ_WRITE, sizeof(float) * 3 * AP_FORCE_COMPONENTS * n, "breakdown");
       forces_.set(breakdown_arg_, breakdown_);
     }
     WorldInfo world = world_;
@@ -318,13 +330,11 @@ class DeviceBackend final : public OpenclBackend {
                       w.box_t);
     repulsion_force_ = Kernel(program, "repulsion_force");
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
-    overlap_grid_arg_ =
-        repulsion_force_.bind(grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice,
-                        w.cell_start, w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct,
-                        w.run_next, w.run_cx, w.run_cy, w.run_ct, b.element_slice_begin, b.slice_begin,
-                        b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_, b.element_secondary,
-                        w.rpl_x, w.rpl_y, w.rpl_t,
-                        w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
+    overlap_grid_arg_ = repulsion_force_.bind(
+        grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice, w.cell_start,
+        w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
+        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_,
+        b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
     forces_ = Kernel(program, "step_forces");
@@ -333,8 +343,8 @@ class DeviceBackend final : public OpenclBackend {
                      b.rest_dir_y, b.target, b.spring_begin, b.spring_other, b.spring_class, rest_, b.tri_a, b.tri_b,
                      b.tri_c, b.tri_begin, b.tri_list, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
                      w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
-                     opencl::container_index_info(topo_.container.index), b.container_index, w.slice_cx,
-                     w.slice_cy, fx_, fy_, ft_, closest_, contact_, breakdown_) -
+                     opencl::container_index_info(topo_.container.index), b.container_index, w.slice_cx, w.slice_cy,
+                     fx_, fy_, ft_, closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
@@ -344,15 +354,15 @@ class DeviceBackend final : public OpenclBackend {
     loop_.bind(world_, b.loop_end, b.loop_start, x_, y_);
     apply_containment_ = Kernel(program, "apply_containment");
     apply_containment_.bind(world_, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
-                      opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
+                            opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, secondary_since_ == 0 ? 1 : 0, b.slice_begin,
                          b.slice_element, b.element_secondary, contact_, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");
     grow_.bind(world_, p, b.slice_element, b.element_slice_begin, w.proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");
-    rest_lengths_.bind(world_, b.slice, b.spring_begin, b.spring_other, changed_, growth_, b.rest_copy_x,
-                       b.rest_copy_y, b.rest_copy_t, b.rest_copy_cx, b.rest_copy_cy, rest_);
+    rest_lengths_.bind(world_, b.slice, b.spring_begin, b.spring_other, changed_, growth_, b.rest_copy_x, b.rest_copy_y,
+                       b.rest_copy_t, b.rest_copy_cx, b.rest_copy_cy, rest_);
     statistics_ = Kernel(program, "slice_statistics");
     statistics_.bind(world_, b.slice_begin, closest_, contact_, changed_, x_, y_, t_, vx_, vy_, vt_, slice_gap_,
                      slice_overlap_, slice_outside_, slice_bad_);
@@ -481,9 +491,8 @@ class DeviceBackend final : public OpenclBackend {
     };
     grow(w.overlap_start, overlap_start_capacity_, overlap_grid_.cell_start, "overlap_cell_start");
     grow(w.overlap_elements, overlap_elements_capacity_, overlap_grid_.elements, "overlap_elements");
-    const OverlapGridInfo info{overlap_grid_.nx,  overlap_grid_.ny,   overlap_grid_.nt,
-                               overlap_grid_.x0,  overlap_grid_.y0,   overlap_grid_.t0,
-                               overlap_grid_.cell, overlap_grid_.cell_t};
+    const OverlapGridInfo info{overlap_grid_.nx, overlap_grid_.ny, overlap_grid_.nt,   overlap_grid_.x0,
+                               overlap_grid_.y0, overlap_grid_.t0, overlap_grid_.cell, overlap_grid_.cell_t};
     repulsion_force_.set(overlap_grid_arg_, info);
     repulsion_force_.set(overlap_grid_arg_ + 1, w.overlap_start);
     repulsion_force_.set(overlap_grid_arg_ + 2, w.overlap_elements);
@@ -510,15 +519,16 @@ class DeviceBackend final : public OpenclBackend {
   std::size_t spring_count_ = 0;
   cl::Context context_;
   cl::CommandQueue queue_;
-  TopologyBuffers topo_buf_;   ///< held here: clSetKernelArg does not retain a buffer
+  TopologyBuffers topo_buf_;  ///< held here: clSetKernelArg does not retain a buffer
   ScratchBuffers scratch_;
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer boundary_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
-  Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_, grid_scatter_,
-      grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_force_, slice_centroids_, forces_,
-      integrate_, constraints_, loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
+  Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
+      grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_force_,
+      slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_, propose_growth_, grow_,
+      rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
   reference::SliceBoxes boxes_;

@@ -71,8 +71,7 @@ DeviceValidation validate_device(const Topology& topology, const SimState& initi
   choice.reference = false;
   choice.explicit_request = true;
   choice.device = info;
-  const std::unique_ptr<OpenclBackend> device =
-      make_opencl_backend(topology, initial, params, choice, sort);
+  const std::unique_ptr<OpenclBackend> device = make_opencl_backend(topology, initial, params, choice, sort);
   const std::unique_ptr<Backend> ref = make_reference_backend(topology, initial, params);
   // evaluate_forces rebuilds the device's grid; between two scheduled rebuilds that would hand the device's
   // next step a fresher grid than the reference's. So forces are compared where both sides rebuild

@@ -17,16 +17,16 @@ void ForceField::assign(std::size_t n) {
   t.assign(n, 0.0f);
 }
 
-StepForces step_forces(const Topology& topo, const SimState& state, const Params& params,
-                       const CollisionGrid& grid, ForceBreakdown* out) {
+StepForces step_forces(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
+                       ForceBreakdown* out) {
   const std::int32_t n = topo.vertex_count();
   StepForces r;
   r.total.assign(n);
   r.closest.assign(n, std::numeric_limits<float>::infinity());
   r.contact.assign(n, 0);
   if (out != nullptr) {
-    for (ForceField* f : {&out->repulsion, &out->springs, &out->target, &out->boundary, &out->overlap,
-                          &out->torsion, &out->temporal})
+    for (ForceField* f :
+         {&out->repulsion, &out->springs, &out->target, &out->boundary, &out->overlap, &out->torsion, &out->temporal})
       f->assign(n);
   }
 

@@ -55,7 +55,8 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
 
 void fill_slot_elements(const Topology& topo, CollisionGrid& g) {
   g.slot_element.resize(g.sorted_triangles.size());
-  for (std::size_t k = 0; k < g.sorted_triangles.size(); ++k) g.slot_element[k] = topo.env_element[g.sorted_triangles[k]];
+  for (std::size_t k = 0; k < g.sorted_triangles.size(); ++k)
+    g.slot_element[k] = topo.env_element[g.sorted_triangles[k]];
 }
 
 void build_far_runs(CollisionGrid& g) {
@@ -124,24 +125,22 @@ void slots_to_triangles(const CollisionGrid& grid, std::vector<std::int32_t>& sl
 
 }  // namespace
 
-void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
+void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
+                          std::vector<std::int32_t>& out) {
   collect(grid, q, own_element, 1, 0, out);
 }
 
-void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-                    std::vector<std::int32_t>& out) {
+void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
   repulsion_near_slots(grid, q, own_element, out);
   slots_to_triangles(grid, out);
 }
 
-void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-                   std::vector<std::int32_t>& out) {
+void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
   collect(grid, q, own_element, 2, 2, out);
   slots_to_triangles(grid, out);
 }
 
-void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-               std::vector<std::int32_t>& out) {
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
   out.clear();
   for_block_cells(grid, q, 2, 2, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {

@@ -8,11 +8,12 @@
 
 namespace animpak::reference {
 
-void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
-                    bool growing, const SimState& state, std::vector<float>& proposed) {
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params, bool growing,
+                    const SimState& state, std::vector<float>& proposed) {
   const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
-  const float shrink = static_cast<float>((growing ? params.growth.shrink_rate : params.growth.settle_shrink_rate) * params.forces.dt);
+  const float shrink =
+      static_cast<float>((growing ? params.growth.shrink_rate : params.growth.settle_shrink_rate) * params.forces.dt);
   const float cap = static_cast<float>(params.growth.max_growth);
   const std::int32_t slices = topo.slice_count();
   proposed.assign(slices, 0.0f);

@@ -154,8 +154,8 @@ void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex
   // The cells the query's box meets, at pt's cell in t: a pair whose box passes the box test around pt
   // is listed in one of them (the cell of a point in both boxes; the cell of a coordinate never
   // decreases as the coordinate grows, and clamping keeps that).
-  bool every = grid.nx == 0 || std::isnan(ex0) || std::isnan(ex1) || std::isnan(ey0) || std::isnan(ey1) ||
-               std::isnan(pt);
+  bool every =
+      grid.nx == 0 || std::isnan(ex0) || std::isnan(ex1) || std::isnan(ey0) || std::isnan(ey1) || std::isnan(pt);
   std::int32_t begin[4], end[4], lists = 0;
   if (!every) {
     const std::int32_t ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx),
@@ -193,8 +193,8 @@ namespace {
 
 // Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
 // slices whose first vertices are lo and hi.
-void overlap_edge(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t i, std::int32_t edges,
-                  float w, float& ax, float& ay, float& bx, float& by) {
+void overlap_edge(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t i, std::int32_t edges, float w,
+                  float& ax, float& ay, float& bx, float& by) {
   const std::int32_t j = i + 1 == edges ? 0 : i + 1;
   ax = state.x[lo + i] + (state.x[hi + i] - state.x[lo + i]) * w;
   ay = state.y[lo + i] + (state.y[hi + i] - state.y[lo + i]) * w;
@@ -340,9 +340,9 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   const std::int32_t per_slice = topo.slice_begin[own_slice + 1] - own_lo;
   const float own_g = state.growth[own_slice];
   float depth2 = 0.0f;
-  overlap_fold(overlap_point(topo, state, boxes, grid, own, own_g, own_index, state.x[v], state.y[v], state.t[v], state.x[next],
-                     state.y[next]),
-       state.x[v], state.y[v], r, depth2);
+  overlap_fold(overlap_point(topo, state, boxes, grid, own, own_g, own_index, state.x[v], state.y[v], state.t[v],
+                             state.x[next], state.y[next]),
+               state.x[v], state.y[v], r, depth2);
   // Between slices (the paper's §6 and §8: overlaps can hide there): interval_points evenly spaced
   // times inside each slice interval, at fractions j / (interval_points + 1) of it. v tests those of the
   // two intervals next to it that lie in the half nearer to v (the middle from both ends), the point and
@@ -359,9 +359,9 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
       const float mt = state.t[v] + (state.t[w] - state.t[v]) * f;
       const float nx = state.x[next] + (state.x[wn] - state.x[next]) * f;
       const float ny = state.y[next] + (state.y[wn] - state.y[next]) * f;
-      overlap_fold(overlap_point(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx,
-                         ny),
-           mx, my, r, depth2);
+      overlap_fold(
+          overlap_point(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny),
+          mx, my, r, depth2);
     }
   }
   return r;

@@ -29,9 +29,8 @@ void add_term(float ux, float uy, float ut, float eps, Vec3f& sum, float count =
 }  // namespace
 
 RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
-                                const CollisionGrid& grid, std::int32_t v,
-                                const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far,
-                                bool overlapping) {
+                                const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
+                                const std::vector<std::int32_t>& far, bool overlapping) {
   RepulsionResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const Vec3f x{state.x[v], state.y[v], state.t[v]};
@@ -41,9 +40,9 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
   for (const std::int32_t k : near) {
     const std::int32_t tri = grid.sorted_triangles[k];
     const std::int32_t a = topo.env_a[tri], b = topo.env_b[tri], c = topo.env_c[tri];
-    const Vec3f p = closest_point_on_triangle(x, {state.x[a], state.y[a], state.t[a]},
-                                              {state.x[b], state.y[b], state.t[b]},
-                                              {state.x[c], state.y[c], state.t[c]});
+    const Vec3f p =
+        closest_point_on_triangle(x, {state.x[a], state.y[a], state.t[a]}, {state.x[b], state.y[b], state.t[b]},
+                                  {state.x[c], state.y[c], state.t[c]});
     const float ux = x.x - p.x, uy = x.y - p.y, ut = x.t - p.t;
     const float d2 = ux * ux + uy * uy + ut * ut;
     if (d2 < closest2) closest2 = d2;

@@ -9,11 +9,16 @@ namespace animpak::reference {
 
 float spring_stiffness(const Params& params, SpringClass c) {
   switch (c) {
-    case SpringClass::edge: return static_cast<float>(params.forces.k_edge);
-    case SpringClass::shear: return static_cast<float>(params.forces.k_shear);
-    case SpringClass::negative_space: return static_cast<float>(params.forces.k_negative_space);
-    case SpringClass::time: return static_cast<float>(params.forces.k_time);
-    case SpringClass::target: return static_cast<float>(params.forces.k_target);
+    case SpringClass::edge:
+      return static_cast<float>(params.forces.k_edge);
+    case SpringClass::shear:
+      return static_cast<float>(params.forces.k_shear);
+    case SpringClass::negative_space:
+      return static_cast<float>(params.forces.k_negative_space);
+    case SpringClass::time:
+      return static_cast<float>(params.forces.k_time);
+    case SpringClass::target:
+      return static_cast<float>(params.forces.k_target);
   }
   return 0.0f;
 }
@@ -31,8 +36,8 @@ Vec3f spring_force(const Topology& topo, const SimState& state, const Params& pa
     const float inv_len = 1.0f / len;
     const float stretch = len - state.spring_rest[k];
     const float s = stretch > 0.0f ? 1.0f : (stretch < 0.0f ? -1.0f : 0.0f);
-    const float w = spring_stiffness(params, static_cast<SpringClass>(topo.spring_class[k])) * inv_len * s *
-                    (stretch * stretch);
+    const float w =
+        spring_stiffness(params, static_cast<SpringClass>(topo.spring_class[k])) * inv_len * s * (stretch * stretch);
     sum.x = sum.x + ux * w;
     sum.y = sum.y + uy * w;
     sum.t = sum.t + ut * w;
