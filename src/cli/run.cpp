@@ -178,6 +178,8 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
       "that differs from the reference, 130 pack interrupted by Ctrl-C (state.bin holds the state so far; "
       "pack --resume DIR continues it).");
 
+  // Every option's default in --help; subcommands copy this from the app when they are added.
+  app.option_defaults()->always_capture_default();
   CommandLine cl;
   add_pack_command(app, cl);
   add_devices_and_validate_commands(app, cl);

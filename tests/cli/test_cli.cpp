@@ -24,6 +24,16 @@ TEST_CASE("animpak: --help for the program and every command exits 0 and describ
 }
 
 // That docs/ holds exactly this output is the `docs:` tests' job (tests/docs/generated_docs.py).
+TEST_CASE("animpak: --help shows every option's default, in the shared commands and the frontend's alike") {
+  const std::string render = run_animpak("render --help").out;
+  CHECK(render.find("--frames INT:INT in [1 - 100000]=100") != std::string::npos);
+  CHECK(render.find("--background TEXT=white") != std::string::npos);
+  const std::string pack = run_animpak("pack --help").out;
+  CHECK(pack.find("--grid-sort TEXT:{auto,host,device}=auto") != std::string::npos);
+  const std::string bench = run_animpak("bench --help").out;
+  CHECK(bench.find("--steps INT:INT in [1 - 100000]=") != std::string::npos);
+}
+
 TEST_CASE("animpak params and schema: the constants and the scene format, from the code's tables") {
   const CommandResult text = run_animpak("params");
   REQUIRE(text.code == 0);
