@@ -169,12 +169,15 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     if (std::filesystem::exists(out / "state.bin") && !options.force)
       throw UsageError(out.string() + " already holds a packing (" + (out / "state.bin").string() +
                        "); pass --force to overwrite it, or --resume " + out.string() + " to continue it");
+    check_inputs_writable(out);
     checkpoint.scene_file = std::filesystem::absolute(options.scene);
     const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
     checkpoint.scene_text = read_whole(checkpoint.scene_file);
     checkpoint.seed = options.seed.value_or(scene.seed);
     inputs = snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text);
   }
+  // Rendered files are this run's to replace only where a packing was: a fresh --out may hold the user's own.
+  const bool replaces_packing = std::filesystem::exists(out / "state.bin");
   std::filesystem::create_directories(out);
   const PackedScene scene =
       options.resume ? packed_scene(out, checkpoint) : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
@@ -213,7 +216,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   world.state = result.last_good;
   if (inputs) write_inputs(out, *inputs);
   // Frames of an earlier state must not stay beside this one, not even while the render below runs.
-  remove_rendered(out);
+  if (replaces_packing) remove_rendered(out);
 
   PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds, backend->name(), driver};
   if (result.reason == StopReason::non_finite) {
@@ -245,8 +248,12 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     if (options.max_iterations) command += " --max-iterations " + std::to_string(*options.max_iterations);
     std::cerr << "animpak: interrupted; continue with: " << command << "\n";
   }
-  if (render_frames && result.reason != StopReason::interrupted) report.quality = render_frames(world, out);
+  // stats.json first, so that a render that fails (ffmpeg, a full disk) leaves this run's, not the last one's.
   write_stats(out / "stats.json", report);
+  if (render_frames && result.reason != StopReason::interrupted) {
+    report.quality = render_frames(world, out);
+    write_stats(out / "stats.json", report);
+  }
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);
   return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
 }

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <regex>
@@ -59,9 +60,15 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
   try {
     if (j.is_discarded() || j.at("format_version").get<int>() > kManifestVersion) throw std::exception();
     m.scene_sha256 = j.at("scene").at("sha256").get<std::string>();
-    for (const nlohmann::json& a : j.at("art"))
-      m.art.push_back({a.at("reference").get<std::string>(),
-                       {dir / "input" / a.at("file").get<std::string>(), a.at("sha256").get<std::string>()}});
+    for (const nlohmann::json& a : j.at("art")) {
+      // A copied folder is untrusted: its manifest may only name files inside input/art/.
+      const fs::path file = fs::path(a.at("file").get<std::string>()).lexically_normal();
+      if (file.is_absolute() || file.empty() || *file.begin() != "art" ||
+          std::any_of(file.begin(), file.end(), [](const fs::path& part) { return part == ".."; }))
+        throw std::exception();
+      m.art.push_back(
+          {a.at("reference").get<std::string>(), {dir / "input" / file, a.at("sha256").get<std::string>()}});
+    }
   } catch (const std::exception&) {
     throw InputError(m.file.string() +
                      ": not a manifest this animpak reads; restore the folder, or pass --scene "
@@ -88,12 +95,17 @@ InputSnapshot snapshot_inputs(const fs::path& file, const std::string& text) {
   return s;
 }
 
-void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
+void check_inputs_writable(const fs::path& dir) {
   const fs::path input = dir / "input";
   if (fs::exists(input) && !fs::exists(input / "manifest.json"))
     throw InputError(input.string() +
                      ": a folder animpak did not write is in the way of the scene's copy; "
-                     "move it elsewhere and pack again");
+                     "move it elsewhere or pack into another --out");
+}
+
+void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
+  check_inputs_writable(dir);
+  const fs::path input = dir / "input";
   fs::remove_all(input);
   const std::string scene_name = snapshot.scene_file.filename().string();
   write_bytes(input / scene_name, snapshot.scene_text);

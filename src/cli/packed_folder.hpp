@@ -28,6 +28,10 @@ struct InputSnapshot {
 /// Parses `text` (the scene at `file`) and reads every art file it references.
 InputSnapshot snapshot_inputs(const std::filesystem::path& file, const std::string& text);
 
+/// InputError when DIR/input exists but animpak did not write it (no manifest): checked before a pack
+/// starts, so that the folder in the way costs no packing.
+void check_inputs_writable(const std::filesystem::path& dir);
+
 /// Replaces DIR/input/ with the snapshot: the scene, its art under art/, and manifest.json.
 void write_inputs(const std::filesystem::path& dir, const InputSnapshot& snapshot);
 

@@ -40,11 +40,10 @@ ContainerDrawing parse_container(const FrameOptions& options) {
   return options.container == "fill" ? ContainerDrawing::fill : ContainerDrawing::outline;
 }
 
-/// Writes the frames in the requested formats into a scratch folder, swaps them in for every rendered file
-/// already in `dir` and returns their quality.
-PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
+/// The frame options as the writers take them (the folder left empty); UsageError for a bad background or
+/// one MP4 cannot carry. Called before a pack's simulation too, so that such a slip costs no packing.
+FrameOutput frame_output(const FrameOptions& options) {
   FrameOutput out;
-  out.dir = render_scratch(dir);
   out.count = options.frames;
   out.fps = options.fps;
   out.style.size = options.size;
@@ -58,6 +57,14 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
     throw UsageError("--background " + options.background +
                      ": MP4 (H.264) has no transparency; give the MP4 a "
                      "colour (--background white or #rrggbb) or leave mp4 out of --format");
+  return out;
+}
+
+/// Writes the frames in the requested formats into a scratch folder, swaps them in for every rendered file
+/// already in `dir` and returns their quality.
+PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
+  FrameOutput out = frame_output(options);
+  out.dir = render_scratch(dir);
   PackingQuality quality = write_frames(world, world.state, out);
   install_rendered(out.dir, dir);
   for (FrameFormat f : out.formats) {
@@ -150,6 +157,7 @@ class RenderingFrontend final : public Frontend {
 
   FrameRenderer frame_renderer() const override {
     if (!pack_render_) return {};
+    frame_output(pack_frames_);  // a bad option fails now, not after the packing
     return [frames = pack_frames_](const World& world, const std::filesystem::path& dir) {
       return render_frames(world, dir, frames);
     };

@@ -91,7 +91,8 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
     LibraryElementSpec e;
     e.art = resolve_art(item.required("art"), base_dir, locate);
     const std::optional<JsonField> name = item.optional("name");
-    e.name = name ? name->non_empty_string() : e.art.stem().string();
+    // The stem of the art as the scene writes it: a packed folder's copy may be stored under another name.
+    e.name = name ? name->non_empty_string() : fs::path(item.required("art").non_empty_string()).stem().string();
     for (std::size_t j = 0; j < elements.size(); ++j)
       if (elements[j].name == e.name)
         (name ? *name : item)

@@ -194,3 +194,54 @@ TEST_CASE("install_rendered: an interrupted render leaves the one before whole, 
 }
 
 TEST_CASE("animpak --help: lists exit code 130") { CHECK_THAT(run_animpak("--help").out, Contains("130")); }
+
+TEST_CASE("animpak pack: slips in the frame options or an input/ in the way fail before any packing") {
+  const ArtBox box("early");
+  const std::string out = box.path("out");
+  const CommandResult colour =
+      run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --background red");
+  CHECK(colour.code == 1);
+  CHECK_THAT(colour.err, Contains("--background"));
+  const CommandResult mp4 = run_animpak("pack " + box.scene() + " --out " + out +
+                                        " --device reference --max-iterations 10 --background none --format mp4");
+  CHECK(mp4.code == 1);
+  CHECK_THAT(mp4.err, Contains("MP4"));
+  CHECK_FALSE(fs::exists(out + "/state.bin"));
+  fs::create_directories(out + "/input");
+  std::ofstream(out + "/input/mine.svg") << "<svg/>";
+  const CommandResult in_the_way =
+      run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render");
+  CHECK(in_the_way.code == 2);
+  CHECK_THAT(in_the_way.err, Contains(out + "/input"));
+  CHECK_FALSE(fs::exists(out + "/state.bin"));
+  CHECK(file_bytes(out + "/input/mine.svg") == "<svg/>");
+}
+
+TEST_CASE("animpak pack: a fresh --out keeps the user's own files of rendered names, and stats.json is this run's") {
+  const ArtBox box("fresh");
+  const std::string out = box.path("out");
+  fs::create_directories(out + "/frames");
+  std::ofstream(out + "/animation.gif") << "mine";
+  std::ofstream(out + "/frames/frame_0000.png") << "mine";
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render")
+              .code == 0);
+  CHECK(file_bytes(out + "/animation.gif") == "mine");
+  CHECK(file_bytes(out + "/frames/frame_0000.png") == "mine");
+  CHECK(nlohmann::json::parse(file_bytes(out + "/stats.json"))["iterations"] == 10);
+}
+
+TEST_CASE("animpak render: a manifest naming a file outside input/art is refused, not read") {
+  const ArtBox box("manifest");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --device reference --max-iterations 10 --no-render")
+              .code == 0);
+  const fs::path manifest_file = out + "/input/manifest.json";
+  for (const std::string& outside : {std::string("../../scenes/star.svg"), box.path("scenes/star.svg")}) {
+    nlohmann::json manifest = nlohmann::json::parse(file_bytes(manifest_file));
+    for (nlohmann::json& a : manifest["art"]) a["file"] = outside;
+    std::ofstream(manifest_file) << manifest.dump(2);
+    const CommandResult r = run_animpak("render " + out + " --frames 1 --size 16 --format png");
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains("not a manifest this animpak reads"));
+  }
+}

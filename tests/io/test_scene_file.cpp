@@ -115,6 +115,20 @@ TEST_CASE("parse_scene: a full scene fills every field") {
   CHECK(s.params.forces.k_shear == Params{}.forces.k_shear);
 }
 
+TEST_CASE("parse_scene: an unnamed element is named by its art as the scene writes it, wherever a locator reads it") {
+  // A packed folder stores a second art file of the same name as art/2-bird.path; the element stays "bird".
+  const animpak::test::TempDir temp("animpak-locator-");
+  const ArtLocator renamed = [&](const std::string&, const std::filesystem::path& resolved) {
+    const std::filesystem::path copy = temp / "2-bird.path";
+    std::filesystem::copy_file(resolved, copy, std::filesystem::copy_options::overwrite_existing);
+    return copy;
+  };
+  const SceneSpec s = parse_scene(scene(kBird), "scene.json", kShapes, renamed);
+  REQUIRE(s.elements.size() == 1);
+  CHECK(s.elements[0].art.filename() == "2-bird.path");
+  CHECK(s.elements[0].name == "bird");
+}
+
 TEST_CASE("parse_scene: a minimal scene takes every default") {
   const SceneSpec s = parse_scene_text(scene(kBird));
   REQUIRE(s.elements.size() == 1);
