@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -282,6 +283,10 @@ struct FrameOutput {
   FrameStyle style;
   int precision = 2;  ///< decimals of a pixel (of a `style.size` picture) kept in Lottie and animated SVG coordinates
   Interpolation interpolation = Interpolation::linear;
+  /// Called as the render goes: `stage` is "frame" once per frame (done = frames written so far, total =
+  /// count), then the name of each file or measure as it starts ("animation.json", "between slices",
+  /// "animation.gif", ...; done 0, total 1). Empty: no calls.
+  std::function<void(const std::string& stage, int done, int total)> on_progress;
 };
 
 /// The file name of an animated format (animation.json, animation.lottie, animation.svg), empty for the

@@ -73,6 +73,11 @@ struct World {
 /// every element is inside the container. InputError names the elements (and slice) at fault.
 World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library);
 
+/// The share of the container the elements' meshes fill at g = 1: each element's rest copy slice area
+/// (its triangles, the mean over its slices) summed over the elements, over the container's area. The
+/// meshes fill the container to about 0.6 at a packing's stop (docs/cli.md, "Progress and the time left").
+double unit_mesh_density(const World& world);
+
 /// The seed of library element `index`'s slice sampling: independent per element, so adding an
 /// element does not change the others.
 std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index);

@@ -12,8 +12,10 @@
 #include "animpak/checkpoint.hpp"
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
+#include "animpak/progress.hpp"
 #include "animpak/run.hpp"
 #include "commands.hpp"
+#include "console.hpp"
 #include "pack_output.hpp"
 
 namespace animpak::cli {
@@ -22,67 +24,48 @@ namespace {
 std::atomic<bool> interrupted{false};
 extern "C" void on_sigint(int) { interrupted.store(true); }
 
-std::string clock_text(double seconds) {
-  char s[32];
-  const long t = static_cast<long>(seconds);
-  std::snprintf(s, sizeof s, "%02ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
-  return s;
-}
-
-// Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise. A resumed run
-// starts at the iteration and the clock where the runs before it stopped.
+// Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise, each within 80
+// columns (the element counts and g range under --verbose). The time left comes from StopModel, a model of
+// the stop test fitted to the run so far, and reads "estimating" until the model has enough of the run. A
+// resumed run starts at the iteration and the clock where the runs before it stopped, with their samples.
 class Progress {
  public:
-  Progress(std::uint64_t max_iterations, double stop_gap, std::uint64_t first_iteration, double previous_seconds)
+  Progress(const Params::Stop& stop, bool has_secondary, double unit_density, std::vector<ProgressSample> previous,
+           bool verbose)
       : tty_(::isatty(STDERR_FILENO)),
-        max_(max_iterations),
-        first_(first_iteration),
-        stop_gap_(stop_gap),
-        start_(now() - previous_seconds),
-        resumed_at_(previous_seconds) {}
+        verbose_(verbose),
+        model_(stop, has_secondary, unit_density),
+        start_(now() - (previous.empty() ? 0.0 : previous.back().seconds)) {
+    for (const ProgressSample& s : previous) model_.observe(s);
+  }
 
   void operator()(const StepStatistics& st) {
     const double elapsed = now() - start_;
-    if (!tty_ && elapsed - last_print_ < 5.0) return;
+    model_.observe({st.iteration, elapsed, st.mean_growth, st.growing_share, st.max_slice_gap, st.overlapping_vertices,
+                    st.outside_vertices});
+    if (elapsed - last_print_ < (tty_ ? 0.5 : 5.0)) return;
     last_print_ = elapsed;
-    // The estimate extrapolates this run's pace over the iterations left, and the largest gap's recent fall
-    // towards the stop gap: rough, but it moves the right way.
-    const double run_seconds = elapsed - resumed_at_;
-    double remaining = max_ > st.iteration && st.iteration > first_
-                           ? run_seconds * double(max_ - st.iteration) / double(st.iteration - first_)
-                           : 0;
-    if (previous_gap_ > st.max_slice_gap && std::isfinite(previous_gap_) && std::isfinite(st.max_slice_gap)) {
-      const double rate = (previous_gap_ - st.max_slice_gap) / std::max(elapsed - previous_time_, 1e-9);
-      remaining = std::min(remaining, std::max(0.0, (st.max_slice_gap - stop_gap_) / rate));
+    const std::optional<StopEstimate> estimate = model_.estimate();
+    const std::string line = pack_progress_text(st, elapsed, estimate, verbose_);
+    if (tty_) {
+      const double done = estimate ? elapsed / std::max(elapsed + estimate->seconds_left, 1e-9) : 0.0;
+      std::cerr << "\r" << progress_bar(done) << " " << line << "\033[K" << std::flush;
+    } else {
+      std::cerr << "animpak: " << line << "\n";
     }
-    previous_gap_ = st.max_slice_gap;
-    previous_time_ = elapsed;
-    const int width = 24;
-    const int filled = static_cast<int>(width * std::clamp(elapsed / std::max(elapsed + remaining, 1e-9), 0.0, 1.0));
-    std::ostringstream line;
-    line << "iter " << st.iteration << "  gap "
-         << (std::isfinite(st.max_slice_gap) ? std::to_string(st.max_slice_gap) : "inf") << "  growing "
-         << static_cast<int>(100 * st.growing_share) << "%  overlaps " << st.overlapping_vertices << "  outside "
-         << st.outside_vertices << "  g " << st.min_growth << ".." << st.max_growth << "  " << clock_text(elapsed)
-         << " (~" << clock_text(remaining) << " left)";
-    if (tty_)
-      std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << line.str()
-                << "\033[K" << std::flush;
-    else
-      std::cerr << "animpak: " << line.str() << "\n";
   }
   void finish() {
     if (tty_) std::cerr << "\n";
   }
+  const std::vector<ProgressSample>& samples() const { return model_.samples(); }
 
  private:
   static double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   }
-  bool tty_;
-  std::uint64_t max_, first_;
-  double stop_gap_, start_, resumed_at_, last_print_ = -1e9;
-  double previous_gap_ = std::numeric_limits<double>::infinity(), previous_time_ = 0;
+  bool tty_, verbose_;
+  StopModel model_;
+  double start_, last_print_ = -1e9;
 };
 
 // `path` as one word of a shell command line: quoted when it holds anything but plain path characters.
@@ -197,8 +180,12 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   std::string driver;
   std::unique_ptr<Backend> backend =
       make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
-  Progress progress(static_cast<std::uint64_t>(world.params.stop.max_iterations), world.params.stop.stop_gap,
-                    checkpoint.state.iteration, previous_seconds);
+  std::vector<ProgressSample> previous_samples =
+      options.resume ? read_progress(out / "stats.json") : std::vector<ProgressSample>{};
+  if (previous_samples.empty() && previous_seconds > 0)  // a stats.json from before the samples were kept
+    previous_samples.push_back({checkpoint.state.iteration, previous_seconds});
+  Progress progress(world.params.stop, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
+                    options.verbose);
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
   control.interrupt = &interrupted;
@@ -218,7 +205,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // Frames of an earlier state must not stay beside this one, not even while the render below runs.
   if (replaces_packing) remove_rendered(out);
 
-  PackReport report{world, result, backend->times(), checkpoint, {}, loaded.setup_seconds, backend->name(), driver};
+  PackReport report{world,           result, backend->times(),  checkpoint, {}, loaded.setup_seconds,
+                    backend->name(), driver, progress.samples()};
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;
@@ -230,7 +218,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
                              "; lower params.dt or the stiffnesses");
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
-            << ") in " << clock_text(result.seconds) << "; state in " << (out / "state.bin").string() << "\n";
+            << ") in " << clock_text(result.seconds) << "\n";
   if (world.topology.has_secondary()) {
     if (result.last_good.secondary_since != 0)
       std::cerr << "animpak: the secondary elements grew from iteration " << result.last_good.secondary_since
@@ -254,6 +242,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     report.quality = render_frames(world, out);
     write_stats(out / "stats.json", report);
   }
+  std::cerr << written_files(out, WrittenBy::pack);
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);
   return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
 }

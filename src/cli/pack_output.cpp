@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -170,6 +171,10 @@ std::string quality_lines(const PackingQuality& quality) {
          evenness_line(summarize_evenness(quality.frames)) + "\n";
 }
 
+// The columns of stats.json's "progress" rows, in ProgressSample's order.
+const std::vector<std::string> kProgressColumns = {
+    "iteration", "seconds", "mean_growth", "growing_share", "max_gap", "overlapping_vertices", "outside_vertices"};
+
 void write_stats(const std::filesystem::path& file, const PackReport& r) {
   using nlohmann::json;
   const World& w = r.world;
@@ -205,8 +210,34 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       {"seconds", seconds},
       {"final_growth", growth},
   };
+  json rows = json::array();
+  for (const ProgressSample& p : r.progress)
+    rows.push_back({p.iteration, p.seconds, p.mean_growth, p.growing_share,
+                    std::isfinite(p.max_gap) ? json(p.max_gap) : json(nullptr),  // no neighbour yet: JSON has no inf
+                    p.overlapping, p.outside});
+  stats["progress"] = {{"columns", kProgressColumns}, {"rows", rows}};
   set_quality(stats, w, r.quality);
   write_json(file, stats);
+}
+
+std::vector<ProgressSample> read_progress(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::vector<ProgressSample> out;
+  if (j.is_discarded() || !j.is_object() || !j.contains("progress") || !j["progress"].is_object()) return out;
+  const nlohmann::json& p = j["progress"];
+  if (!p.contains("columns") || p["columns"] != nlohmann::json(kProgressColumns) || !p.contains("rows") ||
+      !p["rows"].is_array())
+    return out;
+  for (const nlohmann::json& row : p["rows"]) {
+    if (!row.is_array() || row.size() != kProgressColumns.size()) return {};
+    for (std::size_t c = 0; c < row.size(); ++c)
+      if (!row[c].is_number() && !(c == 4 && row[c].is_null())) return {};
+    out.push_back({row[0].get<std::uint64_t>(), row[1].get<double>(), row[2].get<double>(), row[3].get<double>(),
+                   row[4].is_null() ? std::numeric_limits<double>::infinity() : row[4].get<double>(),
+                   row[5].get<std::int64_t>(), row[6].get<std::int64_t>()});
+  }
+  return out;
 }
 
 bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "animpak/checkpoint.hpp"
+#include "animpak/progress.hpp"
 #include "animpak/render.hpp"
 #include "animpak/run.hpp"
 #include "commands.hpp"
@@ -26,8 +27,9 @@ struct PackReport {
   const Checkpoint& checkpoint;
   PackingQuality quality;  ///< empty when no frames were rendered
   double setup_seconds = 0.0;
-  std::string device;  ///< the backend's name
-  std::string driver;  ///< the device's driver and platform version
+  std::string device;                           ///< the backend's name
+  std::string driver;                           ///< the device's driver and platform version
+  const std::vector<ProgressSample>& progress;  ///< every statistics check of the packing, resumes included
 };
 
 /// stats.json's `format_version` (docs/quality.md, "stats.json"): raised when a field is renamed, moved or
@@ -35,6 +37,10 @@ struct PackReport {
 inline constexpr int kStatsFormatVersion = 1;
 
 void write_stats(const std::filesystem::path& file, const PackReport& report);
+
+/// stats.json's "progress" rows (empty when the file or the rows are missing or malformed): the samples of
+/// the runs before a resume.
+std::vector<ProgressSample> read_progress(const std::filesystem::path& file);
 
 /// After `render`: replaces the frame metrics and quality summaries in `file` (stats.json) with those of
 /// the frames just rendered, keeping the rest of what `pack` wrote, or writes what the checkpoint knows

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "animpak/error.hpp"
+#include "console.hpp"
 #include "frontend.hpp"
 #include "pack_output.hpp"
 
@@ -65,15 +66,13 @@ FrameOutput frame_output(const FrameOptions& options) {
 PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
   FrameOutput out = frame_output(options);
   out.dir = render_scratch(dir);
+  RenderProgress progress;
+  out.on_progress = [&progress](const std::string& stage, int done, int total) { progress(stage, done, total); };
+  std::cerr << "animpak: rendering " << out.count << " frames at " << out.style.size << " px into " << dir.string()
+            << "\n";
   PackingQuality quality = write_frames(world, world.state, out);
+  progress.finish();
   install_rendered(out.dir, dir);
-  for (FrameFormat f : out.formats) {
-    const std::string name = animation_file_name(f);
-    if (name.empty()) continue;
-    char size[32];
-    std::snprintf(size, sizeof size, "%.1f KiB", std::filesystem::file_size(dir / name) / 1024.0);
-    std::cerr << "animpak: wrote " << (dir / name).string() << " (" << size << ", " << out.count << " frames)\n";
-  }
   return quality;
 }
 
@@ -195,8 +194,8 @@ int render(const RenderOptions& options) {
                  "one written)\n";
   if (options.contact_plot) {
     write_contact_plot(quality.frames, options.dir / "contact.png");
-    std::cerr << "animpak: wrote " << (options.dir / "contact.png").string() << "\n";
   }
+  std::cerr << written_files(options.dir, WrittenBy::render);
   std::cout << quality_lines(quality);
   return 0;
 }

@@ -39,6 +39,8 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_option("--resume", cl.pack.resume,
                           "continue the interrupted packing in this folder (with the scene and seed it started with)");
   cl.pack_cmd->add_flag("--force", cl.pack.force, "overwrite the packing already in --out DIR");
+  cl.pack_cmd->add_flag("--verbose", cl.pack.verbose,
+                        "progress with the overlapping and outside vertex counts and the range of g");
   cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");
   cl.pack_cmd->add_option("--max-iterations", cl.pack.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));

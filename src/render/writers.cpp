@@ -225,18 +225,27 @@ void write_gif(const std::string& input, const FrameOutput& out) {
              gif);
 }
 
+void report(const FrameOutput& out, const std::string& stage, int done = 0, int total = 1) {
+  if (out.on_progress) out.on_progress(stage, done, total);
+}
+
 void write_animations(const World& world, const SimState& state, const FrameOutput& out,
                       const std::vector<std::string>& ids, const std::function<bool(FrameFormat)>& wants) {
   if (wants(FrameFormat::lottie)) {
+    report(out, animation_file_name(FrameFormat::lottie));
     const auto file = out.dir / animation_file_name(FrameFormat::lottie);
     std::ofstream json(file);
     if (!json) throw InputError(file.string() + ": cannot write; check that the folder is writable");
     frame_writers::write_lottie(world, state, out, ids, json, file);
   }
-  if (wants(FrameFormat::dotlottie))
+  if (wants(FrameFormat::dotlottie)) {
+    report(out, animation_file_name(FrameFormat::dotlottie));
     frame_writers::write_dotlottie(world, state, out, ids, out.dir / animation_file_name(FrameFormat::dotlottie));
-  if (wants(FrameFormat::svg_anim))
+  }
+  if (wants(FrameFormat::svg_anim)) {
+    report(out, animation_file_name(FrameFormat::svg_anim));
     frame_writers::write_svg_animation(world, state, out, ids, out.dir / animation_file_name(FrameFormat::svg_anim));
+  }
 }
 
 }  // namespace
@@ -256,15 +265,21 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
     if (raster) draw_frame(world, art, out.style).write(frames / frame_name(i, "png"));
     if (wants(FrameFormat::svg)) write_svg(world, art, out.style, ids, frames / frame_name(i, "svg"));
     quality.frames.push_back(measure_frame(world, art, times[i]));
+    report(out, "frame", i + 1, out.count);
   }
   write_animations(world, state, out, ids, wants);
+  report(out, "between slices");
   for (double t : between_slice_times(world.params.element.slices))
     quality.between_slices.push_back(measure_frame(world, state, t, Measures::no_evenness));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");
-  if (wants(FrameFormat::gif)) write_gif(input, out);
+  if (wants(FrameFormat::gif)) {
+    report(out, "animation.gif");
+    write_gif(input, out);
+  }
   if (wants(FrameFormat::mp4)) {
+    report(out, "animation.mp4");
     const auto mp4 = out.dir / "animation.mp4";
     run_ffmpeg(
         input + " -vf \"pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white\" -c:v libx264 -pix_fmt yuv420p " + quoted(mp4), mp4);

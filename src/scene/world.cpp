@@ -219,3 +219,29 @@ World make_world(const SceneSpec& scene) {
 }
 
 }  // namespace animpak
+
+namespace animpak {
+
+double unit_mesh_density(const World& world) {
+  const double container = world.container.area();
+  if (!(container > 0)) return 0.0;
+  double sum = 0.0;
+  for (const ElementInstance& e : world.elements) {
+    const SpacetimeElement& lib = world.library[e.library];
+    const int per_slice = lib.vertices_per_slice();
+    double area = 0.0;
+    for (int s = 0; s < lib.slice_count; ++s)
+      for (const Triangle& t : lib.slice.triangles) {
+        const auto at = [&](int v) {
+          const int id = e.vertex_begin + s * per_slice + v;
+          return Vec2{world.topology.rest_copy_x[id], world.topology.rest_copy_y[id]};
+        };
+        const Vec2 a = at(t[0]), b = at(t[1]), c = at(t[2]);
+        area += 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+      }
+    if (lib.slice_count > 0) sum += area / lib.slice_count;
+  }
+  return sum / container;
+}
+
+}  // namespace animpak

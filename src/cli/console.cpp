@@ -1,0 +1,154 @@
+#include "console.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+namespace animpak::cli {
+namespace fs = std::filesystem;
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+std::uintmax_t size_of_tree(const fs::path& dir, int& files) {
+  std::uintmax_t total = 0;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir, ec))
+    if (e.is_regular_file(ec)) total += e.file_size(ec), ++files;
+  return total;
+}
+
+}  // namespace
+
+std::string clock_text(double seconds) {
+  char s[32];
+  const long t = static_cast<long>(seconds);
+  std::snprintf(s, sizeof s, "%02ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  return s;
+}
+
+std::string size_text(std::uintmax_t bytes) {
+  char s[32];
+  if (bytes < 1024) {
+    std::snprintf(s, sizeof s, "%ju B", bytes);
+    return s;
+  }
+  const char* units[] = {"KiB", "MiB", "GiB", "TiB"};
+  double v = double(bytes) / 1024;
+  int u = 0;
+  while (v >= 1024 && u < 3) v /= 1024, ++u;
+  std::snprintf(s, sizeof s, "%.1f %s", v, units[u]);
+  return s;
+}
+
+std::string pack_progress_text(const StepStatistics& st, double elapsed, const std::optional<StopEstimate>& estimate,
+                               bool verbose) {
+  char gap[16];
+  std::snprintf(gap, sizeof gap, std::isfinite(st.max_slice_gap) ? "%.4f" : "inf", st.max_slice_gap);
+  std::ostringstream line;
+  line << "iter " << st.iteration << "  gap " << gap << "  growing " << static_cast<int>(100 * st.growing_share)
+       << "%  " << clock_text(elapsed) << "  "
+       << (estimate ? "~" + clock_text(estimate->seconds_left) + " left" + (estimate->secondary_pending ? "+" : "")
+                    : std::string("estimating"));
+  if (verbose)
+    line << "  overlaps " << st.overlapping_vertices << "  outside " << st.outside_vertices << "  g " << st.min_growth
+         << ".." << st.max_growth;
+  return line.str();
+}
+
+std::string progress_bar(double done) {
+  const int width = 8;
+  const int filled = static_cast<int>(width * std::clamp(done, 0.0, 1.0));
+  return "[" + std::string(filled, '#') + std::string(width - filled, '.') + "]";
+}
+
+std::string render_progress_text(const std::string& stage, int done, int total, double elapsed) {
+  std::ostringstream line;
+  if (stage == "frame") {
+    line << "render: frame " << done << "/" << total << "  " << clock_text(elapsed);
+    if (done > 0 && done < total) line << "  ~" << clock_text(elapsed * double(total - done) / done) << " left";
+  } else {
+    line << "render: " << (stage == "between slices" ? "measuring between slices" : "writing " + stage) << "  "
+         << clock_text(elapsed);
+  }
+  return line.str();
+}
+
+RenderProgress::RenderProgress() : tty_(::isatty(STDERR_FILENO)), start_(now()) {}
+
+void RenderProgress::operator()(const std::string& stage, int done, int total) {
+  const double elapsed = now() - start_;
+  const bool new_stage = stage != last_stage_;
+  last_stage_ = stage;
+  if (tty_ ? elapsed - last_print_ < 0.2 && !new_stage && done != total
+           : elapsed - last_print_ < 5.0 && !(new_stage && stage != "frame"))
+    return;
+  last_print_ = elapsed;
+  const std::string text = render_progress_text(stage, done, total, elapsed);
+  if (tty_) {
+    std::cerr << "\ranimpak: " << text << "\033[K" << std::flush;
+    drawn_ = true;
+  } else {
+    std::cerr << "animpak: " << text << "\n";
+  }
+}
+
+void RenderProgress::finish() {
+  if (drawn_) std::cerr << "\r\033[K" << std::flush;
+  drawn_ = false;
+}
+
+std::string written_files(const fs::path& dir, WrittenBy by) {
+  struct Row {
+    std::string name, what;
+  };
+  std::vector<Row> rows;
+  std::error_code ec;
+  auto file = [&](const std::string& name) {
+    if (fs::is_regular_file(dir / name, ec)) rows.push_back({name, size_text(fs::file_size(dir / name, ec))});
+  };
+  if (by == WrittenBy::pack) {
+    file("state.bin");
+    if (fs::is_directory(dir / "input", ec)) {
+      int n = 0;
+      const std::uintmax_t bytes = size_of_tree(dir / "input", n);
+      rows.push_back({"input/", std::to_string(n) + " files, " + size_text(bytes)});
+    }
+  }
+  file("stats.json");
+  if (fs::is_directory(dir / "frames", ec)) {
+    int png = 0, svg = 0;
+    std::uintmax_t bytes = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "frames", ec)) {
+      if (!e.is_regular_file(ec)) continue;
+      const std::string ext = e.path().extension().string();
+      if (ext != ".png" && ext != ".svg") continue;
+      (ext == ".png" ? png : svg) += 1;
+      bytes += e.file_size(ec);
+    }
+    std::string what;
+    if (png) what += std::to_string(png) + " PNG";
+    if (svg) what += std::string(what.empty() ? "" : " and ") + std::to_string(svg) + " SVG";
+    if (png + svg) rows.push_back({"frames/", what + " frames, " + size_text(bytes)});
+  }
+  for (const char* name : {"animation.gif", "animation.mp4", "animation.json", "animation.lottie", "animation.svg",
+                           "contact.png"})
+    file(name);
+  std::ostringstream out;
+  out << "animpak: files in " << dir.string() << ":\n";
+  for (const Row& r : rows) {
+    std::string name = r.name;
+    name.resize(std::max<std::size_t>(name.size(), 18), ' ');
+    out << "  " << name << r.what << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace animpak::cli

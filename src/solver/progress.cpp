@@ -1,0 +1,135 @@
+#include "animpak/progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace animpak {
+namespace {
+
+// The model's constants (docs/cli.md, "Progress and the time left"), each read off the recorded traces of
+// the examples (tests/solver/traces):
+// - the share of the container the meshes fill when growth stops: 0.58 (default example), 0.67 (clip art);
+constexpr double kDensityAtStop = 0.62;
+// - while this share of the slices or more still grow, growth is free and the fits see no end yet;
+constexpr double kFreeGrowingShare = 0.8;
+// - the settling after growth stops, as a share of the steps before: 4.7 % and 2.5 %;
+constexpr double kSettleShare = 0.04;
+// - a stall window's rise, relative to the one before, never taken closer to 1 than this (a rise that
+//   decays no faster would never stall); 0.5 when the windows do not tell.
+constexpr double kMaxWindowDecay = 0.95, kDefaultWindowDecay = 0.5;
+
+struct Line {
+  double a = 0, b = 0;
+};
+
+std::optional<Line> fit_line(const std::vector<double>& xs, const std::vector<double>& ys) {
+  const std::size_t n = xs.size();
+  if (n < 4) return std::nullopt;
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < n; ++i) mx += xs[i], my += ys[i];
+  mx /= double(n), my /= double(n);
+  double sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < n; ++i) sxx += (xs[i] - mx) * (xs[i] - mx), sxy += (xs[i] - mx) * (ys[i] - my);
+  if (!(sxx > 0)) return std::nullopt;
+  const Line l{my - sxy / sxx * mx, sxy / sxx};
+  if (!std::isfinite(l.a) || !std::isfinite(l.b)) return std::nullopt;
+  return l;
+}
+
+// The first sample at most `steps` steps before the last.
+std::size_t samples_back(const std::vector<ProgressSample>& s, std::uint64_t steps) {
+  std::size_t k = s.size() - 1;
+  while (k > 0 && s.back().iteration - s[k - 1].iteration <= steps) --k;
+  return k;
+}
+
+}  // namespace
+
+void StopModel::observe(const ProgressSample& sample) { samples_.push_back(sample); }
+
+std::optional<StopEstimate> StopModel::estimate() const {
+  if (samples_.size() < 8 || stop_.stall_window <= 0) return std::nullopt;
+  const ProgressSample& last = samples_.back();
+  const auto window = static_cast<std::uint64_t>(stop_.stall_window);
+  const double now = double(last.iteration);
+  // Replay the stall test over the samples seen (run_simulation's marks: one window in, then one window
+  // after each mark), keeping each mark's mean g.
+  std::vector<std::pair<std::uint64_t, double>> marks;
+  std::uint64_t mark = 0;
+  double mark_growth = 0.0;
+  bool secondary_started = false;
+  for (const ProgressSample& s : samples_) {
+    if (s.iteration < mark + window) continue;
+    const bool stalled = mark != 0 && !(s.mean_growth > mark_growth * (1.0 + stop_.stall_growth));
+    if (stalled && has_secondary_ && !secondary_started) {
+      secondary_started = true, marks.clear();
+    } else if (stalled) {
+      return StopEstimate{last.iteration, 0.0, false};  // settling now
+    }
+    mark = s.iteration, mark_growth = s.mean_growth;
+    marks.emplace_back(mark, mark_growth);
+  }
+  const bool secondary_pending = has_secondary_ && !secondary_started;
+  const ProgressSample& p = samples_[samples_back(samples_, window / 2)];
+  const double pace =
+      last.iteration > p.iteration ? (last.seconds - p.seconds) / double(last.iteration - p.iteration) : 0.0;
+
+  // Growth has stopped (the gap test or a stall fired between samples): settling remains.
+  if (last.growing_share == 0.0 && !secondary_pending) {
+    std::uint64_t since = last.iteration;
+    for (std::size_t k = samples_.size(); k-- > 0 && samples_[k].growing_share == 0.0;) since = samples_[k].iteration;
+    const double end =
+        std::min(double(since) * (1.0 + kSettleShare), double(since) + double(stop_.settle_iterations));
+    const double stop = std::max(now, end);
+    return StopEstimate{static_cast<std::uint64_t>(stop), pace * (stop - now), false};
+  }
+
+  // The mean g's rise per step now, over the last tenth of a window.
+  const std::size_t tenth = samples_back(samples_, window / 10);
+  const ProgressSample& r = samples_[tenth > 0 ? tenth - 1 : 0];
+  const double rate = now > double(r.iteration) ? (last.mean_growth - r.mean_growth) / (now - double(r.iteration)) : 0;
+  double stop = -1, growth_at_stop = last.mean_growth;
+  if (last.growing_share >= kFreeGrowingShare || marks.size() < 2) {
+    // Free growth: the meshes grow until they fill the container to about kDensityAtStop, the rate
+    // falling to nothing on the way (linearly in the steps: twice the steps at today's rate).
+    const double final_growth = unit_density_ > 0 ? std::sqrt(kDensityAtStop / unit_density_) : 0.0;
+    if (rate > 0 && final_growth > last.mean_growth) {
+      stop = now + 2.0 * (final_growth - last.mean_growth) / rate;
+      growth_at_stop = final_growth;
+    }
+  }
+  if (stop < 0 && marks.size() >= 2) {
+    // Contact: each stall window's rise of ln g is the last one's times a decay q, stepped forward until
+    // one rises by less than stall_growth. The current window counts once it is a third done.
+    std::vector<double> rises;
+    for (std::size_t i = 1; i < marks.size(); ++i) rises.push_back(std::log(marks[i].second / marks[i - 1].second));
+    const double into = now - double(mark);
+    const bool current = into >= 0.3 * double(window) && rises.back() > 0;
+    const double current_rise = current ? std::log(last.mean_growth / mark_growth) * double(window) / into : 0;
+    double q = rises.size() >= 2 && rises[rises.size() - 2] > 0 ? rises.back() / rises[rises.size() - 2] : 0;
+    if (!(q > 0)) q = kDefaultWindowDecay;
+    q = std::min(q, kMaxWindowDecay);
+    double rise = current ? current_rise : rises.back() * q, ln_growth = std::log(mark_growth);
+    const double threshold = std::log1p(stop_.stall_growth), limit = double(stop_.max_iterations);
+    double at = double(mark) + double(window);
+    for (; rise >= threshold && at < limit; at += double(window)) ln_growth += rise, rise *= q;
+    stop = std::min(at, limit);
+    growth_at_stop = std::exp(ln_growth);
+  }
+  if (stop < 0) return std::nullopt;
+  // §5.3's gap test: the largest gap falls exponentially; where its line over the last window reaches
+  // stop_gap, growth stops if the stall test has not stopped it first.
+  std::vector<double> gx, gy;
+  for (std::size_t k = samples_back(samples_, window); k < samples_.size(); ++k)
+    if (std::isfinite(samples_[k].max_gap) && samples_[k].max_gap > 0.0)
+      gx.push_back(double(samples_[k].iteration)), gy.push_back(std::log(samples_[k].max_gap));
+  if (const std::optional<Line> gap = fit_line(gx, gy); gap && gap->b < 0.0)
+    stop = std::min(stop, std::max(now, (std::log(stop_.stop_gap) - gap->a) / gap->b));
+  stop = std::min(double(stop_.max_iterations), std::max(stop, now) * (1.0 + kSettleShare));
+  // A step costs more as the elements grow (more neighbours in the collision grid): the pace is scaled by
+  // g, its mean over the steps left taken as the mean of now and the stop.
+  const double seconds_left = pace * (stop - now) * 0.5 * (1.0 + std::max(1.0, growth_at_stop / last.mean_growth));
+  return StopEstimate{static_cast<std::uint64_t>(stop), seconds_left, secondary_pending};
+}
+
+}  // namespace animpak

@@ -1,0 +1,157 @@
+// The time left that `pack` prints (docs/cli.md, "Progress and the time left"): StopModel replayed over
+// progress traces recorded from the examples' packs (tests/solver/traces/*.csv, the "progress" rows of
+// their stats.json). After a fifth of a run, every estimate puts the end within ±50 % of the real one.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "animpak/progress.hpp"
+
+using namespace animpak;
+
+namespace {
+
+struct Trace {
+  double unit_density = 0;
+  std::vector<ProgressSample> rows;
+};
+
+// A trace: comment lines (the command, and "# unit_mesh_density: D" of its world), the columns of
+// stats.json's "progress" rows, then the rows.
+Trace read_trace(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  REQUIRE(in);
+  Trace trace;
+  std::vector<ProgressSample>& rows = trace.rows;
+  std::string line;
+  bool header = false;
+  const std::string density = "# unit_mesh_density: ";
+  while (std::getline(in, line)) {
+    if (line.rfind(density, 0) == 0) trace.unit_density = std::stod(line.substr(density.size()));
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      REQUIRE(line == "iteration,seconds,mean_growth,growing_share,max_gap,overlapping_vertices,outside_vertices");
+      header = true;
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    cells.resize(7);
+    ProgressSample p;
+    p.iteration = std::stoull(cells[0]);
+    p.seconds = std::stod(cells[1]);
+    p.mean_growth = std::stod(cells[2]);
+    p.growing_share = std::stod(cells[3]);
+    p.max_gap = cells[4].empty() ? std::numeric_limits<double>::infinity() : std::stod(cells[4]);
+    p.overlapping = std::stoll(cells[5]);
+    p.outside = std::stoll(cells[6]);
+    rows.push_back(p);
+  }
+  REQUIRE(trace.unit_density > 0);
+  return trace;
+}
+
+std::vector<std::filesystem::path> traces() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(ANIMPAK_SOURCE_DIR) + "/tests/solver/traces"))
+    if (e.path().extension() == ".csv") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+TEST_CASE("progress: after a fifth of each recorded run the predicted end is within 50 % of the real one") {
+  const std::vector<std::filesystem::path> files = traces();
+  REQUIRE(files.size() >= 3);
+  for (const auto& file : files) {
+    const Trace t = read_trace(file);
+    const std::vector<ProgressSample>& trace = t.rows;
+    REQUIRE(trace.size() > 100);
+    const double end = trace.back().seconds;
+    const auto end_iteration = static_cast<double>(trace.back().iteration);
+    StopModel model(Params::Stop{}, false, t.unit_density);
+    int estimates = 0;
+    double worst = 1.0, worst_at = 0.0;
+    for (const ProgressSample& s : trace) {
+      model.observe(s);
+      const std::optional<StopEstimate> e = model.estimate();
+      if (s.seconds < end / 5) continue;
+      INFO(file.filename().string() << " at " << s.seconds << " s (iteration " << s.iteration << ") of " << end
+                                    << " s (" << end_iteration << ")");
+      REQUIRE(e.has_value());
+      ++estimates;
+      const double ratio = (s.seconds + e->seconds_left) / end;
+      CHECK(ratio >= 0.5);
+      CHECK(ratio <= 1.5);
+      CHECK(double(e->iteration) / end_iteration >= 0.5);
+      CHECK(double(e->iteration) / end_iteration <= 1.5);
+      if (std::abs(std::log(ratio)) > std::abs(std::log(worst))) worst = ratio, worst_at = s.seconds / end;
+    }
+    // The worst estimate of each trace, for the test log (docs/results.md quotes them).
+    WARN(file.filename().string() << ": " << estimates << " estimates after a fifth, worst end " << worst
+                                  << " of the real one at " << worst_at << " of the run");
+  }
+}
+
+TEST_CASE("progress: during free growth, the growth that fills the container to the density of a packing") {
+  // g = 1 + 0.0005 per step, every slice growing, the gap steady; meshes filling 0.155 at g = 1 reach the
+  // model's 0.62 at g = 2.
+  auto sample = [](std::uint64_t i) {
+    return ProgressSample{i, 0.01 * double(i), 1.0 + 0.0005 * double(i), 1.0, 0.1, 0, 0};
+  };
+  StopModel unknown(Params::Stop{}, false, 0.0), model(Params::Stop{}, false, 0.155);
+  for (std::uint64_t i = 10; i <= 70; i += 10) model.observe(sample(i));
+  CHECK_FALSE(model.estimate().has_value());  // seven samples
+  for (std::uint64_t i = 80; i <= 1000; i += 10) model.observe(sample(i)), unknown.observe(sample(i));
+  CHECK_FALSE(unknown.estimate().has_value());
+  const std::optional<StopEstimate> e = model.estimate();
+  REQUIRE(e.has_value());
+  // From g 1.5 at 0.0005 a step, the rate falling to nothing: 2 · 0.5 / 0.0005 steps, plus 4 % settling.
+  CHECK(e->iteration == 3120);
+  // 2000 steps at 0.01 s, the pace scaled by the mean of g now and at the stop over g now (1.17).
+  CHECK(e->seconds_left == Approx(0.01 * 2120 * 0.5 * (1 + 2 / 1.5)));
+}
+
+TEST_CASE("progress: once the elements meet, the stall windows' rises decay until one is below stall_growth") {
+  // ln g rises 0.08 over the window to 2000 and 0.04 to 3000 (q = 0.5): then 0.02 to 4000 and 0.01 to 5000,
+  // both at least ln 1.01, and 0.005 to 6000, which stalls.
+  auto ln_g = [](double i) {
+    if (i <= 1000) return 0.5 * i / 1000;
+    if (i <= 2000) return 0.5 + 0.08 * (i - 1000) / 1000;
+    return 0.58 + 0.04 * (i - 2000) / 1000;
+  };
+  StopModel model(Params::Stop{}, false, 0.1);
+  for (std::uint64_t i = 10; i <= 3100; i += 10)
+    model.observe({i, 0.01 * double(i), std::exp(ln_g(double(i))), 0.5, 0.02, 0, 0});
+  const std::optional<StopEstimate> e = model.estimate();
+  REQUIRE(e.has_value());
+  CHECK(e->iteration == 6240);  // 6000 and 4 % settling
+  // And the gap test first where the largest gap falls to stop_gap sooner: 0.02 · e^(-0.001 (i - 2100)).
+  StopModel closing(Params::Stop{}, false, 0.1);
+  for (std::uint64_t i = 10; i <= 3100; i += 10)
+    closing.observe({i, 0.01 * double(i), std::exp(ln_g(double(i))), 0.5,
+                     0.02 * std::exp(-0.001 * (double(i) - 2100)), 0, 0});
+  const std::optional<StopEstimate> c = closing.estimate();
+  REQUIRE(c.has_value());
+  CHECK(double(c->iteration) == Approx((2100 + 1000 * std::log(0.02 / 0.006)) * 1.04).epsilon(0.002));
+}
+
+TEST_CASE("progress: once growth has stopped, the settling left") {
+  StopModel model(Params::Stop{}, false, 0.1);
+  // Growth stops at 1900 (the gap test fired between samples); the run settles from there.
+  for (std::uint64_t i = 10; i <= 1950; i += 10)
+    model.observe({i, 0.01 * double(i), 1.0 + 0.0005 * double(std::min<std::uint64_t>(i, 1900)),
+                   i < 1900 ? 0.5 : 0.0, 0.01});
+  const std::optional<StopEstimate> e = model.estimate();
+  REQUIRE(e.has_value());
+  CHECK(e->iteration == 1976);  // 1900 · 1.04
+  CHECK(e->seconds_left == Approx(0.01 * 26));
+}
