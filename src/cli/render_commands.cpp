@@ -153,9 +153,29 @@ class RenderingFrontend final : public Frontend {
         ->check(CLI::Range(2, 1000));
     inspect_cmd_->add_option("--size", inspect_.picture_size, "picture height in pixels")->check(CLI::Range(16, 8192));
 
-    check_cmd_ = app.add_subcommand(
-        "check", "Preflight one art file before packing: what is imported, every warning, and a preview as imported");
-    check_cmd_->add_option("FILE", check_.file, "art file (.svg, .path)")->required();
+    check_cmd_ = app.add_subcommand("check",
+                                    "Preflight one art file before packing: what is imported, every warning, and a "
+                                    "preview as imported; a container's outline, holes and area");
+    check_cmd_
+        ->add_option("FILE", check_.file,
+                     "art file (.svg, .path), checked as an element; or a scene (.json), whose container is checked")
+        ->required();
+    CLI::Option* as_container = check_cmd_->add_flag(
+        "--container", check_.container,
+        "check the art file as a container: its outline, holes, area and bounds instead of an element");
+    check_cmd_
+        ->add_option("--outline", check_.outline,
+                     "with --container: the outline's path, as a scene's container.outline (default: the largest "
+                     "closed path that is not a hole)")
+        ->check(CLI::NonNegativeNumber)
+        ->needs(as_container);
+    check_cmd_
+        ->add_option("--holes", check_.holes,
+                     "with --container: the holes' paths, as a scene's container.holes (default: the .path "
+                     "type-7 paths; SVG: none)")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber)
+        ->needs(as_container);
     check_cmd_->add_option("--png", check_.png,
                            "draw the art as imported at the document's viewport into this PNG (transparent "
                            "background), to hold next to a browser's rendering");
@@ -163,7 +183,7 @@ class RenderingFrontend final : public Frontend {
     check_cmd_->add_flag("--json", check_.json, "print the report as JSON (docs/check.md)");
     check_cmd_->footer(
         "Exit codes: 0 ready to pack (warnings may remain), 2 the file cannot be imported or built "
-        "into an element.");
+        "into an element (or, as a container, into a container).");
 
     render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
     render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();
