@@ -322,7 +322,8 @@ std::string lower_count_to(const SceneSpec& scene, const Request& request, int n
     if (info.name == "initial_scale") lowest = info.min;
   double s = scale * std::sqrt(std::max(fits, 1) / static_cast<double>(request.wanted));
   for (int attempt = 0; attempt < 8 && !smaller; ++attempt, s *= 0.9) {
-    const double rounded = std::floor(s * 1000.0) / 1000.0;  // as a user would type it
+    const double digit = std::pow(10.0, std::floor(std::log10(s)) - 2);  // 3 significant digits, rounded down
+    const double rounded = std::floor(s / digit) * digit;
     if (rounded < lowest) break;
     SceneSpec trial = scene;
     trial.params.placement.initial_scale = rounded;
