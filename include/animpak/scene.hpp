@@ -16,8 +16,10 @@ namespace animpak {
 struct Container {
   std::vector<Vec2> outline;
   std::vector<std::vector<Vec2>> holes;
-  ArtFrame frame;  ///< container art coordinates → unit square (targets, field centres use it)
-  ArtShape art;    ///< the container's art in unit coordinates (stroke widths too), for drawing it
+  ArtFrame frame;               ///< container art coordinates → unit square (targets, field centres use it)
+  ArtShape art;                 ///< the container's art in unit coordinates (stroke widths too), for drawing it
+  int outline_path = -1;        ///< source index of the art path the outline was taken from
+  std::vector<int> hole_paths;  ///< source index of each hole's path, in `holes` order
 
   /// Inside the outline and outside every hole.
   bool contains(Vec2 p) const;

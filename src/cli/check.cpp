@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -159,6 +160,85 @@ Json element_json(const SpacetimeElement& e, const ArtOutline& outline, const Pa
           {"holes", outline.hole_areas}};
 }
 
+std::string path_name(const ArtShape& art, int source_index) {
+  for (const ArtPath& p : art.paths)
+    if (p.source_index == source_index && !p.id.empty())
+      return "path " + std::to_string(source_index) + " (" + p.id + ")";
+  return "path " + std::to_string(source_index);
+}
+
+const ArtPath* path_at(const ArtShape& art, int source_index) {
+  for (const ArtPath& p : art.paths)
+    if (p.source_index == source_index) return &p;
+  return nullptr;
+}
+
+// The container as pack takes it (make_container; docs/scene-format.md, "`container`"): which paths are its
+// outline and holes, their areas and the area left for the elements, in the art's units and, after
+// normalizing (longer side 1), in the unit square the seeds and parameters are measured in.
+Json container_json(const Container& c, const ArtShape& art, const std::string& file,
+                    std::vector<std::string>& warnings) {
+  const double per_unit = 1.0 / (c.frame.scale * c.frame.scale);  // unit-square area → art units²
+  const auto ring_json = [&](int path, const std::vector<Vec2>& ring) {
+    const ArtPath* p = path_at(art, path);
+    return Json{{"path", path},
+                {"id", p ? p->id : ""},
+                {"points", ring.size()},
+                {"area", std::abs(signed_area(ring)) * per_unit},
+                {"unit_area", std::abs(signed_area(ring))}};
+  };
+  Json holes = Json::array();
+  for (std::size_t i = 0; i < c.holes.size(); ++i) holes.push_back(ring_json(c.hole_paths[i], c.holes[i]));
+  const Box unit = c.bounds();
+  const Vec2 art_min = c.frame.to_art(unit.min), art_max = c.frame.to_art(unit.max);
+  // A boundary path lying wholly inside the outline that is not a hole is packed over: in an SVG, where no
+  // path is a hole by default, it usually was meant as one.
+  for (const ArtPath& p : c.art.paths) {
+    if (p.source_index == c.outline_path || p.path_type != 0 ||
+        std::find(c.hole_paths.begin(), c.hole_paths.end(), p.source_index) != c.hole_paths.end())
+      continue;
+    bool inside = !p.polylines.empty();
+    double area = 0.0;
+    for (const Polyline& line : p.polylines) {
+      area += std::abs(signed_area(line.points));
+      inside = inside &&
+               std::all_of(line.points.begin(), line.points.end(), [&](Vec2 q) { return ring_contains(c.outline, q); });
+    }
+    if (inside && area > 0.0)
+      warnings.push_back(file + ": " + path_name(art, p.source_index) +
+                         " lies inside the container's outline but is not a hole: elements are packed over it; to "
+                         "keep them out, list it in the scene's container.holes (check --container --holes " +
+                         std::to_string(p.source_index) + " shows the result)");
+  }
+  return {{"outline", ring_json(c.outline_path, c.outline)},
+          {"holes", holes},
+          {"area", c.area() * per_unit},
+          {"unit_area", c.area()},
+          {"bounds", {art_min.x, art_min.y, art_max.x - art_min.x, art_max.y - art_min.y}},
+          {"scale", c.frame.scale},
+          {"size", {unit.width(), unit.height()}}};
+}
+
+void print_container(const Json& c) {
+  const auto ring = [](const Json& r) {
+    char text[160];
+    std::snprintf(text, sizeof text, "path %d%s%s%s: %d points, area %.6g (%.3g of the unit square)",
+                  r["path"].get<int>(), r["id"].get<std::string>().empty() ? "" : " (",
+                  r["id"].get<std::string>().c_str(), r["id"].get<std::string>().empty() ? "" : ")",
+                  r["points"].get<int>(), r["area"].get<double>(), r["unit_area"].get<double>());
+    return std::string(text);
+  };
+  const Json& b = c["bounds"];
+  std::printf("outline    %s\n", ring(c["outline"]).c_str());
+  std::printf("holes      %zu%s\n", c["holes"].size(), c["holes"].empty() ? "" : ":");
+  for (const Json& h : c["holes"]) std::printf("  %s\n", ring(h).c_str());
+  std::printf("area       %.6g art units² for the elements (outline minus holes), %.3g of the unit square\n",
+              c["area"].get<double>(), c["unit_area"].get<double>());
+  std::printf("bounds     %g %g %g %g (art units: x y width height); %.3g x %.3g after normalizing (x %.3g)\n",
+              b[0].get<double>(), b[1].get<double>(), b[2].get<double>(), b[3].get<double>(),
+              c["size"][0].get<double>(), c["size"][1].get<double>(), c["scale"].get<double>());
+}
+
 void print_text(const Json& report) {
   const Json& doc = report["document"];
   std::printf("file       %s\n", report["file"].get<std::string>().c_str());
@@ -180,8 +260,9 @@ void print_text(const Json& report) {
   }
   std::printf("paths      %zu: %d filled, %d stroked; %d open subpaths, %d crossing themselves\n", paths.size(), filled,
               stroked, open, crossing);
+  const bool container = report.contains("container");
   std::printf("  %4s %-20s %-8s %-16s %-8s %8s %8s %s\n", "#", "id", "fill", "stroke (width)", "rule", "subpaths",
-              "points", "outline");
+              "points", container ? "role" : "outline");
   for (const Json& p : paths) {
     std::string stroke = "-";
     if (!p["stroke"].is_null()) {
@@ -192,7 +273,9 @@ void print_text(const Json& report) {
     std::printf("  %4d %-20s %-8s %-16s %-8s %8d %8d %s\n", p["index"].get<int>(), p["id"].get<std::string>().c_str(),
                 p["fill"].is_null() ? "-" : p["fill"]["color"].get<std::string>().c_str(), stroke.c_str(),
                 p["fill_rule"].get<std::string>().c_str(), p["subpaths"].get<int>(), p["points"].get<int>(),
-                p["on_outline"].get<bool>() ? "yes" : "");
+                container                     ? p["role"].get<std::string>().c_str()
+                : p["on_outline"].get<bool>() ? "yes"
+                                              : "");
   }
   if (report.contains("element")) {
     const Json& e = report["element"];
@@ -206,16 +289,19 @@ void print_text(const Json& report) {
     if (holes > 0)
       std::printf("holes      %zu in the art, filled by the element (its outline is the outer boundary only)\n", holes);
   }
+  if (container) print_container(report["container"]);
   std::printf("warnings   %zu%s\n", report["warnings"].size(), report["warnings"].empty() ? "" : " (on stderr)");
   if (report.contains("png")) std::printf("preview    %s\n", report["png"].get<std::string>().c_str());
-  std::printf("%s\n", report["ready"].get<bool>() ? "ready to pack" : "cannot be packed");
+  if (container)
+    std::printf("%s\n", report["ready"].get<bool>() ? "ready to pack into (as a container)" : "cannot be packed into");
+  else
+    std::printf("%s\n", report["ready"].get<bool>() ? "ready to pack" : "cannot be packed");
 }
 
 }  // namespace
 
 int check(const CheckOptions& options) {
-  const std::string file = options.file.string();
-  Json report = {{"file", file}, {"ready", false}};
+  Json report = {{"file", options.file.string()}, {"ready", false}};
   // What cannot be imported or built goes out as the error every command gives (exit 2); --json first
   // says so on stdout, so scripts always get an object.
   const auto refuse = [&](const InputError& e) {
@@ -224,9 +310,31 @@ int check(const CheckOptions& options) {
       std::cout << report.dump(2) << "\n";
     }
   };
+  // A scene is checked for its container, read as pack reads it: the scene's outline, holes and tolerance.
+  std::filesystem::path art_file = options.file;
+  std::optional<ContainerSpec> container;
+  SvgOptions import;
+  std::string extension = options.file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".json") {
+    try {
+      const SceneSpec scene = load_scene(options.file);
+      container = scene.container;
+      import.flatten_tolerance = scene.params.art.flatten_tolerance;
+    } catch (const InputError& e) {
+      refuse(e);
+      throw;
+    }
+    art_file = container->art;
+    report = {{"file", art_file.string()}, {"scene", options.file.string()}, {"ready", false}};
+  } else if (options.container) {
+    container = ContainerSpec{options.file, options.outline, std::nullopt};
+    if (!options.holes.empty()) container->holes = options.holes;
+  }
+  const std::string file = art_file.string();
   ArtShape art;
   try {
-    art = load_art(options.file);
+    art = load_art(art_file, import);
   } catch (const InputError& e) {
     refuse(e);
     throw;
@@ -254,20 +362,44 @@ int check(const CheckOptions& options) {
     report["png"] = options.png->string();
   }
 
-  try {
-    const Params params;
-    const SpacetimeElement element =
-        build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0));
-    const ArtOutline outline = outline_of(element.art.art);
-    for (std::size_t i = 0; i < outline.on_outline.size(); ++i)
-      report["paths"][i]["on_outline"] = outline.on_outline[i];
-    report["element"] = element_json(element, outline, params);
-    warnings.insert(warnings.end(), element.notes.begin(), element.notes.end());
-  } catch (const InputError& e) {
-    report["warnings"] = warnings;
-    for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
-    refuse(e);
-    throw;
+  if (container) {
+    try {
+      const Container c = make_container(art, *container);
+      for (Json& path : report["paths"]) {
+        const int index = path["source_index"].get<int>();
+        path.erase("on_outline");
+        path["role"] = index == c.outline_path                                           ? "outline"
+                       : std::count(c.hole_paths.begin(), c.hole_paths.end(), index) > 0 ? "hole"
+                                                                                         : "";
+      }
+      report["container"] = container_json(c, art, file, warnings);
+    } catch (const InputError& e) {
+      report["warnings"] = warnings;
+      for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
+      refuse(e);
+      throw;
+    }
+  } else {
+    if (std::any_of(art.paths.begin(), art.paths.end(), [](const ArtPath& p) { return p.path_type == 7; }))
+      warnings.push_back(file +
+                         ": has hole paths (.path type 7), as a container has; this is its report as an element, "
+                         "`animpak check --container " +
+                         file + "` reports it as a container");
+    try {
+      const Params params;
+      const SpacetimeElement element =
+          build_element(options.file.stem().string(), art, AnimationSpec{}, params, element_seed(1, 0));
+      const ArtOutline outline = outline_of(element.art.art);
+      for (std::size_t i = 0; i < outline.on_outline.size(); ++i)
+        report["paths"][i]["on_outline"] = outline.on_outline[i];
+      report["element"] = element_json(element, outline, params);
+      warnings.insert(warnings.end(), element.notes.begin(), element.notes.end());
+    } catch (const InputError& e) {
+      report["warnings"] = warnings;
+      for (const std::string& w : warnings) std::cerr << "animpak: warning: " << w << "\n";
+      refuse(e);
+      throw;
+    }
   }
   report["warnings"] = warnings;
   report["ready"] = true;

@@ -32,13 +32,17 @@ struct InspectOptions {
 int inspect(const InspectOptions& options);
 
 struct CheckOptions {
-  std::filesystem::path file;                ///< one art file (.svg, .path)
+  std::filesystem::path file;                ///< one art file (.svg, .path), or a scene (.json): its container
+  bool container = false;                    ///< check the art file as a container
+  std::optional<int> outline;                ///< as a container: the outline's path (container.outline)
+  std::vector<int> holes;                    ///< as a container: the holes' paths (container.holes); none: default
   std::optional<std::filesystem::path> png;  ///< draw the art as imported into this PNG
   int size = 512;                            ///< the PNG's longer side in pixels
   bool json = false;                         ///< print the report as JSON on stdout
 };
 
-/// The preflight before packing one art file: what is imported, every warning; 0 when it can be packed.
+/// The preflight before packing one art file: what is imported, every warning; 0 when it can be packed. A
+/// container (--container, or a scene's) reports its outline, holes, area and bounds instead of an element.
 int check(const CheckOptions& options);
 
 struct FrameOptions {

@@ -15,6 +15,8 @@
 namespace animpak::cli {
 namespace {
 
+constexpr const char* kFormatNames = "png, gif, mp4, svg, lottie, dotlottie or svg-anim";
+
 FrameFormat parse_format(const std::string& name) {
   if (name == "png") return FrameFormat::png;
   if (name == "gif") return FrameFormat::gif;
@@ -23,7 +25,29 @@ FrameFormat parse_format(const std::string& name) {
   if (name == "lottie") return FrameFormat::lottie;
   if (name == "dotlottie") return FrameFormat::dotlottie;
   if (name == "svg-anim") return FrameFormat::svg_anim;
-  throw UsageError("--format " + name + ": expected png, gif, mp4, svg, lottie, dotlottie or svg-anim");
+  throw UsageError("--format " + name + ": expected " + kFormatNames);
+}
+
+// The formats of one --format argument, a comma-separated list as typed ("gif, mp4" too: spaces around an
+// item do not count); UsageError for an empty item or an unknown format.
+std::vector<FrameFormat> format_list(const std::string& argument) {
+  std::vector<FrameFormat> formats;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = std::min(argument.find(',', begin), argument.size());
+    std::string item = argument.substr(begin, end - begin);
+    const auto space = [](unsigned char c) { return std::isspace(c) != 0; };
+    item.erase(item.begin(), std::find_if_not(item.begin(), item.end(), space));
+    item.erase(std::find_if_not(item.rbegin(), item.rend(), space).base(), item.end());
+    if (item.empty())
+      throw UsageError("--format \"" + argument + "\": " +
+                       (argument.find_first_not_of(" \t,") == std::string::npos ? "no format given"
+                                                                                : "an empty item (a comma too many)") +
+                       "; give one or more of " + kFormatNames + ", separated by commas (e.g. --format gif,mp4)");
+    formats.push_back(parse_format(item));
+    if (end == argument.size()) return formats;
+    begin = end + 1;
+  }
 }
 
 Rgba parse_background(const std::string& text) {
@@ -53,7 +77,8 @@ FrameOutput frame_output(const FrameOptions& options) {
   out.formats.clear();
   out.precision = options.precision;
   out.interpolation = options.interpolation == "hold" ? Interpolation::hold : Interpolation::linear;
-  for (const std::string& f : options.formats) out.formats.push_back(parse_format(f));
+  for (const std::string& argument : options.formats)
+    for (FrameFormat f : format_list(argument)) out.formats.push_back(f);
   if (out.style.background.a < 1 && std::count(out.formats.begin(), out.formats.end(), FrameFormat::mp4))
     throw UsageError("--background " + options.background +
                      ": MP4 (H.264) has no transparency; give the MP4 a "
@@ -82,9 +107,17 @@ void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")->check(CLI::Range(1.0, 240.0));
   cmd.add_option("--format", f.formats,
                  "png, gif, mp4, svg (frames), lottie (animation.json), dotlottie (animation.lottie), svg-anim "
-                 "(animation.svg); several allowed")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"png", "gif", "mp4", "svg", "lottie", "dotlottie", "svg-anim"}));
+                 "(animation.svg); several allowed, separated by commas (gif,mp4)")
+      ->check(CLI::Validator(
+          [](std::string& argument) {
+            try {
+              format_list(argument);
+            } catch (const UsageError& e) {
+              return std::string(e.what()).substr(std::string("--format ").size());
+            }
+            return std::string();
+          },
+          "{png,gif,mp4,svg,lottie,dotlottie,svg-anim}"));
   cmd.add_option("--precision", f.precision,
                  "decimals of a pixel kept in lottie and svg-anim coordinates (of a --size picture)")
       ->check(CLI::Range(0, 6));
@@ -119,9 +152,29 @@ class RenderingFrontend final : public Frontend {
         ->check(CLI::Range(2, 1000));
     inspect_cmd_->add_option("--size", inspect_.picture_size, "picture height in pixels")->check(CLI::Range(16, 8192));
 
-    check_cmd_ = app.add_subcommand(
-        "check", "Preflight one art file before packing: what is imported, every warning, and a preview as imported");
-    check_cmd_->add_option("FILE", check_.file, "art file (.svg, .path)")->required();
+    check_cmd_ = app.add_subcommand("check",
+                                    "Preflight one art file before packing: what is imported, every warning, and a "
+                                    "preview as imported; a container's outline, holes and area");
+    check_cmd_
+        ->add_option("FILE", check_.file,
+                     "art file (.svg, .path), checked as an element; or a scene (.json), whose container is checked")
+        ->required();
+    CLI::Option* as_container = check_cmd_->add_flag(
+        "--container", check_.container,
+        "check the art file as a container: its outline, holes, area and bounds instead of an element");
+    check_cmd_
+        ->add_option("--outline", check_.outline,
+                     "with --container: the outline's path, as a scene's container.outline (default: the largest "
+                     "closed path that is not a hole)")
+        ->check(CLI::NonNegativeNumber)
+        ->needs(as_container);
+    check_cmd_
+        ->add_option("--holes", check_.holes,
+                     "with --container: the holes' paths, as a scene's container.holes (default: the .path "
+                     "type-7 paths; SVG: none)")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber)
+        ->needs(as_container);
     check_cmd_->add_option("--png", check_.png,
                            "draw the art as imported at the document's viewport into this PNG (transparent "
                            "background), to hold next to a browser's rendering");
@@ -129,7 +182,7 @@ class RenderingFrontend final : public Frontend {
     check_cmd_->add_flag("--json", check_.json, "print the report as JSON (docs/check.md)");
     check_cmd_->footer(
         "Exit codes: 0 ready to pack (warnings may remain), 2 the file cannot be imported or built "
-        "into an element.");
+        "into an element (or, as a container, into a container).");
 
     render_cmd_ = app.add_subcommand("render", "Render the frames of a saved packing again");
     render_cmd_->add_option("DIR", render_.dir, "folder written by animpak pack")->required();

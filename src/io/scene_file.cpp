@@ -323,6 +323,66 @@ void read_count(const JsonField& field, SceneSpec& scene) {
                "; make them agree or use \"fill\"");
 }
 
+// A JSON token of the text for the slip hints: a string ('"'), a number or literal ('v'), or one of
+// the punctuation characters {}[]:, as itself; [begin, end) in bytes.
+struct JsonToken {
+  std::size_t begin = 0, end = 0;
+  char kind = 0;
+};
+
+// The tokens that begin before byte `stop`: enough to see what the parser stopped at and what came before.
+std::vector<JsonToken> json_tokens(const std::string& text, std::size_t stop) {
+  std::vector<JsonToken> tokens;
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  const auto punctuation = [](char c) { return std::string_view("{}[]:,").find(c) != std::string_view::npos; };
+  std::size_t i = 0;
+  while (i < text.size() && i < stop) {
+    if (space(text[i])) {
+      ++i;
+      continue;
+    }
+    JsonToken t{i, i + 1, punctuation(text[i]) ? text[i] : 'v'};
+    if (text[i] == '"') {
+      t.kind = '"';
+      while (t.end < text.size() && text[t.end] != '"') t.end += text[t.end] == '\\' ? 2 : 1;
+      t.end = std::min(t.end + 1, text.size());
+    } else if (t.kind == 'v') {
+      while (t.end < text.size() && !space(text[t.end]) && !punctuation(text[t.end]) && text[t.end] != '"') ++t.end;
+    }
+    tokens.push_back(t);
+    i = t.end;
+  }
+  return tokens;
+}
+
+// The slip a parse error most likely comes from, as a hint to append: two values with nothing between them
+// (a missing comma), or a comma right before a closing bracket (a trailing comma, which JSON forbids).
+// `byte` is how far the parser read: the end of the token it stopped at; `what` is its message.
+std::string json_slip_hint(const std::string& text, std::size_t byte, const std::string& what) {
+  const std::vector<JsonToken> tokens = json_tokens(text, byte);
+  if (tokens.size() < 2) return "";
+  const JsonToken &before = tokens[tokens.size() - 2], &at = tokens.back();
+  const auto line_of = [&](std::size_t offset) {
+    return 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n');
+  };
+  const auto ends_value = [](char k) { return k == '"' || k == 'v' || k == '}' || k == ']'; };
+  const auto starts_value = [](char k) { return k == '"' || k == 'v' || k == '{' || k == '['; };
+  // Only where the parser wanted the end of the object or array: after a key it wants ':' instead.
+  const bool wanted_close =
+      what.find("expected '}'") != std::string::npos || what.find("expected ']'") != std::string::npos;
+  if (wanted_close && ends_value(before.kind) && starts_value(at.kind)) {
+    const auto line = line_of(before.end - 1);
+    if (line < line_of(at.begin)) return " (missing comma after line " + std::to_string(line) + "?)";
+    const std::size_t line_start = text.rfind('\n', at.begin) == std::string::npos ? 0 : text.rfind('\n', at.begin) + 1;
+    return " (missing comma before column " + std::to_string(at.begin - line_start + 1) + " of line " +
+           std::to_string(line) + "?)";
+  }
+  if (before.kind == ',' && (at.kind == '}' || at.kind == ']'))
+    return std::string(" (trailing comma at line ") + std::to_string(line_of(before.begin)) + " before the '" +
+           at.kind + "': JSON does not allow it; remove the comma)";
+  return "";
+}
+
 /// nlohmann keeps the last of two equal keys silently; in a hand-written scene that hides a mistake.
 json parse_json(const std::string& text, const std::string& name) {
   std::vector<std::set<std::string>> open_objects;
@@ -340,7 +400,8 @@ json parse_json(const std::string& text, const std::string& name) {
     // what() reads "[json.exception.parse_error.101] parse error at line L, column C: <detail>".
     const std::string what = e.what();
     const std::size_t at = what.find("at line ");
-    throw InputError(name + ": malformed JSON " + (at == std::string::npos ? what : what.substr(at)));
+    throw InputError(name + ": malformed JSON " + (at == std::string::npos ? what : what.substr(at)) +
+                     json_slip_hint(text, e.byte, what));
   }
 }
 

@@ -69,17 +69,19 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
   }
 
   std::vector<Vec2> outline;
+  int outline_path = -1;
   if (spec.outline) {
     const ArtPath* path = find_source(art, *spec.outline);
     if (!path) throw InputError(where(art, *spec.outline) + ": container.outline names a path the file does not have");
     outline = ring_of(art, *path);
+    outline_path = *spec.outline;
   } else {
     double best = 0.0;
     for (const ArtPath& p : art.paths) {
       if (std::find(hole_indices.begin(), hole_indices.end(), p.source_index) != hole_indices.end()) continue;
       for (const Polyline& l : p.polylines)
         if (l.closed && l.points.size() >= 3 && std::abs(signed_area(l.points)) > best)
-          best = std::abs(signed_area(l.points)), outline = l.points;
+          best = std::abs(signed_area(l.points)), outline = l.points, outline_path = p.source_index;
     }
     if (outline.empty())
       throw InputError(
@@ -94,6 +96,8 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
   c.frame.scale = 1.0 / std::max(box.width(), box.height());
   c.frame.unit_origin = {0.5 * (1.0 - box.width() * c.frame.scale), 0.5 * (1.0 - box.height() * c.frame.scale)};
   for (Vec2 p : outline) c.outline.push_back(c.frame.to_unit(p));
+  c.outline_path = outline_path;
+  c.hole_paths = hole_indices;
   for (std::size_t i = 0; i < hole_rings.size(); ++i) {
     std::vector<Vec2> ring;
     for (Vec2 p : hole_rings[i]) ring.push_back(c.frame.to_unit(p));

@@ -50,8 +50,10 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
                                       const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes);
 
 /// Throws InputError naming the elements and slice where two shrunken elements overlap or one leaves
-/// the container (for a guided element: on a slice of one of its targets).
-void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
-                      const std::vector<Placement>& placements);
+/// the container (for a guided element: on a slice of one of its targets). When unguided elements overlap
+/// in a scene that asks for a number of them, the error says how many fit instead: it places fewer from
+/// `unguided_rng` (the generator place_unguided was given, as it was then) until they do.
+void check_placements(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
+                      const std::vector<Placement>& placements, const Rng& unguided_rng);
 
 }  // namespace animpak::scene_detail

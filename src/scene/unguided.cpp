@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <sstream>
 
 #include "animpak/error.hpp"
 #include "placement.hpp"
@@ -99,37 +101,49 @@ std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& w
   return picks;
 }
 
-}  // namespace
-
-std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
-                                      const std::vector<SpacetimeElement>& library,
-                                      const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes) {
-  const std::string file = scene.file.string();
+// The unguided elements a scene asks for: the per-element counts, the elements drawn by weight, and
+// whether it fills the container (no `count` and an element with a weight) or asks for `wanted` elements.
+struct Request {
   int fixed = 0;
   std::vector<int> weighted;
+  bool fill = false;
+  int wanted = 0;
+};
+
+Request request_of(const SceneSpec& scene) {
+  Request r;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     if (scene.elements[i].count)
-      fixed += *scene.elements[i].count;
+      r.fixed += *scene.elements[i].count;
     else if (scene.elements[i].weight > 0)
-      weighted.push_back(static_cast<int>(i));
+      r.weighted.push_back(static_cast<int>(i));
   }
-  const bool fill = !scene.count && !weighted.empty();
-  const int wanted = scene.count ? *scene.count : fixed;
+  r.fill = !scene.count && !r.weighted.empty();
+  r.wanted = scene.count ? *scene.count : r.fixed;
+  return r;
+}
+
+std::vector<Placement> unguided_placements(const SceneSpec& scene, const Container& container,
+                                           const std::vector<SpacetimeElement>& library,
+                                           const std::vector<Placement>& guided, Rng& rng, double& spacing) {
+  const std::string file = scene.file.string();
+  const Request request = request_of(scene);
+  const int fixed = request.fixed, wanted = request.wanted;
+  const bool fill = request.fill;
   if (scene.count && wanted < fixed)
     throw InputError(file + ": count: " + std::to_string(wanted) + " is less than the elements' own counts (" +
                      std::to_string(fixed) + "); raise count or lower the per-element counts");
-  if (scene.count && wanted > fixed && weighted.empty())
+  if (scene.count && wanted > fixed && request.weighted.empty())
     throw InputError(file + ": count: " + std::to_string(wanted) + " differs from the sum of the elements' counts (" +
                      std::to_string(fixed) + ") and no element has a weight to fill the rest");
 
-  double spacing = 0.0;
   const double margin = seed_margin(library, scene.params.placement.initial_scale);
   const std::vector<Vec2> seeds = unguided_seeds(scene, container, guided, fill, wanted, margin, rng, spacing);
   if (static_cast<int>(seeds.size()) < fixed)
     throw InputError(file + ": the elements' counts ask for " + std::to_string(fixed) + " elements but only " +
                      std::to_string(seeds.size()) + " seeds fit at params.seed_spacing " + std::to_string(spacing) +
                      "; lower the counts or the spacing");
-  const std::vector<int> picks = library_picks(scene, weighted, seeds.size(), rng);
+  const std::vector<int> picks = library_picks(scene, request.weighted, seeds.size(), rng);
 
   std::vector<Placement> out;
   std::vector<int> per_library(library.size(), 0);
@@ -154,47 +168,207 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
       p.phase = static_cast<int>(std::lround(spec.phase * period)) % period;
     out.push_back(std::move(p));
   }
-  notes.push_back("seeded " + std::to_string(out.size()) + " unguided element(s) at spacing " +
-                  std::to_string(spacing) + (fill ? " (fill)" : ""));
   return out;
 }
 
-void check_placements(const Container& container, const std::vector<SpacetimeElement>& library,
-                      const std::vector<Placement>& placements) {
-  const std::size_t n = placements.size();
-  std::vector<std::vector<std::vector<Vec2>>> rings(n);  // [instance][slice] → boundary ring
-  std::vector<Box> boxes(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const SpacetimeElement& e = library[placements[i].library];
-    // A guided element's slices between targets lie on the straight path between them, which may
-    // cross a hole or leave a concave container: place_guided warns, and the boundary force (Eq. 4)
-    // pushes them in. Only the slices of its targets must start inside.
-    std::vector<bool> must_fit(e.slice_count, !placements[i].guided);
-    for (const Placement::Key& key : placements[i].keys) must_fit[key.slice] = true;
-    for (int s = 0; s < e.slice_count; ++s) {
-      std::vector<Vec2> ring;
-      for (int v = 0; v < e.slice.boundary_count; ++v) {
-        const Vec2 p = placed(placements[i], e, s, v);
-        if (must_fit[s] && !container.contains(p))
-          throw InputError("element " + placements[i].name + " lies outside the container at slice " +
-                           std::to_string(s) + " after shrinking; move its seed or targets inward");
-        ring.push_back(p);
-        boxes[i].add(p);
-      }
-      rings[i].push_back(std::move(ring));
+// The shrunken boundary ring of every slice of one instance, and their box.
+struct PlacedRings {
+  std::vector<std::vector<Vec2>> rings;  // [slice] → boundary ring
+  Box box;
+};
+
+PlacedRings placed_rings(const Placement& p, const SpacetimeElement& e) {
+  PlacedRings out;
+  for (int s = 0; s < e.slice_count; ++s) {
+    std::vector<Vec2> ring;
+    for (int v = 0; v < e.slice.boundary_count; ++v) {
+      ring.push_back(placed(p, e, s, v));
+      out.box.add(ring.back());
     }
+    out.rings.push_back(std::move(ring));
   }
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (boxes[i].max.x < boxes[j].min.x || boxes[j].max.x < boxes[i].min.x || boxes[i].max.y < boxes[j].min.y ||
-          boxes[j].max.y < boxes[i].min.y)
-        continue;
-      for (std::size_t s = 0; s < rings[i].size(); ++s)
-        if (rings_overlap(rings[i][s], rings[j][s]))
-          throw InputError("elements " + placements[i].name + " and " + placements[j].name + " overlap at slice " +
-                           std::to_string(s) +
-                           " after shrinking; lower params.initial_scale or move their seeds or targets apart");
+  return out;
+}
+
+// The first slice at which an instance has a vertex outside the container, or -1. A guided element's
+// slices between targets lie on the straight path between them, which may cross a hole or leave a
+// concave container: place_guided warns, and the boundary force (Eq. 4) pushes them in. Only the slices
+// of its targets must start inside.
+int slice_outside(const Container& container, const Placement& p, const PlacedRings& placed) {
+  std::vector<bool> must_fit(placed.rings.size(), !p.guided);
+  for (const Placement::Key& key : p.keys) must_fit[key.slice] = true;
+  for (std::size_t s = 0; s < placed.rings.size(); ++s)
+    if (must_fit[s] &&
+        !std::all_of(placed.rings[s].begin(), placed.rings[s].end(), [&](Vec2 q) { return container.contains(q); }))
+      return static_cast<int>(s);
+  return -1;
+}
+
+struct Overlap {
+  std::size_t a = 0, b = 0;  // a < b
+  int slice = 0;
+};
+
+// The first pair of instances (a, b), b >= `from`, whose shrunken boundaries overlap on a slice.
+std::optional<Overlap> first_overlap(const std::vector<PlacedRings>& placed, std::size_t from) {
+  for (std::size_t j = from; j < placed.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const Box &bi = placed[i].box, &bj = placed[j].box;
+      if (bi.max.x < bj.min.x || bj.max.x < bi.min.x || bi.max.y < bj.min.y || bj.max.y < bi.min.y) continue;
+      for (std::size_t s = 0; s < placed[i].rings.size(); ++s)
+        if (rings_overlap(placed[i].rings[s], placed[j].rings[s])) return Overlap{i, j, static_cast<int>(s)};
     }
+  return std::nullopt;
+}
+
+std::vector<PlacedRings> rings_of(const std::vector<SpacetimeElement>& library,
+                                  const std::vector<Placement>& placements) {
+  std::vector<PlacedRings> out;
+  for (const Placement& p : placements) out.push_back(placed_rings(p, library[p.library]));
+  return out;
+}
+
+// The scene with `k` unguided elements: `count` k where it has one, and the elements' counts scaled to add
+// up to k (largest remainders first) where they ask for more than k.
+SceneSpec with_count(const SceneSpec& scene, const Request& request, int k) {
+  SceneSpec trial = scene;
+  if (scene.count) trial.count = k;
+  if (request.fixed <= k) return trial;
+  std::vector<std::pair<double, std::size_t>> remainders;
+  int given = 0;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    if (!scene.elements[i].count) continue;
+    const double share = static_cast<double>(*scene.elements[i].count) * k / request.fixed;
+    trial.elements[i].count = static_cast<int>(std::floor(share));
+    given += *trial.elements[i].count;
+    remainders.emplace_back(share - std::floor(share), i);
+  }
+  std::stable_sort(remainders.begin(), remainders.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  for (std::size_t r = 0; given < k && r < remainders.size(); ++r, ++given)
+    ++*trial.elements[remainders[r].second].count;
+  return trial;
+}
+
+// What goes wrong in the placement build_world makes for `trial` from `rng`: an unguided element outside
+// the container or overlapping another; nothing when every unguided element fits.
+std::optional<std::string> unguided_misfit(const SceneSpec& trial, const Container& container,
+                                           const std::vector<SpacetimeElement>& library, Rng rng) {
+  std::vector<std::string> notes;
+  std::vector<Placement> all = place_guided(trial, container, library, notes);
+  const std::size_t guided = all.size();
+  try {
+    double spacing = 0.0;
+    for (Placement& p : unguided_placements(trial, container, library, all, rng, spacing)) all.push_back(std::move(p));
+  } catch (const InputError&) {
+    return std::string("the seeds do not fit");
+  }
+  const std::vector<PlacedRings> placed = rings_of(library, all);
+  for (std::size_t i = guided; i < all.size(); ++i)
+    if (const int s = slice_outside(container, all[i], placed[i]); s >= 0)
+      return "element " + all[i].name + " lies outside the container at slice " + std::to_string(s);
+  if (const std::optional<Overlap> o = first_overlap(placed, guided))
+    return "elements " + all[o->a].name + " and " + all[o->b].name + " overlap at slice " + std::to_string(o->slice);
+  return std::nullopt;
+}
+
+std::string shown(double v) {
+  std::ostringstream text;
+  text << v;
+  return text.str();
+}
+
+// What to lower to place `n` elements: the scene's `count`, the one element's count, or all of theirs.
+std::string lower_count_to(const SceneSpec& scene, const Request& request, int n) {
+  const SceneSpec trial = with_count(scene, request, n);
+  std::vector<std::size_t> counted;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i)
+    if (scene.elements[i].count && *scene.elements[i].count > 0) counted.push_back(i);
+  std::string elements;
+  for (std::size_t i : counted)
+    elements += std::string(elements.empty() ? "" : ", ") + "\"" + scene.elements[i].name + "\" " +
+                std::to_string(*trial.elements[i].count);
+  if (scene.count && request.fixed <= n) return "`count` to " + std::to_string(n);
+  if (scene.count) return "`count` to " + std::to_string(n) + " and the elements' counts to " + elements;
+  if (counted.size() == 1)
+    return "elements[" + std::to_string(counted.front()) + "] (\"" + scene.elements[counted.front()].name +
+           "\") `count` to " + std::to_string(n);
+  return "the elements' counts to add up to " + std::to_string(n) + " (" + elements + ")";
+}
+
+// The error for unguided elements that overlap because the scene asks for more than fit: how many do fit,
+// found by placing them as build_world does (the same seeds from the same generator) for fewer and fewer;
+// the largest count that places without overlap is what the message offers, and the next one overlaps.
+[[noreturn]] void too_many(const SceneSpec& scene, const Container& container,
+                           const std::vector<SpacetimeElement>& library, const Rng& unguided_rng,
+                           const std::string& overlap) {
+  const Request request = request_of(scene);
+  const double scale = scene.params.placement.initial_scale;
+  int fits = 0, overlaps = request.wanted;  // 0 unguided elements always fit; the scene's count did not
+  std::string misfit = overlap;             // what goes wrong with `overlaps` elements
+  while (overlaps - fits > 1) {
+    const int mid = fits + (overlaps - fits) / 2;
+    if (std::optional<std::string> why =
+            unguided_misfit(with_count(scene, request, mid), container, library, unguided_rng))
+      overlaps = mid, misfit = *why;
+    else
+      fits = mid;
+  }
+  // A smaller scale that fits them all: area goes with the square of the scale, so start from the scale
+  // at which the count that fits would cover as much as the count wanted, and step down until it places.
+  std::optional<double> smaller;
+  double lowest = 0.0;
+  for (const ParamInfo& info : param_table())
+    if (info.name == "initial_scale") lowest = info.min;
+  double s = scale * std::sqrt(std::max(fits, 1) / static_cast<double>(request.wanted));
+  for (int attempt = 0; attempt < 8 && !smaller; ++attempt, s *= 0.9) {
+    const double digit = std::pow(10.0, std::floor(std::log10(s)) - 2);  // 3 significant digits, rounded down
+    const double rounded = std::floor(s / digit) * digit;
+    if (rounded < lowest) break;
+    SceneSpec trial = scene;
+    trial.params.placement.initial_scale = rounded;
+    if (!unguided_misfit(trial, container, library, unguided_rng)) smaller = rounded;
+  }
+  throw InputError(scene.file.string() + ": " + std::to_string(request.wanted) + " elements requested, at most about " +
+                   std::to_string(fits) + " fit in the container at params.initial_scale " + shown(scale) +
+                   " (placed as pack places them, " + std::to_string(fits) + " do not overlap; with " +
+                   std::to_string(fits + 1) + ", " + misfit + "); lower " + lower_count_to(scene, request, fits) +
+                   " or lower params.initial_scale" +
+                   (smaller ? " (to " + shown(*smaller) + " all " + std::to_string(request.wanted) + " fit)" : ""));
+}
+
+}  // namespace
+
+std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
+                                      const std::vector<SpacetimeElement>& library,
+                                      const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes) {
+  double spacing = 0.0;
+  std::vector<Placement> out = unguided_placements(scene, container, library, guided, rng, spacing);
+  notes.push_back("seeded " + std::to_string(out.size()) + " unguided element(s) at spacing " +
+                  std::to_string(spacing) + (request_of(scene).fill ? " (fill)" : ""));
+  return out;
+}
+
+void check_placements(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
+                      const std::vector<Placement>& placements, const Rng& unguided_rng) {
+  const std::string file = scene.file.string();
+  const std::vector<PlacedRings> placed = rings_of(library, placements);
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const int s = slice_outside(container, placements[i], placed[i]);
+    if (s >= 0)
+      throw InputError(file + ": element " + placements[i].name + " lies outside the container at slice " +
+                       std::to_string(s) + " after shrinking; move its seed or targets inward");
+  }
+  const std::optional<Overlap> overlap = first_overlap(placed, 0);
+  if (!overlap) return;
+  const std::string pair = "elements " + placements[overlap->a].name + " and " + placements[overlap->b].name +
+                           " overlap at slice " + std::to_string(overlap->slice);
+  // Guided elements come first: a pair with an unguided element in a scene that asks for a number of them.
+  const Request request = request_of(scene);
+  if (!placements[overlap->b].guided && !request.fill && request.wanted > 0)
+    too_many(scene, container, library, unguided_rng, pair);
+  throw InputError(file + ": " + pair +
+                   " after shrinking; lower params.initial_scale or move their seeds or targets apart");
 }
 
 }  // namespace animpak::scene_detail

@@ -153,6 +153,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 
   Rng rng(scene.seed);
   std::vector<Placement> placements = scene_detail::place_guided(scene, container, library, world.notes);
+  const Rng unguided_rng = rng;
   std::vector<Placement> unguided =
       scene_detail::place_unguided(scene, container, library, placements, rng, world.notes);
   for (Placement& p : unguided) {
@@ -162,7 +163,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   if (placements.empty())
     throw InputError(scene.file.string() +
                      ": the scene places no element; give elements a count or weight, or add guided elements");
-  scene_detail::check_placements(container, library, placements);
+  scene_detail::check_placements(scene, container, library, placements, unguided_rng);
 
   Topology& topo = world.topology;
   topo.spring_begin.push_back(0);

@@ -104,3 +104,115 @@ TEST_CASE("animpak check --png: the art at the document's viewport, longer side 
   CHECK(alpha(16, 16) == 0);    // left half: nothing drawn
   CHECK(alpha(48, 16) == 255);  // right half: the square
 }
+
+TEST_CASE("animpak check --container: the heart's outline, no holes, its area and bounds instead of an element") {
+  const std::string heart = shapes_dir() + "/heart-container.path";
+  const CommandResult r = run_animpak("check " + heart + " --container --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  CHECK(report["ready"] == true);
+  CHECK_FALSE(report.contains("element"));
+  REQUIRE(report["paths"].size() == 1);
+  CHECK(report["paths"][0]["role"] == "outline");
+  CHECK_FALSE(report["paths"][0].contains("on_outline"));
+  const auto& c = report["container"];
+  CHECK(c["outline"]["path"] == 0);
+  CHECK(c["outline"]["points"] == 56);
+  CHECK(c["holes"].empty());
+  // The heart's tip is at y = 474 of its 500-unit artboard (shared/data/README.md); it is wider than tall.
+  const std::vector<double> bounds = c["bounds"];
+  CHECK(bounds[1] + bounds[3] == Approx(474.0).margin(1.0));
+  CHECK(bounds[2] > bounds[3]);
+  // A heart covers well over half its box but not all of it; without holes the area is the outline's.
+  const double area = c["area"];
+  CHECK(area > 0.5 * bounds[2] * bounds[3]);
+  CHECK(area < 0.9 * bounds[2] * bounds[3]);
+  CHECK(area == Approx(c["outline"]["area"].get<double>()));
+  const double scale = c["scale"];
+  CHECK(scale == Approx(1.0 / bounds[2]));
+  CHECK(c["unit_area"].get<double>() == Approx(area * scale * scale));
+
+  const CommandResult text = run_animpak("check " + heart + " --container");
+  CHECK(text.code == 0);
+  CHECK(text.out.find("outline    path 0 (path0): 56 points") != std::string::npos);
+  CHECK(text.out.find("holes      0") != std::string::npos);
+  CHECK(text.out.find("slice vertices") == std::string::npos);
+  CHECK(text.out.find("ready to pack into (as a container)") != std::string::npos);
+}
+
+TEST_CASE("animpak check SCENE.json: the scene's container with its outline and holes, as pack reads them") {
+  const CommandResult r =
+      run_animpak("check " + std::string(ANIMPAK_SOURCE_DIR) + "/examples/annulus/scene.json --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  CHECK(report["scene"].get<std::string>().find("annulus/scene.json") != std::string::npos);
+  CHECK(report["file"].get<std::string>().find("ring.svg") != std::string::npos);
+  CHECK(report["paths"][0]["role"] == "outline");
+  CHECK(report["paths"][1]["role"] == "hole");
+  // ring.svg: circles of radius 240 and 95 about (250, 250), flattened into polygons just inside them.
+  const auto& c = report["container"];
+  const double pi = 3.14159265358979;
+  REQUIRE(c["holes"].size() == 1);
+  CHECK(c["holes"][0]["id"] == "inner");
+  CHECK(c["outline"]["area"].get<double>() == Approx(pi * 240 * 240).epsilon(0.002));
+  CHECK(c["holes"][0]["area"].get<double>() == Approx(pi * 95 * 95).epsilon(0.002));
+  CHECK(c["area"].get<double>() == Approx(c["outline"]["area"].get<double>() - c["holes"][0]["area"].get<double>()));
+  const std::vector<double> bounds = c["bounds"];
+  CHECK(bounds == std::vector<double>{10, 10, 480, 480});
+
+  // The same SVG on its own has no hole (SVG paths are holes only when named): the inner circle is
+  // packed over, and the check says how to make it a hole.
+  const std::string ring = std::string(ANIMPAK_SOURCE_DIR) + "/examples/annulus/ring.svg";
+  const CommandResult plain = run_animpak("check " + ring + " --container --json");
+  REQUIRE(plain.code == 0);
+  const nlohmann::json unholed = nlohmann::json::parse(plain.out);
+  CHECK(unholed["container"]["holes"].empty());
+  CHECK(unholed["paths"][1]["role"] == "");
+  CHECK_THAT(plain.err, Catch::Matchers::Contains("path 1 (inner) lies inside the container's outline but is not a "
+                                                  "hole") &&
+                            Catch::Matchers::Contains("--holes 1"));
+  const CommandResult holed = run_animpak("check " + ring + " --container --holes 1 --outline 0 --json");
+  REQUIRE(holed.code == 0);
+  CHECK(nlohmann::json::parse(holed.out)["container"]["area"] == Approx(c["area"].get<double>()));
+  CHECK(holed.err.find("is not a hole") == std::string::npos);
+}
+
+TEST_CASE("animpak check --container: a .path hole (type 7) is counted and measured; bad hole indices exit 2") {
+  const animpak::test::TempDir scratch("animpak-check-");
+  // A 400 x 200 frame with a 100 x 100 hole.
+  const auto frame = scratch_svg(scratch, "frame.path",
+                                 "1\nforeground_color_rgb 0 -1,-1,-1 -1,-1,-1\n"
+                                 "background_color_rgb 0 200,200,200 255,255,255\n"
+                                 "0 1 0 0 0 400 0 400 200 0 200\n"
+                                 "0 1 7 100 50 200 50 200 150 100 150\n");
+  const CommandResult r = run_animpak("check " + frame.string() + " --container --json");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  const auto& c = report["container"];
+  CHECK(c["outline"]["area"] == Approx(80000));
+  REQUIRE(c["holes"].size() == 1);
+  CHECK(c["holes"][0]["path"] == 1);
+  CHECK(c["holes"][0]["area"] == Approx(10000));
+  CHECK(c["area"] == Approx(70000));
+  CHECK(c["unit_area"] == Approx(70000.0 / (400 * 400)));
+  const std::vector<double> bounds = c["bounds"];
+  CHECK(bounds == std::vector<double>{0, 0, 400, 200});
+  const CommandResult text = run_animpak("check " + frame.string() + " --container");
+  CHECK(text.out.find("holes      1:\n  path 1 (path1): 4 points, area 10000") != std::string::npos);
+  CHECK(text.out.find("area       70000 art units") != std::string::npos);
+
+  // Checked as an element, the hole path points at --container.
+  const CommandResult element = run_animpak("check " + frame.string());
+  CHECK(element.code == 0);
+  CHECK(element.err.find("has hole paths (.path type 7)") != std::string::npos);
+  CHECK(element.err.find("animpak check --container " + frame.string()) != std::string::npos);
+
+  const CommandResult missing = run_animpak("check " + frame.string() + " --container --holes 5 --json");
+  CHECK(missing.code == 2);
+  CHECK(nlohmann::json::parse(missing.out)["error"].get<std::string>().find(
+            "path 5: container.holes names a path the file does not have") != std::string::npos);
+  CHECK(run_animpak("check " + frame.string() + " --holes 1").code == 1);  // --holes needs --container
+}

@@ -299,6 +299,38 @@ TEST_CASE(
   CHECK(run_animpak("render " + out.string() + " --format lottie --interpolation smooth").code != 0);
 }
 
+TEST_CASE("animpak pack/render --format: spaces around the items do not count, an empty item is refused") {
+  const Sandbox box("format-list");
+  const fs::path out = box.path("out");
+  const CommandResult packed = run_animpak("pack " + box.scene() + " --out " + out.string() +
+                                           " --max-iterations 10 --frames 2 --size 32 --format 'svg, lottie'");
+  INFO(packed.err);
+  REQUIRE(packed.code == 0);
+  CHECK(fs::is_regular_file(out / "animation.json"));
+  CHECK(fs::is_regular_file(out / "frames" / "frame_0000.svg"));
+  fs::remove(out / "animation.json");
+  const CommandResult rendered =
+      run_animpak("render " + out.string() + " --frames 2 --size 32 --format ' lottie ,svg-anim '");
+  INFO(rendered.err);
+  REQUIRE(rendered.code == 0);
+  CHECK(fs::is_regular_file(out / "animation.json"));
+  CHECK(fs::is_regular_file(out / "animation.svg"));
+
+  for (const char* list : {"'svg,,lottie'", "'svg, '", "'svg, ,lottie'"}) {
+    const CommandResult empty = run_animpak("render " + out.string() + " --frames 2 --size 32 --format " + list);
+    INFO(list << ": " << empty.err);
+    CHECK(empty.code == 1);
+    CHECK_THAT(empty.err, Contains("an empty item (a comma too many)") && Contains("e.g. --format gif,mp4"));
+  }
+  // A lone comma names no format (it used to take the next option, --frames, for one).
+  const CommandResult none = run_animpak("render " + out.string() + " --format , --frames 2 --size 32");
+  CHECK(none.code == 1);
+  CHECK_THAT(none.err, Contains("--format: \",\": no format given"));
+  const CommandResult unknown = run_animpak("render " + out.string() + " --format 'svg, mp5'");
+  CHECK(unknown.code == 1);
+  CHECK_THAT(unknown.err, Contains("mp5: expected png, gif, mp4"));
+}
+
 TEST_CASE("animpak render --background, --container and --format dotlottie, and --no-container is --container none") {
   const Sandbox box("background");
   const fs::path out = box.path("out");

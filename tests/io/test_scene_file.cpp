@@ -15,6 +15,7 @@
 
 using namespace animpak;
 using Catch::Matchers::Contains;
+using Catch::Matchers::EndsWith;
 using Catch::Matchers::StartsWith;
 
 namespace {
@@ -174,6 +175,33 @@ TEST_CASE("load_scene: a missing scene file") {
 TEST_CASE("parse_scene: malformed JSON gives line and column") {
   CHECK_THAT(scene_error_of("{\n  \"container\": \"heart-container.path\",\n  \"elements\": [}\n"),
              StartsWith("scene.json: malformed JSON at line 3, column 16:"));
+}
+
+TEST_CASE("parse_scene: a missing or trailing comma is named with its line") {
+  // Between two members on separate lines: the parser stops at the second, the comma belongs after the first.
+  CHECK_THAT(
+      scene_error_of("{\n  \"container\": \"heart-container.path\"\n  \"elements\": []\n}\n"),
+      StartsWith("scene.json: malformed JSON at line 3, column 12:") && EndsWith("(missing comma after line 2?)"));
+  // After a number, a closing bracket and a literal, in arrays and objects.
+  CHECK_THAT(scene_error_of(scene(R"([{"art": "bird.path", "count": 3)"
+                                  "\n"
+                                  R"("weight": 1}])")),
+             EndsWith("(missing comma after line 1?)"));
+  CHECK_THAT(scene_error_of(scene("[{\"art\": \"bird.path\"}\n{\"art\": \"bird.path\"}]")),
+             Contains("expected ']'") && EndsWith("(missing comma after line 1?)"));
+  CHECK_THAT(scene_error_of(scene(kBird, ", \"loop\": true\n\"seed\": 1")), EndsWith("(missing comma after line 1?)"));
+  // On one line, a comma inside a string does not count.
+  CHECK_THAT(scene_error_of(R"({"container": "heart, \"container\".path" "elements": []})"),
+             EndsWith("(missing comma before column 43 of line 1?)"));
+  // A trailing comma before '}' and before ']', named at the comma's line.
+  CHECK_THAT(scene_error_of(scene(kBird, ",\n  \"seed\": 1,\n")),
+             StartsWith("scene.json: malformed JSON at line 3, column 1:") &&
+                 EndsWith("(trailing comma at line 2 before the '}': JSON does not allow it; remove the comma)"));
+  CHECK_THAT(scene_error_of(scene("[\n  {\"art\": \"bird.path\"},\n]")),
+             EndsWith("(trailing comma at line 2 before the ']': JSON does not allow it; remove the comma)"));
+  // Other slips get no hint: a missing colon, a bracket with nothing to close.
+  CHECK_THAT(scene_error_of(R"({"container" "heart-container.path"})"), EndsWith("expected ':'"));
+  CHECK_THAT(scene_error_of("{\n  \"elements\": [}\n"), !Contains("comma"));
 }
 
 TEST_CASE("parse_scene: a key given twice in one object") {

@@ -30,6 +30,8 @@ ArtShape frame_with_hole() {
 TEST_CASE("make_container: normalizes the longer side to 1, centred, and finds type-7 holes") {
   const Container c = make_container(frame_with_hole(), {});
   REQUIRE(c.holes.size() == 1);
+  CHECK(c.outline_path == 0);  // by source index: the frame is drawn after its hole
+  CHECK(c.hole_paths == std::vector<int>{1});
   const Box box = c.bounds();
   CHECK(box.width() == Approx(1.0));
   CHECK(box.height() == Approx(0.5));
@@ -47,6 +49,7 @@ TEST_CASE("make_container: explicit outline and holes by source index, and their
   spec.outline = 0;
   spec.holes = std::vector<int>{};
   CHECK(make_container(frame_with_hole(), spec).holes.empty());
+  CHECK(make_container(frame_with_hole(), spec).outline_path == 0);
   spec.outline = 5;
   CHECK_THROWS_WITH(make_container(frame_with_hole(), spec),
                     Catch::Contains("frame.path: path 5") && Catch::Contains("container.outline"));

@@ -226,6 +226,29 @@ TEST_CASE("build_world: overlapping shrunken elements and guided paths leaving t
   CHECK_THAT(outside, Contains("runaway") && Contains("outside the container"));
 }
 
+TEST_CASE("build_world: more unguided elements than fit say how many do; that many place") {
+  const std::string error = error_of(star_scene(400, kSlices, 1));
+  INFO(error);
+  const std::string lead = "tiny.json: 400 elements requested, at most about ";
+  REQUIRE(error.rfind(lead, 0) == 0);
+  const int fits = std::stoi(error.substr(lead.size()));
+  CHECK(fits > 5);
+  CHECK(fits < 400);
+  CHECK_THAT(error, Contains(" fit in the container at params.initial_scale 0.07") &&
+                        Contains("lower elements[0] (\"star\") `count` to " + std::to_string(fits)) &&
+                        Contains("overlap at slice"));
+  // The count it offers places; one more overlaps, and says the same count again.
+  CHECK(world_of(star_scene(fits, kSlices, 1)).elements.size() == static_cast<std::size_t>(fits));
+  CHECK_THAT(error_of(star_scene(fits + 1, kSlices, 1)), Contains("about " + std::to_string(fits) + " fit"));
+  // The smaller initial_scale it offers fits all 400.
+  const std::string to = "lower params.initial_scale (to ";
+  REQUIRE(error.find(to) != std::string::npos);
+  const std::string scale = error.substr(error.find(to) + to.size(),
+                                         error.find(' ', error.find(to) + to.size()) - error.find(to) - to.size());
+  CHECK(std::stod(scale) < 0.07);
+  CHECK(world_of(star_scene(400, kSlices, 1, {"", R"("initial_scale": )" + scale})).elements.size() == 400);
+}
+
 TEST_CASE("build_world: the same scene and seed give identical bytes, another seed moves the seeds") {
   const World a = world_of(star_scene(3, kSlices, 7)), b = world_of(star_scene(3, kSlices, 7));
   const Topology &p = a.topology, &q = b.topology;
