@@ -115,8 +115,8 @@ struct SceneSpec {
 SceneSpec load_scene(const std::filesystem::path& file);
 
 /// Where an art reference is read from: given the reference as written in the scene and `resolved`, that
-/// reference against the base folder, returns the file to read (a packed folder's copy: README, "The output
-/// folder").
+/// reference against the base folder, returns the file to read (a packed folder's copy: docs/cli.md,
+/// "The output folder").
 using ArtLocator =
     std::function<std::filesystem::path(const std::string& written, const std::filesystem::path& resolved)>;
 

@@ -1,4 +1,4 @@
-// What makes a folder `animpak pack` wrote hold one run and travel (README, "The output folder"): input/
+// What makes a folder `animpak pack` wrote hold one run and travel (docs/cli.md, "The output folder"): input/
 // carries the scene and every art file it references, with their SHA-256 in input/manifest.json, and a
 // render is written into a scratch folder and swapped in whole, replacing every file of the run before.
 #pragma once

@@ -1,4 +1,4 @@
-// An output folder is one run, and it travels (README, "The output folder"): a render replaces every
+// An output folder is one run, and it travels (docs/cli.md, "The output folder"): a render replaces every
 // rendered file of the run before and nothing else, pack does not overwrite a packing unasked, a copied
 // folder renders from its input/ copies, and a resume refuses what cannot apply and leaves a finished
 // packing alone.
