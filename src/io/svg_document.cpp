@@ -132,10 +132,22 @@ void Document::index(xmlNode* node, int depth) {
                              "flatten the groups in an editor"));
   }
   if (!node->ns && svg_ns_) xmlSetNs(node, svg_ns_);
+  if (is_svg_element(node, "ellipse")) resolve_auto_radii(node);
   const std::string id = attribute(node, "id");
   if (!id.empty()) by_id_.emplace(id, node);  // the first element with an id wins, as in browsers
   for (xmlNode* c = node->children; c; c = c->next)
     if (c->type == XML_ELEMENT_NODE) index(c, depth + 1);
+}
+
+void Document::resolve_auto_radii(xmlNode* ellipse) {
+  // SVG 2: an ellipse's rx or ry that is auto (or absent) takes the other's value, as svgpp cannot (it
+  // reads SVG 1.1, where both are required). A percentage is of the other axis, so it is left for the
+  // importer to report.
+  const std::string rx = trim(attribute(ellipse, "rx")), ry = trim(attribute(ellipse, "ry"));
+  const auto is_auto = [](const std::string& v) { return v.empty() || v == "auto"; };
+  const auto is_length = [&](const std::string& v) { return !is_auto(v) && v.find('%') == std::string::npos; };
+  if (is_auto(rx) && is_length(ry)) xmlSetProp(ellipse, BAD_CAST "rx", BAD_CAST ry.c_str());
+  if (is_auto(ry) && is_length(rx)) xmlSetProp(ellipse, BAD_CAST "ry", BAD_CAST rx.c_str());
 }
 
 void Document::apply_class_styles() {
