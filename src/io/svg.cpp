@@ -507,6 +507,7 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
   ArtShape out;
   out.source = name;
   State state(doc, options, out);
+  for (const auto& [what, problem] : doc.notes()) state.warn(what, problem);
   GroupContext root(state, doc.root());
   try {
     Traversal::load_document(doc.root(), root);

@@ -3,6 +3,8 @@
 #include <libxml/parser.h>
 #include <libxml/xmlerror.h>
 
+#include <algorithm>
+#include <cctype>
 #include <limits>
 #include <sstream>
 
@@ -150,13 +152,75 @@ void Document::resolve_auto_radii(xmlNode* ellipse) {
   if (is_auto(ry) && is_length(rx)) xmlSetProp(ellipse, BAD_CAST "ry", BAD_CAST rx.c_str());
 }
 
+namespace {
+
+// One compound selector without combinators: an optional type (or *), then #ids and .classes.
+struct Selector {
+  std::string type;  // empty or "*": any element
+  std::vector<std::string> ids, classes;
+  bool parse(const std::string& text) {
+    size_t i = 0;
+    const auto ident = [&] {
+      const size_t start = i;
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' ||
+                                 text[i] == '_' || static_cast<unsigned char>(text[i]) >= 0x80))
+        ++i;
+      return text.substr(start, i - start);
+    };
+    if (i < text.size() && text[i] == '*') {
+      ++i;
+    } else {
+      type = ident();
+    }
+    while (i < text.size()) {
+      const char c = text[i++];
+      if (c != '.' && c != '#') return false;
+      const std::string name = ident();
+      if (name.empty()) return false;
+      (c == '.' ? classes : ids).push_back(name);
+    }
+    return !text.empty();
+  }
+  bool matches(const xmlNode* n, const std::vector<std::string>& node_classes) const {
+    if (!type.empty() && !xmlStrEqual(n->name, BAD_CAST type.c_str())) return false;
+    for (const std::string& id : ids)
+      if (attribute(n, "id") != id) return false;
+    for (const std::string& c : classes)
+      if (std::find(node_classes.begin(), node_classes.end(), c) == node_classes.end()) return false;
+    return true;
+  }
+  // CSS specificity (ids, classes, types) as one comparable number.
+  long specificity() const {
+    return static_cast<long>(ids.size()) * 1000000 + static_cast<long>(classes.size()) * 1000 + (type.empty() ? 0 : 1);
+  }
+};
+
+struct Rule {
+  Selector selector;
+  size_t order;
+  std::string declarations;
+};
+
+// Declarations that change what is drawn; a rule the importer cannot apply is reported only if it has one.
+bool draws(const std::string& declarations) {
+  static const char* const properties[] = {"fill",  "stroke",      "opacity", "transform", "display", "visibility",
+                                           "color", "paint-order", "clip",    "mask",      "filter",  "overflow"};
+  for (const char* p : properties)
+    if (declarations.find(p) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
 void Document::apply_class_styles() {
-  // Illustrator writes `<style>.st0{fill:#F00;}</style>` and class="st0". Class rules outrank
-  // presentation attributes and lose to the inline style, which is exactly where prefixing the
-  // `style` attribute puts them. Only `.class` selectors (Illustrator's only kind) are applied.
-  std::map<std::string, std::string> rules;
+  // Exporters write `<style>.st0{fill:#F00;}</style>` and class="st0" (Illustrator), or type and id
+  // rules. A rule outranks presentation attributes and loses to the inline style; among rules, the more
+  // specific wins, then the later (CSS 2.1, 6.4.3). Prefixing the `style` attribute with the matching
+  // rules in that order puts each declaration exactly there. Compound selectors of a type, ids and classes
+  // are applied; combinators, attribute selectors and pseudo-classes are not, and are reported.
+  std::vector<Rule> rules;
   std::vector<xmlNode*> stack{root_};
-  std::vector<xmlNode*> classed;
+  std::vector<xmlNode*> elements;
   while (!stack.empty()) {
     xmlNode* n = stack.back();
     stack.pop_back();
@@ -178,22 +242,35 @@ void Document::apply_class_styles() {
         std::string sel;
         while (std::getline(selectors, sel, ',')) {
           sel = trim(sel);
-          if (sel.size() > 1 && sel[0] == '.' && sel.find_first_of(" .:#>[") == 0 &&
-              sel.find_first_of(" .:#>[", 1) == std::string::npos)
-            rules[sel.substr(1)] += decls + ";";
+          if (sel.empty() || sel[0] == '@') continue;  // at-rules (@font-face, @media) hold no art styles
+          Selector parsed;
+          if (parsed.parse(sel)) {
+            rules.push_back({parsed, rules.size(), decls});
+          } else if (draws(decls)) {
+            notes_.push_back({"<style> at line " + std::to_string(xmlGetLineNo(n)),
+                              "CSS selector \"" + sel.substr(0, 60) +
+                                  "\" is not supported (only a type, #id and .class, without combinators); "
+                                  "its rule is ignored"});
+          }
         }
       }
     }
-    if (!attribute(n, "class").empty()) classed.push_back(n);
+    elements.push_back(n);
     for (xmlNode* c = n->children; c; c = c->next)
       if (c->type == XML_ELEMENT_NODE) stack.push_back(c);
   }
   if (rules.empty()) return;
-  for (xmlNode* n : classed) {
-    std::istringstream classes(attribute(n, "class"));
-    std::string cls, prefix;
-    while (classes >> cls)
-      if (auto it = rules.find(cls); it != rules.end()) prefix += it->second;
+  std::stable_sort(rules.begin(), rules.end(), [](const Rule& a, const Rule& b) {
+    return a.selector.specificity() != b.selector.specificity() ? a.selector.specificity() < b.selector.specificity()
+                                                                : a.order < b.order;
+  });
+  for (xmlNode* n : elements) {
+    std::istringstream in(attribute(n, "class"));
+    std::vector<std::string> classes;
+    for (std::string c; in >> c;) classes.push_back(c);
+    std::string prefix;
+    for (const Rule& rule : rules)
+      if (rule.selector.matches(n, classes)) prefix += rule.declarations + ";";
     if (prefix.empty()) continue;
     const std::string style = prefix + attribute(n, "style");
     xmlSetProp(n, BAD_CAST "style", BAD_CAST style.c_str());

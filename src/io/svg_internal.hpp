@@ -75,6 +75,8 @@ class Document {
   xmlNode* root() const { return root_; }
   xmlNode* find(const std::string& id) const;
   const std::string& name() const { return name_; }
+  /// What the document itself could not apply, as (element, problem) warnings.
+  const std::vector<std::pair<std::string, std::string>>& notes() const { return notes_; }
 
  private:
   void index(xmlNode* node, int depth);
@@ -85,6 +87,7 @@ class Document {
   xmlNode* root_ = nullptr;
   xmlNs* svg_ns_ = nullptr;
   std::map<std::string, xmlNode*> by_id_;
+  std::vector<std::pair<std::string, std::string>> notes_;
 };
 
 /// The warning for path data `d` that svgpp's grammar read up to offset `stop` only: the character to

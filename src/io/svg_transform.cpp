@@ -246,11 +246,16 @@ std::optional<Vec2> parse_transform_origin(const std::string& text, double box_w
   };
   std::vector<Value> values;
   for (const std::string& w : words) {
-    if (w == "left") values.push_back({'x', 0.0, {}});
-    else if (w == "right") values.push_back({'x', 1.0, {}});
-    else if (w == "top") values.push_back({'y', 0.0, {}});
-    else if (w == "bottom") values.push_back({'y', 1.0, {}});
-    else if (w == "center") values.push_back({'?', 0.5, {}});
+    if (w == "left")
+      values.push_back({'x', 0.0, {}});
+    else if (w == "right")
+      values.push_back({'x', 1.0, {}});
+    else if (w == "top")
+      values.push_back({'y', 0.0, {}});
+    else if (w == "bottom")
+      values.push_back({'y', 1.0, {}});
+    else if (w == "center")
+      values.push_back({'?', 0.5, {}});
     else {
       size_t i = 0;
       Quantity q;
