@@ -39,8 +39,7 @@ double area_of(const animpak::ArtPath& path) {
 
 }  // namespace
 
-TEST_CASE("svg structure: a nested svg places its viewBox by preserveAspectRatio and clips to its viewport",
-          "[svg]") {
+TEST_CASE("svg structure: a nested svg places its viewBox by preserveAspectRatio and clips to its viewport", "[svg]") {
   // viewBox 10 × 10 in an 80 × 40 viewport at (10, 10): meet scales by 4 and xMax puts the viewBox at
   // x 50…90; the rect from -20 to 5 (user units) reaches x -30…70, y -70…30 and is cut to the viewport.
   const auto meet = parse(R"~(<svg x="10" y="10" width="80" height="40" viewBox="0 0 10 10"
@@ -209,8 +208,9 @@ TEST_CASE("svg structure: an invalid CSS transform is dropped for the attribute,
   require_box(box_of(art.paths[1]), 0, 0, 1, 1);
   require_box(box_of(art.paths[2]), 0, 0, 1, 1);
   INFO(art.warnings.size());
-  CHECK(has_warning(art, "test.svg: rect#a: invalid CSS transform \"translate(1em, 0)\" (translate(): unit \"em\" is "
-                         "not supported here (give px or plain numbers)) ignored; the transform attribute is used"));
+  CHECK(has_warning(art,
+                    "test.svg: rect#a: invalid CSS transform \"translate(1em, 0)\" (translate(): unit \"em\" is "
+                    "not supported here (give px or plain numbers)) ignored; the transform attribute is used"));
   CHECK(has_warning(art, "rect#b: invalid CSS transform \"rotateX(10deg)\" (rotatex() is a 3D transform"));
   CHECK(has_warning(art, "rect#c: invalid transform \"scale(2\""));
 }
@@ -235,9 +235,9 @@ TEST_CASE("svg structure: transform-origin by lengths, percentages of the viewpo
     require_box(scale_about("50% 50%", css), 60, 35, 80, 55);
     require_box(scale_about("right bottom", css), 110, 60, 130, 80);
     require_box(scale_about("bottom right", css), 110, 60, 130, 80);
-    require_box(scale_about("top", css), 60, 10, 80, 30);    // center top
-    require_box(scale_about("left", css), 10, 35, 30, 55);   // left center
-    require_box(scale_about("40px", css), 30, 35, 50, 55);   // 40px center
+    require_box(scale_about("top", css), 60, 10, 80, 30);   // center top
+    require_box(scale_about("left", css), 10, 35, 30, 55);  // left center
+    require_box(scale_about("40px", css), 30, 35, 50, 55);  // 40px center
     require_box(scale_about("25% 40px 0", css), 35, 30, 55, 50);
     require_box(scale_about("10px top", css), 15, 10, 35, 30);
   }
