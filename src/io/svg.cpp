@@ -238,7 +238,7 @@ std::string css_property(const xmlNode* node, const char* name) {
 void BaseContext::apply_own_transform() {
   // CSS Transforms 1 makes `transform` a property with the attribute its presentation attribute, so a style
   // rule or the style attribute wins over the attribute, as in browsers (rsvg-convert 2.54 lets the
-  // attribute win; docs/check.md, "SVG structure"). An invalid declaration is dropped, as CSS drops it,
+  // attribute win; docs/scene-format.md, "SVG structure"). An invalid declaration is dropped, as CSS drops it,
   // and the attribute applies.
   const std::optional<std::string> declared = declared_style(node_, "transform");
   const std::string own = trimmed(attribute(node_, "transform"));

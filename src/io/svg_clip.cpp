@@ -2,7 +2,7 @@
 // such an element draws to its viewport unless `overflow` is visible. A path that crosses the edge is cut
 // with Clipper, as the outline is (src/element/outline.cpp): its fill becomes the fill inside the clip, and
 // its stroke, drawn with round joins and caps as everywhere in animpak, becomes a filled band inside the
-// clip (docs/check.md, "SVG structure").
+// clip (docs/scene-format.md, "SVG structure").
 #include <algorithm>
 #include <cmath>
 #include <polyclipping/clipper.hpp>

@@ -1,7 +1,7 @@
 // The `transform` of an element as the attribute (SVG 1.1, 7.6) or as the CSS property (CSS Transforms 1,
 // which SVG 2 makes the attribute a presentation attribute of), and `transform-origin`; lengths as SVG writes
-// them. Parsed here rather than by svgpp, whose grammar knows the attribute only (docs/check.md, "SVG
-// structure").
+// them. Parsed here rather than by svgpp, whose grammar knows the attribute only (docs/scene-format.md,
+// "SVG structure").
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
