@@ -391,19 +391,18 @@ void ShapeContext::on_exit_element() {
     if (!why.empty()) state_->warn(what(), why);
   }
   if (path.polylines.empty()) return;
-  if (path.stroke.enabled) {
-    warn_stretched_stroke(path.stroke_width);
-    warn_reduced_stroke(path.polylines);
-  }
   path.id = attribute(node_, "id");
   path.fill_rule = style_.fill_rule;
   path.paint_order = style_.paint_order;
-  if (!clips_) {
-    path.source_index = static_cast<int>(state_->out.paths.size());
-    state_->out.paths.push_back(std::move(path));
-    return;
+  // What a nested viewport clips away entirely is not drawn, and nothing is said of its stroke.
+  std::vector<ArtPath> pieces;
+  if (clips_) pieces = clip_to_viewports(path, *clips_, state_->options.flatten_tolerance);
+  if (path.stroke.enabled && (!clips_ || !pieces.empty())) {
+    warn_stretched_stroke(path.stroke_width);
+    warn_reduced_stroke(path.polylines);
   }
-  for (ArtPath& piece : clip_to_viewports(std::move(path), *clips_, state_->options.flatten_tolerance)) {
+  if (!clips_) pieces.push_back(std::move(path));
+  for (ArtPath& piece : pieces) {
     piece.source_index = static_cast<int>(state_->out.paths.size());
     state_->out.paths.push_back(std::move(piece));
   }

@@ -238,11 +238,22 @@ void Document::apply_class_styles() {
         const auto brace = block.find('{');
         if (brace == std::string::npos) continue;
         const std::string decls = trim(block.substr(brace + 1));
-        std::istringstream selectors(block.substr(0, brace));
+        // A statement at-rule before the selectors (`@import url(x);`) ends at its semicolon.
+        std::string prelude = block.substr(0, brace);
+        if (const auto semicolon = prelude.rfind(';'); semicolon != std::string::npos) prelude.erase(0, semicolon + 1);
+        std::istringstream selectors(prelude);
         std::string sel;
         while (std::getline(selectors, sel, ',')) {
           sel = trim(sel);
-          if (sel.empty() || sel[0] == '@') continue;  // at-rules (@font-face, @media) hold no art styles
+          if (sel.empty()) continue;
+          if (sel[0] == '@') {
+            // @font-face and the like hold no art styles, and @import is never loaded; the rules inside
+            // @media or @supports are not applied, and that is said when they would draw.
+            if ((sel.rfind("@media", 0) == 0 || sel.rfind("@supports", 0) == 0) && draws(decls))
+              notes_.push_back({"<style> at line " + std::to_string(xmlGetLineNo(n)),
+                                sel.substr(0, sel.find(' ')) + " rules are not applied; their styles are ignored"});
+            continue;
+          }
           Selector parsed;
           if (parsed.parse(sel)) {
             rules.push_back({parsed, rules.size(), decls});

@@ -108,12 +108,13 @@ TEST_CASE("svg structure: overflow visible, nested clips, rotated viewports and 
                              R"~(width="100" height="100")~");
   CHECK(area_of(only_path(rotated)) == Approx(400).epsilon(1e-6));
   // Art outside the viewport is gone; art inside is untouched (same points as without the viewport).
-  const auto outside = parse(R"~(<svg width="20" height="20"><rect x="30" width="5" height="5"/>
+  const auto outside = parse(R"~(<svg width="20" height="20"><rect x="30" width="5" height="5" stroke="#000"/>
       <rect id="in" x="5" y="5" width="5" height="5"/></svg>)~",
                              R"~(width="100" height="100")~");
   REQUIRE(only_path(outside).id == "in");
   require_points(outside.paths[0].polylines.at(0).points, {{5, 5}, {10, 5}, {10, 10}, {5, 10}});
   CHECK(outside.paths[0].polylines[0].closed);
+  CHECK(outside.warnings.empty());  // the stroke's miter joins are nowhere drawn
   // A stroked path across the edge: its fill inside, then its stroke as a filled band in the stroke's
   // colour, both cut; the band is the round-joined stroke (width 4) of the square inside the viewport.
   const auto cut = parse(R"~(<svg width="20" height="20"><rect id="sq" x="10" y="5" width="20" height="10"
@@ -293,6 +294,10 @@ TEST_CASE("svg structure: type, id and compound selectors by specificity; others
   CHECK(has_warning(art, "<style> at line 1: CSS selector \"g > rect\" is not supported"));
   CHECK(has_warning(art, "CSS selector \"a:hover\""));
   CHECK(!has_warning(art, "text.label"));  // it sets no property the art is drawn with
+  const auto media = parse(R"~(<style>@import url(other.css); @media print { rect { fill: #f00 } }</style>
+      <rect width="1" height="1"/>)~");
+  CHECK(only_path(media).fill.color.r == 0.0);
+  CHECK(has_warning(media, "test.svg: <style> at line 1: @media rules are not applied; their styles are ignored"));
 }
 
 TEST_CASE("svg structure: the same warning on many elements is one line with a count and the first ids", "[svg]") {
