@@ -3,8 +3,8 @@
 // them. Parsed here rather than by svgpp, whose grammar knows the attribute only (docs/scene-format.md,
 // "SVG structure").
 #include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <numbers>
 
 #include "svg_internal.hpp"
@@ -26,12 +26,14 @@ struct Quantity {
 };
 
 bool read_quantity(const std::string& s, size_t& i, Quantity& q) {
-  const char* start = s.c_str() + i;
-  char* end = nullptr;
-  const double v = std::strtod(start, &end);
-  if (end == start || !std::isfinite(v)) return false;
-  // strtod also reads "inf", "nan" and hex; SVG numbers are decimal only.
-  for (const char* c = start; c < end; ++c)
+  // from_chars, not strtod: the decimal point is '.' whatever the locale.
+  const char* start = s.data() + i;
+  const char* digits = start + (i < s.size() && s[i] == '+' ? 1 : 0);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(digits, s.data() + s.size(), v);
+  if (ec != std::errc() || end == digits || !std::isfinite(v)) return false;
+  // from_chars also reads "inf" and "nan"; SVG numbers are decimal only.
+  for (const char* c = digits; c < end; ++c)
     if (std::isalpha(static_cast<unsigned char>(*c)) && *c != 'e' && *c != 'E') return false;
   i += static_cast<size_t>(end - start);
   size_t u = i;

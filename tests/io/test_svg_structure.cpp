@@ -200,6 +200,22 @@ TEST_CASE("svg structure: the transform property in style and rules wins over th
   CHECK(art.warnings.empty());
 }
 
+TEST_CASE("svg structure: the transform attribute's number forms", "[svg]") {
+  // Signs, leading points, exponents and numbers that run into each other, as SVG's grammar allows.
+  const auto art = parse(R"~(<rect width="1" height="1" transform="translate(-.5 .5)"/>
+      <rect width="1" height="1" transform="scale(+2)translate(10-5)"/>
+      <rect width="1" height="1" transform="matrix(1,0,0,1,1e1,0) , rotate(90,0,0)"/>
+      <rect width="1" height="1" transform="rotate(180 1 1)"/>
+      <rect width="1" height="1" transform="skewY(45) scale(1 2)"/>)~");
+  REQUIRE(art.paths.size() == 5);
+  CHECK(art.warnings.empty());
+  require_box(box_of(art.paths[0]), -0.5, 0.5, 0.5, 1.5);
+  require_box(box_of(art.paths[1]), 20, -10, 22, -8);
+  require_box(box_of(art.paths[2]), 9, 0, 10, 1, 1e-9);
+  require_box(box_of(art.paths[3]), 1, 1, 2, 2, 1e-9);
+  require_box(box_of(art.paths[4]), 0, 0, 1, 3, 1e-9);
+}
+
 TEST_CASE("svg structure: an invalid CSS transform is dropped for the attribute, with a warning", "[svg]") {
   const auto art = parse(R"~(<rect id="a" width="1" height="1" style="transform: translate(1em, 0)"
       transform="translate(3 0)"/><rect id="b" width="1" height="1" style="transform: rotateX(10deg)"/>
