@@ -154,9 +154,16 @@ void Document::resolve_auto_radii(xmlNode* ellipse) {
 
 namespace {
 
-// One compound selector without combinators: an optional type (or *), then #ids and .classes.
-struct Selector {
-  std::string type;  // empty or "*": any element
+std::vector<std::string> classes_of(const xmlNode* n) {
+  std::istringstream in(attribute(n, "class"));
+  std::vector<std::string> classes;
+  for (std::string c; in >> c;) classes.push_back(c);
+  return classes;
+}
+
+// One compound selector: an optional type (or *), then #ids and .classes.
+struct Compound {
+  std::string type;  // empty: any element
   std::vector<std::string> ids, classes;
   bool parse(const std::string& text) {
     size_t i = 0;
@@ -167,11 +174,10 @@ struct Selector {
         ++i;
       return text.substr(start, i - start);
     };
-    if (i < text.size() && text[i] == '*') {
+    if (i < text.size() && text[i] == '*')
       ++i;
-    } else {
+    else
       type = ident();
-    }
     while (i < text.size()) {
       const char c = text[i++];
       if (c != '.' && c != '#') return false;
@@ -181,17 +187,76 @@ struct Selector {
     }
     return !text.empty();
   }
-  bool matches(const xmlNode* n, const std::vector<std::string>& node_classes) const {
+  bool matches(const xmlNode* n) const {
+    if (!n || n->type != XML_ELEMENT_NODE) return false;
     if (!type.empty() && !xmlStrEqual(n->name, BAD_CAST type.c_str())) return false;
     for (const std::string& id : ids)
       if (attribute(n, "id") != id) return false;
+    if (classes.empty()) return true;
+    const std::vector<std::string> own = classes_of(n);
     for (const std::string& c : classes)
-      if (std::find(node_classes.begin(), node_classes.end(), c) == node_classes.end()) return false;
+      if (std::find(own.begin(), own.end(), c) == own.end()) return false;
     return true;
+  }
+};
+
+// Compound selectors joined by descendant (space) and child (>) combinators.
+struct Selector {
+  std::vector<Compound> parts;
+  std::vector<char> joins;  // joins[k] between parts[k] and parts[k + 1]: ' ' or '>'
+  bool parse(const std::string& text) {
+    std::string token;
+    char join = 0;
+    const auto flush = [&] {
+      if (token.empty()) return true;
+      Compound c;
+      if (!c.parse(token)) return false;
+      if (!parts.empty()) joins.push_back(join ? join : ' ');
+      parts.push_back(c);
+      token.clear();
+      join = 0;
+      return true;
+    };
+    for (char c : text) {
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '>') {
+        if (!flush()) return false;
+        if (c == '>') {
+          if (parts.empty() || join == '>') return false;
+          join = '>';
+        }
+      } else {
+        token += c;
+      }
+    }
+    return flush() && join == 0 && !parts.empty();
+  }
+  // The element and its ancestors, nearest first: at[k][i] says parts[0..k] match with parts[k] on chain[i].
+  // One pass per part over the chain (at most kMaxDepth long), so no selector costs more than that.
+  bool matches(const xmlNode* n) const {
+    std::vector<const xmlNode*> chain;
+    for (const xmlNode* a = n; a && a->type == XML_ELEMENT_NODE; a = a->parent) chain.push_back(a);
+    const size_t len = chain.size();
+    std::vector<char> prev(len + 1, 0), cur(len + 1, 0);
+    for (size_t k = 0; k < parts.size(); ++k) {
+      // any_above[i]: the previous part matched somewhere at chain[i] or farther out.
+      std::vector<char> any_above(len + 2, 0);
+      for (size_t i = len; i-- > 0;) any_above[i] = any_above[i + 1] || prev[i];
+      for (size_t i = 0; i < len; ++i) {
+        const bool before = k == 0 || (joins[k - 1] == '>' ? prev[i + 1] != 0 : any_above[i + 1] != 0);
+        cur[i] = before && parts[k].matches(chain[i]);
+      }
+      cur[len] = 0;
+      std::swap(prev, cur);
+    }
+    return prev[0] != 0;
   }
   // CSS specificity (ids, classes, types) as one comparable number.
   long specificity() const {
-    return static_cast<long>(ids.size()) * 1000000 + static_cast<long>(classes.size()) * 1000 + (type.empty() ? 0 : 1);
+    long total = 0;
+    for (const Compound& c : parts)
+      total += static_cast<long>(c.ids.size()) * 1000000 + static_cast<long>(c.classes.size()) * 1000 +
+               (c.type.empty() ? 0 : 1);
+    return total;
   }
 };
 
@@ -216,8 +281,9 @@ void Document::apply_class_styles() {
   // Exporters write `<style>.st0{fill:#F00;}</style>` and class="st0" (Illustrator), or type and id
   // rules. A rule outranks presentation attributes and loses to the inline style; among rules, the more
   // specific wins, then the later (CSS 2.1, 6.4.3). Prefixing the `style` attribute with the matching
-  // rules in that order puts each declaration exactly there. Compound selectors of a type, ids and classes
-  // are applied; combinators, attribute selectors and pseudo-classes are not, and are reported.
+  // rules in that order puts each declaration exactly there. Compound selectors of a type, ids and classes,
+  // joined by descendant and child combinators, are applied; sibling combinators, attribute selectors and
+  // pseudo-classes are not, and are reported.
   std::vector<Rule> rules;
   std::vector<xmlNode*> stack{root_};
   std::vector<xmlNode*> elements;
@@ -260,7 +326,7 @@ void Document::apply_class_styles() {
           } else if (draws(decls)) {
             notes_.push_back({"<style> at line " + std::to_string(xmlGetLineNo(n)),
                               "CSS selector \"" + sel.substr(0, 60) +
-                                  "\" is not supported (only a type, #id and .class, without combinators); "
+                                  "\" is not supported (only types, #ids and .classes, joined by spaces or >); "
                                   "its rule is ignored"});
           }
         }
@@ -276,12 +342,9 @@ void Document::apply_class_styles() {
                                                                 : a.order < b.order;
   });
   for (xmlNode* n : elements) {
-    std::istringstream in(attribute(n, "class"));
-    std::vector<std::string> classes;
-    for (std::string c; in >> c;) classes.push_back(c);
     std::string prefix;
     for (const Rule& rule : rules)
-      if (rule.selector.matches(n, classes)) prefix += rule.declarations + ";";
+      if (rule.selector.matches(n)) prefix += rule.declarations + ";";
     if (prefix.empty()) continue;
     const std::string style = prefix + attribute(n, "style");
     xmlSetProp(n, BAD_CAST "style", BAD_CAST style.c_str());

@@ -300,16 +300,27 @@ TEST_CASE("svg structure: SVG 2 auto radii on rect and ellipse", "[svg]") {
 
 TEST_CASE("svg structure: type, id and compound selectors by specificity; others reported", "[svg]") {
   const auto art = parse(R"~(<style>#x { fill: #0f0 } .c { fill: #f00 } rect { fill: #00f; stroke: #000 }
-      rect.c { stroke: none } g > rect { fill: #fff } a:hover { fill: #fff } svg text.label { font-family: serif }</style>
+      rect.c { stroke: none } g + rect { fill: #fff } a:hover { fill: #fff } svg ~ text.label { font-family: serif }</style>
       <rect id="x" class="c" width="1" height="1"/><rect class="c" width="1" height="1"/>
       <rect width="1" height="1" style="fill: #ff0"/>)~");
   REQUIRE(art.paths.size() == 3);
   CHECK((art.paths[0].fill.color.g == 1.0 && art.paths[0].fill.color.r == 0.0 && !art.paths[0].stroke.enabled));
   CHECK((art.paths[1].fill.color.r == 1.0 && art.paths[1].fill.color.g == 0.0 && !art.paths[1].stroke.enabled));
   CHECK((art.paths[2].fill.color.r == 1.0 && art.paths[2].fill.color.g == 1.0 && art.paths[2].stroke.enabled));
-  CHECK(has_warning(art, "<style> at line 1: CSS selector \"g > rect\" is not supported"));
+  CHECK(has_warning(art, "<style> at line 1: CSS selector \"g + rect\" is not supported"));
   CHECK(has_warning(art, "CSS selector \"a:hover\""));
   CHECK(!has_warning(art, "text.label"));  // it sets no property the art is drawn with
+  // Descendant and child combinators: `g .a` anywhere under a g, `#top > rect` only directly in #top.
+  const auto nested = parse(R"~(<style>g .a { fill: #f00 } #top > rect { stroke: #00f } g g > .a { fill: #0f0 }</style>
+      <g id="top"><rect id="r1" class="a" width="1" height="1"/><g><rect id="r2" class="a" width="1" height="1"/>
+      <g><rect id="r3" width="1" height="1"/></g></g></g><rect id="r4" class="a" width="1" height="1"/>)~");
+  REQUIRE(nested.paths.size() == 4);
+  CHECK((nested.paths[0].fill.color.r == 1.0 && nested.paths[0].stroke.enabled));   // g .a, #top > rect
+  CHECK((nested.paths[1].fill.color.g == 1.0 && !nested.paths[1].stroke.enabled));  // g g > .a wins
+  CHECK((nested.paths[2].fill.color.r == 0.0 && !nested.paths[2].stroke.enabled));  // no rule
+  CHECK((nested.paths[3].fill.color.r == 0.0 && nested.paths[3].fill.color.g == 0.0));
+  REQUIRE(nested.warnings.size() == 1);
+  CHECK(nested.warnings[0] == "test.svg: rect#r1: stroke-linejoin miter is drawn round");
   const auto media = parse(R"~(<style>@import url(other.css); @media print { rect { fill: #f00 } }</style>
       <rect width="1" height="1"/>)~");
   CHECK(only_path(media).fill.color.r == 0.0);
