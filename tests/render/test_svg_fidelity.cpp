@@ -61,6 +61,11 @@ std::string reduced_feature(const std::string& warning) {
       {"stroke-linecap", "square stroke caps"},
       {"stroke-dasharray", "dashed stroke"},
       {"<use> of", "reference to another file"},
+      {"CSS selector", "style rule not applied"},
+      {"rules are not applied", "style rule not applied"},
+      {"transform-box", "transform-box"},
+      {"invalid CSS transform", "invalid transform"},
+      {"invalid transform", "invalid transform"},
   };
   for (const auto& [needle, feature] : features)
     if (warning.find(needle) != std::string::npos) return feature;
