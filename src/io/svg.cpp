@@ -24,6 +24,11 @@ namespace {
 namespace tag = svgpp::tag;
 namespace mpl = boost::mpl;
 
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
 using RenderedElements =
     mpl::set<tag::element::svg, tag::element::g, tag::element::a, tag::element::switch_, tag::element::use_,
              tag::element::path, tag::element::rect, tag::element::circle, tag::element::ellipse, tag::element::line,
@@ -124,9 +129,7 @@ struct LenientErrors {
       // SVG 2's `auto` radius is an absent one to svgpp: a rect's takes the other radius (both auto: square
       // corners). An ellipse's was given the other radius by Document, so one still here had a percentage
       // opposite it, or both were auto.
-      if (text.find_first_not_of(" \t\r\n") != std::string::npos &&
-          text.substr(text.find_first_not_of(" \t\r\n"), 4) == "auto" &&
-          text.find_first_not_of(" \t\r\n", text.find_first_not_of(" \t\r\n") + 4) == std::string::npos) {
+      if (trimmed(text) == "auto") {
         if (xmlStrEqual(c.node()->name, BAD_CAST "ellipse")) {
           c.state().faulted.insert(c.node());
           c.state().warn(c.what(),
@@ -214,11 +217,6 @@ size_t path_error_offset(const std::string& d) {
 }
 
 namespace {
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
 // The value the `style` attribute declares for `name`: the last declaration wins, after the class rules
 // Document put first.
 std::optional<std::string> declared_style(const xmlNode* node, const char* name) {
