@@ -168,7 +168,7 @@ TEST_CASE("svg structure: symbol content outside its viewport is clipped unless 
   require_box(box_of(art.paths[1]), 0, 20, 30, 25);
 }
 
-TEST_CASE("svg structure: use of plain elements at x and y, and of another use; other files never read", "[svg]") {
+TEST_CASE("svg structure: use of plain elements at x and y, and of another use, never of another file", "[svg]") {
   const auto art = parse(R"~(<defs><g id="g"><rect width="2" height="2"/><rect x="4" width="2" height="2"/></g></defs>
       <use id="u" href="#g" x="10" y="5"/><use href="#u" x="100"/><use href="file:///etc/passwd#x"/>)~");
   REQUIRE(art.paths.size() == 4);
@@ -298,7 +298,7 @@ TEST_CASE("svg structure: SVG 2 auto radii on rect and ellipse", "[svg]") {
   CHECK(has_warning(pct, "test.svg: ellipse#p: rx and ry auto, or auto opposite a percentage, is not supported"));
 }
 
-TEST_CASE("svg structure: type, id and compound selectors by specificity; others reported", "[svg]") {
+TEST_CASE("svg structure: type, id and compound selectors by specificity, the others reported", "[svg]") {
   const auto art = parse(R"~(<style>#x { fill: #0f0 } .c { fill: #f00 } rect { fill: #00f; stroke: #000 }
       rect.c { stroke: none } g + rect { fill: #fff } a:hover { fill: #fff } svg ~ text.label { font-family: serif }</style>
       <rect id="x" class="c" width="1" height="1"/><rect class="c" width="1" height="1"/>
