@@ -108,9 +108,36 @@ std::string describe_path(const ArtPath& path, std::size_t index) {
   return path.id.empty() ? "path " + std::to_string(index) : path.id;
 }
 
+// Paths that share one problem, each with how many of its subpaths have it.
+struct PathCounts {
+  std::vector<std::string> names;
+  int total = 0;
+  void add(const std::string& name, int count) {
+    names.push_back(name);
+    total += count;
+  }
+};
+
+// One warning line for a problem: "file: path3: 2 …" for one path, "file: 19 paths (path3, path5, path7 and
+// 16 more): 23 …" (the subpaths of all of them) for several, as the importer groups its own.
+void warn_paths(std::vector<std::string>& warnings, const std::string& file, const PathCounts& paths,
+                const std::string& problem) {
+  if (paths.names.empty()) return;
+  std::string who = paths.names.front();
+  if (paths.names.size() > 1) {
+    who = std::to_string(paths.names.size()) + " paths (";
+    const std::size_t shown = std::min<std::size_t>(paths.names.size(), 3);
+    for (std::size_t i = 0; i < shown; ++i) who += (i ? ", " : "") + paths.names[i];
+    if (paths.names.size() > shown) who += " and " + std::to_string(paths.names.size() - shown) + " more";
+    who += ")";
+  }
+  warnings.push_back(file + ": " + who + ": " + std::to_string(paths.total) + problem);
+}
+
 // The report's paths and the warnings only the check adds: what the import keeps silently but a browser
 // user should know (open subpaths that are filled as if closed, subpaths crossing themselves).
 Json paths_json(const ArtShape& art, const std::string& file, std::vector<std::string>& warnings) {
+  PathCounts open_filled, crossing_nonzero, crossing_evenodd;
   Json paths = Json::array();
   for (std::size_t i = 0; i < art.paths.size(); ++i) {
     const ArtPath& path = art.paths[i];
@@ -121,15 +148,9 @@ Json paths_json(const ArtShape& art, const std::string& file, std::vector<std::s
       crossing += crosses_itself(line) ? 1 : 0;
       points += line.points.size();
     }
-    if (open > 0 && path.fill.enabled)
-      warnings.push_back(file + ": " + describe_path(path, i) + ": " + std::to_string(open) +
-                         " open subpath(s) filled as if closed (as SVG fills them); the element's outline takes them "
-                         "in closed");
+    if (open > 0 && path.fill.enabled) open_filled.add(describe_path(path, i), open);
     if (crossing > 0)
-      warnings.push_back(file + ": " + describe_path(path, i) + ": " + std::to_string(crossing) +
-                         " subpath(s) cross themselves; the " +
-                         (path.fill_rule == FillRule::evenodd ? "even-odd" : "non-zero") +
-                         " fill rule decides what is inside, as in a browser");
+      (path.fill_rule == FillRule::evenodd ? crossing_evenodd : crossing_nonzero).add(describe_path(path, i), crossing);
     Json stroke = paint_json(path.stroke);
     if (!stroke.is_null()) stroke["width"] = path.stroke_width;
     paths.push_back({{"index", i},
@@ -145,6 +166,12 @@ Json paths_json(const ArtShape& art, const std::string& file, std::vector<std::s
                      {"stroke", stroke},
                      {"on_outline", false}});
   }
+  warn_paths(warnings, file, open_filled,
+             " open subpath(s) filled as if closed (as SVG fills them); the element's outline takes them in closed");
+  warn_paths(warnings, file, crossing_nonzero,
+             " subpath(s) cross themselves; the non-zero fill rule decides what is inside, as in a browser");
+  warn_paths(warnings, file, crossing_evenodd,
+             " subpath(s) cross themselves; the even-odd fill rule decides what is inside, as in a browser");
   return paths;
 }
 

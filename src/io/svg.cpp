@@ -24,6 +24,11 @@ namespace {
 namespace tag = svgpp::tag;
 namespace mpl = boost::mpl;
 
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
 using RenderedElements =
     mpl::set<tag::element::svg, tag::element::g, tag::element::a, tag::element::switch_, tag::element::use_,
              tag::element::path, tag::element::rect, tag::element::circle, tag::element::ellipse, tag::element::line,
@@ -38,11 +43,13 @@ using ReferencedElements =
                           mpl::insert<mpl::_1, mpl::_2>>::type,
                 tag::element::symbol>::type;
 
+// `transform` is not among them: the CSS property outranks the attribute and svgpp reads only the
+// attribute, so BaseContext::apply_own_transform reads both.
 using StyleAttributes =
-    mpl::vector<tag::attribute::transform, tag::attribute::fill, tag::attribute::stroke, tag::attribute::stroke_width,
-                tag::attribute::fill_rule, tag::attribute::opacity, tag::attribute::fill_opacity,
-                tag::attribute::stroke_opacity, tag::attribute::display, tag::attribute::visibility,
-                tag::attribute::color, tag::attribute::clip_path, tag::attribute::mask, tag::attribute::filter>;
+    mpl::vector<tag::attribute::fill, tag::attribute::stroke, tag::attribute::stroke_width, tag::attribute::fill_rule,
+                tag::attribute::opacity, tag::attribute::fill_opacity, tag::attribute::stroke_opacity,
+                tag::attribute::display, tag::attribute::visibility, tag::attribute::color, tag::attribute::clip_path,
+                tag::attribute::mask, tag::attribute::filter>;
 using ViewportAttributes = mpl::vector<
     mpl::pair<tag::element::svg, tag::attribute::x>, mpl::pair<tag::element::svg, tag::attribute::y>,
     mpl::pair<tag::element::svg, tag::attribute::width>, mpl::pair<tag::element::svg, tag::attribute::height>,
@@ -112,23 +119,37 @@ struct LenientErrors {
   template <class C, class T>
   static bool negative_value(const C& c, T) {
     c.state().faulted.insert(c.node());
-    c.state().warn(c.what() + ": negative " + svgpp::attribute_name<char>::get<T>() + " ignored");
+    c.state().warn(c.what(), std::string("negative ") + svgpp::attribute_name<char>::get<T>() + " ignored");
     return true;
   }
   template <class C, class T, class V>
   static bool parse_failed(const C& c, T, const V& value) {
     const std::string text(boost::begin(value), boost::end(value));
+    if constexpr (std::is_same_v<T, tag::attribute::rx> || std::is_same_v<T, tag::attribute::ry>) {
+      // SVG 2's `auto` radius is an absent one to svgpp: a rect's takes the other radius (both auto: square
+      // corners). An ellipse's was given the other radius by Document, so one still here had a percentage
+      // opposite it, or both were auto.
+      if (trimmed(text) == "auto") {
+        if (xmlStrEqual(c.node()->name, BAD_CAST "ellipse")) {
+          c.state().faulted.insert(c.node());
+          c.state().warn(c.what(),
+                         "rx and ry auto, or auto opposite a percentage, is not supported; nothing "
+                         "drawn (give rx or ry a length)");
+        }
+        return true;
+      }
+    }
     // SVG 2 ("Error handling in path data", the `points` attribute): draw what came before the error.
     // svgpp has already delivered those segments to the context when it reports the failure.
     if constexpr (std::is_same_v<T, tag::attribute::d>) {
       c.state().faulted.insert(c.node());
-      c.state().warn(c.what() + ": " + path_data_error(text, path_error_offset(text)));
+      c.state().warn(c.what(), path_data_error(text, path_error_offset(text)));
     } else if constexpr (std::is_same_v<T, tag::attribute::points>) {
       c.state().faulted.insert(c.node());
-      c.state().warn(c.what() + ": " + points_error(text));
+      c.state().warn(c.what(), points_error(text));
     } else {
-      c.state().warn(c.what() + ": invalid " + svgpp::attribute_name<char>::get<T>() + " \"" + text.substr(0, 40) +
-                     "\" ignored");
+      c.state().warn(c.what(), std::string("invalid ") + svgpp::attribute_name<char>::get<T>() + " \"" +
+                                   text.substr(0, 40) + "\" ignored");
     }
     return true;
   }
@@ -195,11 +216,73 @@ size_t path_error_offset(const std::string& d) {
   return static_cast<size_t>(it - d.begin());
 }
 
-std::string css_property(const xmlNode* node, const char* name) {
+namespace {
+// The value the `style` attribute declares for `name`: the last declaration wins, after the class rules
+// Document put first.
+std::optional<std::string> declared_style(const xmlNode* node, const char* name) {
   const std::string style = attribute(node, "style");
+  std::optional<std::string> value;
   for (svgpp::css_style_iterator<std::string::const_iterator> it(style.begin(), style.end()); !it.eof(); ++it)
-    if (std::string(it->first.begin(), it->first.end()) == name) return {it->second.begin(), it->second.end()};
-  return attribute(node, name);
+    if (std::string(it->first.begin(), it->first.end()) == name) value.emplace(it->second.begin(), it->second.end());
+  return value;
+}
+}  // namespace
+
+std::string css_property(const xmlNode* node, const char* name) {
+  const std::optional<std::string> value = declared_style(node, name);
+  return value ? *value : attribute(node, name);
+}
+
+void BaseContext::apply_own_transform() {
+  // CSS Transforms 1 makes `transform` a property with the attribute its presentation attribute, so a style
+  // rule or the style attribute wins over the attribute, as in browsers (rsvg-convert 2.54 lets the
+  // attribute win; docs/scene-format.md, "SVG structure"). An invalid declaration is dropped, as CSS drops it,
+  // and the attribute applies.
+  const std::optional<std::string> declared = declared_style(node_, "transform");
+  const std::string own = trimmed(attribute(node_, "transform"));
+  std::string error;
+  std::optional<Affine> m;
+  if (declared) {
+    const std::string css = trimmed(*declared);
+    m = css == "initial" || css == "unset" ? Affine{} : parse_transform(css, error);
+    if (!m)
+      state_->warn(what(), "invalid CSS transform \"" + css.substr(0, 40) + "\" (" + error + ") ignored" +
+                               (own.empty() ? "" : "; the transform attribute is used"));
+  }
+  if (!m && !own.empty()) {
+    m = parse_transform(own, error);
+    if (!m) state_->warn(what(), "invalid transform \"" + own.substr(0, 40) + "\" (" + error + ") ignored");
+  }
+  if (!m) return;
+  const std::string origin_text = trimmed(css_property(node_, "transform-origin"));
+  Vec2 origin{0, 0};  // SVG elements' initial transform-origin (CSS Transforms 1, the UA style sheet)
+  if (!origin_text.empty() && origin_text != "inherit" && origin_text != "initial") {
+    // Percentages and keywords against the nearest viewport (transform-box view-box, the initial value).
+    if (const auto o = parse_transform_origin(origin_text, box_width_, box_height_, error)) {
+      origin = *o;
+      const std::string box = trimmed(css_property(node_, "transform-box"));
+      if (!box.empty() && box != "view-box")
+        state_->warn(what(), "transform-box " + box + " is not supported; transform-origin " + origin_text +
+                                 " is taken against the viewport (view-box)");
+    } else {
+      state_->warn(what(), "invalid transform-origin \"" + origin_text.substr(0, 40) + "\" (" + error +
+                               "); the transform is applied about 0 0");
+    }
+  }
+  transform_ = compose(transform_, compose(Affine{1, 0, 0, 1, origin.x, origin.y},
+                                           compose(*m, Affine{1, 0, 0, 1, -origin.x, -origin.y})));
+}
+
+void BaseContext::clip_to_viewport(double x, double y, double w, double h) {
+  const bool nested = xmlStrEqual(node_->name, BAD_CAST "svg") || xmlStrEqual(node_->name, BAD_CAST "symbol");
+  const std::string overflow = trimmed(css_property(node_, "overflow"));
+  // The UA style sheet hides the overflow of every viewport but the outermost (SVG 1.1 14.3.3).
+  if (!nested || overflow == "visible" || overflow == "auto") return;
+  auto clips = clips_ ? std::make_shared<std::vector<std::vector<Vec2>>>(*clips_)
+                      : std::make_shared<std::vector<std::vector<Vec2>>>();
+  clips->push_back({transform_.apply({x, y}), transform_.apply({x + w, y}), transform_.apply({x + w, y + h}),
+                    transform_.apply({x, y + h})});
+  clips_ = std::move(clips);
 }
 
 bool load_reference(xmlNode* target, UseContext& use) {
@@ -239,10 +322,9 @@ Paint ShapeContext::resolve(const PaintSpec& spec, double opacity) {
         state_->gradients.push_back(spec.iri);
       color = *gradient;
     } else {
-      state_->warn(what() + ": " +
-                   (server ? "paint server url(#" + spec.iri + ") is not a gradient with stops"
-                           : "url(#" + spec.iri + ") refers to no element") +
-                   "; its fallback colour (or none) is used");
+      state_->warn(what(), (server ? "paint server url(#" + spec.iri + ") is not a gradient with stops"
+                                   : "url(#" + spec.iri + ") refers to no element") +
+                               "; its fallback colour (or none) is used");
       kind = spec.fallback_kind;
       color = kind == PaintSpec::Kind::current_color ? style_.current_color : spec.fallback_color;
     }
@@ -304,18 +386,24 @@ void ShapeContext::on_exit_element() {
   }
   if (!state_->faulted.contains(node_)) {
     const std::string why = degenerate(path.polylines, flat.dropped(), zero_area);
-    if (!why.empty()) state_->warn(what() + ": " + why);
+    if (!why.empty()) state_->warn(what(), why);
   }
   if (path.polylines.empty()) return;
-  if (path.stroke.enabled) {
-    warn_stretched_stroke(path.stroke_width);
-    warn_reduced_stroke(path.polylines);
-  }
   path.id = attribute(node_, "id");
   path.fill_rule = style_.fill_rule;
   path.paint_order = style_.paint_order;
-  path.source_index = static_cast<int>(state_->out.paths.size());
-  state_->out.paths.push_back(std::move(path));
+  // What a nested viewport clips away entirely is not drawn, and nothing is said of its stroke.
+  std::vector<ArtPath> pieces;
+  if (clips_) pieces = clip_to_viewports(path, *clips_, state_->options.flatten_tolerance);
+  if (path.stroke.enabled && (!clips_ || !pieces.empty())) {
+    warn_stretched_stroke(path.stroke_width);
+    warn_reduced_stroke(path.polylines);
+  }
+  if (!clips_) pieces.push_back(std::move(path));
+  for (ArtPath& piece : pieces) {
+    piece.source_index = static_cast<int>(state_->out.paths.size());
+    state_->out.paths.push_back(std::move(piece));
+  }
 }
 
 std::string ShapeContext::degenerate(const std::vector<Polyline>& kept, size_t dropped, size_t zero_area) const {
@@ -349,9 +437,9 @@ void ShapeContext::warn_stretched_stroke(double width) {
   if (!(most > 1.01 * least)) return;
   std::ostringstream text;
   text.precision(3);
-  text << what() << ": stroke under a non-uniform scale is drawn " << width << " wide everywhere; a browser draws it "
+  text << "stroke under a non-uniform scale is drawn " << width << " wide everywhere; a browser draws it "
        << style_.stroke_width * least << " to " << style_.stroke_width * most << " wide by direction";
-  state_->warn(text.str());
+  state_->warn(what(), text.str());
 }
 
 // The stroke is drawn, and taken into the outline, solid with round joins and caps (src/element/outline.cpp);
@@ -367,8 +455,8 @@ void ShapeContext::warn_reduced_stroke(const std::vector<Polyline>& lines) {
   };
   const std::string join = inherited("stroke-linejoin", "miter"), cap = inherited("stroke-linecap", "butt");
   const bool open = std::any_of(lines.begin(), lines.end(), [](const Polyline& l) { return !l.closed; });
-  if (join != "round") state_->warn(what() + ": stroke-linejoin " + join + " is drawn round");
-  if (open && cap != "round") state_->warn(what() + ": stroke-linecap " + cap + " is drawn round");
+  if (join != "round") state_->warn(what(), "stroke-linejoin " + join + " is drawn round");
+  if (open && cap != "round") state_->warn(what(), "stroke-linecap " + cap + " is drawn round");
   // A list that sums to zero draws solid, as "none" does (SVG 1.1, 11.4); so does one with a negative
   // length, an error that renderers draw as "none".
   const std::string dashes = inherited("stroke-dasharray", "none");
@@ -380,7 +468,7 @@ void ShapeContext::warn_reduced_stroke(const std::vector<Polyline>& lines) {
     gaps = gaps || length > 0.0;
     valid = valid && length >= 0.0;
   }
-  if (gaps && valid) state_->warn(what() + ": stroke-dasharray " + dashes + " is drawn solid");
+  if (gaps && valid) state_->warn(what(), "stroke-dasharray " + dashes + " is drawn solid");
 }
 
 void UseContext::on_exit_element() {
@@ -388,13 +476,13 @@ void UseContext::on_exit_element() {
   const std::string href = svg::href(node_);
   if (href.empty()) return;
   if (href[0] != '#') {
-    state_->warn(what() + ": <use> of \"" + href.substr(0, 80) +
-                 "\" refused (another file is never read); copy that art into this file");
+    state_->warn(what(), "<use> of \"" + href.substr(0, 80) +
+                             "\" refused (another file is never read); copy that art into this file");
     return;
   }
   xmlNode* target = state_->doc.find(href.substr(1));
   if (!target) {
-    state_->warn(what() + ": <use> refers to missing " + href + "; nothing drawn for it");
+    state_->warn(what(), "<use> refers to missing " + href + "; nothing drawn for it");
     return;
   }
   auto& chain = state_->use_chain;
@@ -402,7 +490,7 @@ void UseContext::on_exit_element() {
   for (const xmlNode* n = node_; n && !cycle; n = n->parent) cycle = n == target;  // use inside its target
   cycle = cycle || std::find(chain.begin(), chain.end(), target) != chain.end();
   if (cycle || chain.size() >= 32) {
-    state_->warn(what() + ": <use> of " + href + " refers back to itself; the cycle is drawn once");
+    state_->warn(what(), "<use> of " + href + " refers back to itself; the cycle is drawn once");
     return;
   }
   transform_ = compose(transform_, Affine{1, 0, 0, 1, x_, y_});
@@ -416,6 +504,7 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
   ArtShape out;
   out.source = name;
   State state(doc, options, out);
+  for (const auto& [what, problem] : doc.notes()) state.warn(what, problem);
   GroupContext root(state, doc.root());
   try {
     Traversal::load_document(doc.root(), root);
@@ -424,6 +513,7 @@ ArtShape run_traversal(const std::string& text, const std::string& name, const S
   } catch (const std::exception& e) {
     throw InputError(message(name, "document", e.what(), "simplify the file in an editor and save it as plain SVG"));
   }
+  state.flush_warnings();
   if (!state.gradients.empty()) {
     std::string ids;
     for (const auto& id : state.gradients) ids += (ids.empty() ? "" : ", ") + id;

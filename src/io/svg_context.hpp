@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -21,16 +23,45 @@ struct State {
   const Document& doc;
   const SvgOptions& options;
   ArtShape& out;
-  std::set<std::string> warned;
-  std::vector<std::string> gradients;  // ids reduced to one colour, reported once at the end
+  struct Pending {
+    std::string problem;
+    std::vector<std::string> elements;  // as describe() names them, each once
+  };
+  std::vector<Pending> pending;
+  std::map<std::string, size_t> problems;           // problem text → index in pending
+  std::set<std::pair<size_t, std::string>> warned;  // (problem, element) pairs already counted
+  std::vector<std::string> gradients;               // ids reduced to one colour, reported once at the end
   std::vector<const xmlNode*> use_chain;
   size_t elements = 0;
   size_t points = 0;
 
   std::set<const xmlNode*> faulted;  // elements whose data error was already reported
 
-  void warn(const std::string& line) {
-    if (warned.insert(line).second) out.warnings.push_back(doc.name() + ": " + line);
+  /// One warning about one element; the same problem met on several elements is one line at the end.
+  void warn(const std::string& what, const std::string& problem) {
+    const auto [it, fresh] = problems.emplace(problem, pending.size());
+    if (fresh) pending.push_back({problem, {}});
+    if (warned.emplace(it->second, what).second) pending[it->second].elements.push_back(what);
+  }
+  /// The collected warnings into out.warnings, in the order first met: "file: path#a: problem" for one
+  /// element, "file: 11 elements (path#a, path#b, path#c and 8 more): problem" for several.
+  void flush_warnings() {
+    for (const Pending& p : pending) {
+      std::string line = doc.name() + ": ";
+      if (p.elements.size() == 1) {
+        line += p.elements.front();
+      } else {
+        line += std::to_string(p.elements.size()) + " elements (";
+        const size_t shown = std::min<size_t>(p.elements.size(), 3);
+        for (size_t i = 0; i < shown; ++i) line += (i ? ", " : "") + p.elements[i];
+        if (p.elements.size() > shown) line += " and " + std::to_string(p.elements.size() - shown) + " more";
+        line += ")";
+      }
+      out.warnings.push_back(line + ": " + p.problem);
+    }
+    pending.clear();
+    problems.clear();
+    warned.clear();
   }
   // `use` can multiply elements exponentially; a hard budget keeps every file under a second.
   void spend(const xmlNode* node, size_t new_elements, size_t new_points) {
@@ -128,10 +159,11 @@ class BaseContext : public Reporter {
     std::istringstream in(vb);
     double x = 0, y = 0, w = 0, h = 0;
     if (in >> x >> y >> w >> h && w > 0 && h > 0)
-      lengths_.set_viewport_size(w, h);
+      set_percent_box(w, h);
     else
-      lengths_.set_viewport_size(100, 100);
+      set_percent_box(100, 100);
     read_paint_order();
+    apply_own_transform();
   }
   BaseContext(BaseContext& parent, xmlNode* node)
       : Reporter(*parent.state_, node),
@@ -139,6 +171,9 @@ class BaseContext : public Reporter {
         transform_(parent.transform_),
         opacity_(parent.opacity_),
         lengths_(parent.lengths_),
+        box_width_(parent.box_width_),
+        box_height_(parent.box_height_),
+        clips_(parent.clips_),
         ref_width_(parent.use_width_),
         ref_height_(parent.use_height_) {
     state_->spend(node, 1, 0);
@@ -150,6 +185,7 @@ class BaseContext : public Reporter {
     }
     is_switch_ = xmlStrEqual(node->name, BAD_CAST "switch");
     read_paint_order();
+    apply_own_transform();
   }
 
   const length_factory_type& length_factory() const { return lengths_; }
@@ -161,7 +197,8 @@ class BaseContext : public Reporter {
 
   void transform_matrix(const boost::array<double, 6>& m);
   void set_viewport(double x, double y, double w, double h) {
-    lengths_.set_viewport_size(w, h);
+    set_percent_box(w, h);
+    if (node_ != state_->doc.root()) clip_to_viewport(x, y, w, h);
     // The root's viewport is the picture a browser draws; without width, height or viewBox it is the
     // browser window's, which only the user knows.
     const bool sized = !attribute(node_, "width").empty() || !attribute(node_, "height").empty() ||
@@ -173,10 +210,19 @@ class BaseContext : public Reporter {
       state_->out.viewport = box;
     }
   }
-  void set_viewbox_size(double w, double h) { lengths_.set_viewport_size(w, h); }
+  void set_viewbox_size(double w, double h) { set_percent_box(w, h); }
+  // The viewport of an <svg> or <symbol> that a <use> draws: the use's width and height where given, else
+  // (SVG 2) the symbol's own, else 100 %.
   void get_reference_viewport_size(double& w, double& h) const {
-    if (ref_width_) w = *ref_width_;
-    if (ref_height_) h = *ref_height_;
+    const bool symbol = xmlStrEqual(node_->name, BAD_CAST "symbol");
+    if (ref_width_)
+      w = *ref_width_;
+    else if (symbol)
+      w = parse_length(attribute(node_, "width"), box_width_).value_or(w);
+    if (ref_height_)
+      h = *ref_height_;
+    else if (symbol)
+      h = parse_length(attribute(node_, "height"), box_height_).value_or(h);
   }
   void disable_rendering() { display_ = false; }
 
@@ -218,7 +264,7 @@ class BaseContext : public Reporter {
  protected:
   bool rendered() const { return display_ && !disabled_; }
   void unsupported(const char* what, const char* effect) {
-    state_->warn(describe(node_) + ": " + what + " is not supported; " + effect);
+    state_->warn(describe(node_), std::string(what) + " is not supported; " + effect);
   }
   void read_paint_order() {
     std::istringstream in(css_property(node_, "paint-order"));
@@ -232,10 +278,24 @@ class BaseContext : public Reporter {
         stroke != tokens.end() && stroke < fill ? PaintOrder::stroke_then_fill : PaintOrder::fill_then_stroke;
   }
 
+  /// The element's own `transform` (the CSS property, else the attribute) about its `transform-origin`,
+  /// composed onto the parent's.
+  void apply_own_transform();
+  /// Clips what this nested <svg> or <symbol> draws to its viewport, unless its overflow is visible.
+  void clip_to_viewport(double x, double y, double w, double h);
+  void set_percent_box(double w, double h) {
+    lengths_.set_viewport_size(w, h);
+    box_width_ = w;
+    box_height_ = h;
+  }
+
   Style style_;
   Affine transform_;
   double opacity_ = 1.0;  // group opacities multiplied down the tree, folded into the paint alpha
   length_factory_type lengths_;
+  double box_width_ = 100.0, box_height_ = 100.0;  // what percentages resolve against, as in lengths_
+  // The viewports of the nested <svg>s and <symbol>s this element is drawn in, convex quads in art units.
+  std::shared_ptr<const std::vector<std::vector<Vec2>>> clips_;
   bool display_ = true;
   bool disabled_ = false;
   bool is_switch_ = false;
@@ -253,8 +313,8 @@ class SkippedContext : public BaseContext {
   bool descend() const { return false; }
   void on_exit_element() {
     if (rendered())
-      state_->warn(what() + ": <" + reinterpret_cast<const char*>(node_->name) +
-                   "> is not imported and was skipped; convert it to paths in an editor");
+      state_->warn(what(), std::string("<") + reinterpret_cast<const char*>(node_->name) +
+                               "> is not imported and was skipped; convert it to paths in an editor");
   }
 };
 

@@ -3,6 +3,8 @@
 #include <libxml/parser.h>
 #include <libxml/xmlerror.h>
 
+#include <algorithm>
+#include <cctype>
 #include <limits>
 #include <sstream>
 
@@ -132,19 +134,159 @@ void Document::index(xmlNode* node, int depth) {
                              "flatten the groups in an editor"));
   }
   if (!node->ns && svg_ns_) xmlSetNs(node, svg_ns_);
+  if (is_svg_element(node, "ellipse")) resolve_auto_radii(node);
   const std::string id = attribute(node, "id");
   if (!id.empty()) by_id_.emplace(id, node);  // the first element with an id wins, as in browsers
   for (xmlNode* c = node->children; c; c = c->next)
     if (c->type == XML_ELEMENT_NODE) index(c, depth + 1);
 }
 
+void Document::resolve_auto_radii(xmlNode* ellipse) {
+  // SVG 2: an ellipse's rx or ry that is auto (or absent) takes the other's value, as svgpp cannot (it
+  // reads SVG 1.1, where both are required). A percentage is of the other axis, so it is left for the
+  // importer to report.
+  const std::string rx = trim(attribute(ellipse, "rx")), ry = trim(attribute(ellipse, "ry"));
+  const auto is_auto = [](const std::string& v) { return v.empty() || v == "auto"; };
+  const auto is_length = [&](const std::string& v) { return !is_auto(v) && v.find('%') == std::string::npos; };
+  if (is_auto(rx) && is_length(ry)) xmlSetProp(ellipse, BAD_CAST "rx", BAD_CAST ry.c_str());
+  if (is_auto(ry) && is_length(rx)) xmlSetProp(ellipse, BAD_CAST "ry", BAD_CAST rx.c_str());
+}
+
+namespace {
+
+std::vector<std::string> classes_of(const xmlNode* n) {
+  std::istringstream in(attribute(n, "class"));
+  std::vector<std::string> classes;
+  for (std::string c; in >> c;) classes.push_back(c);
+  return classes;
+}
+
+// One compound selector: an optional type (or *), then #ids and .classes.
+struct Compound {
+  std::string type;  // empty: any element
+  std::vector<std::string> ids, classes;
+  bool parse(const std::string& text) {
+    size_t i = 0;
+    const auto ident = [&] {
+      const size_t start = i;
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' ||
+                                 text[i] == '_' || static_cast<unsigned char>(text[i]) >= 0x80))
+        ++i;
+      return text.substr(start, i - start);
+    };
+    if (i < text.size() && text[i] == '*')
+      ++i;
+    else
+      type = ident();
+    while (i < text.size()) {
+      const char c = text[i++];
+      if (c != '.' && c != '#') return false;
+      const std::string name = ident();
+      if (name.empty()) return false;
+      (c == '.' ? classes : ids).push_back(name);
+    }
+    return !text.empty();
+  }
+  bool matches(const xmlNode* n) const {
+    if (!n || n->type != XML_ELEMENT_NODE) return false;
+    if (!type.empty() && !xmlStrEqual(n->name, BAD_CAST type.c_str())) return false;
+    for (const std::string& id : ids)
+      if (attribute(n, "id") != id) return false;
+    if (classes.empty()) return true;
+    const std::vector<std::string> own = classes_of(n);
+    for (const std::string& c : classes)
+      if (std::find(own.begin(), own.end(), c) == own.end()) return false;
+    return true;
+  }
+};
+
+// Compound selectors joined by descendant (space) and child (>) combinators.
+struct Selector {
+  std::vector<Compound> parts;
+  std::vector<char> joins;  // joins[k] between parts[k] and parts[k + 1]: ' ' or '>'
+  bool parse(const std::string& text) {
+    std::string token;
+    char join = 0;
+    const auto flush = [&] {
+      if (token.empty()) return true;
+      Compound c;
+      if (!c.parse(token)) return false;
+      if (!parts.empty()) joins.push_back(join ? join : ' ');
+      parts.push_back(c);
+      token.clear();
+      join = 0;
+      return true;
+    };
+    for (char c : text) {
+      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '>') {
+        if (!flush()) return false;
+        if (c == '>') {
+          if (parts.empty() || join == '>') return false;
+          join = '>';
+        }
+      } else {
+        token += c;
+      }
+    }
+    return flush() && join == 0 && !parts.empty();
+  }
+  // The element and its ancestors, nearest first: at[k][i] says parts[0..k] match with parts[k] on chain[i].
+  // One pass per part over the chain (at most kMaxDepth long), so no selector costs more than that.
+  bool matches(const xmlNode* n) const {
+    std::vector<const xmlNode*> chain;
+    for (const xmlNode* a = n; a && a->type == XML_ELEMENT_NODE; a = a->parent) chain.push_back(a);
+    const size_t len = chain.size();
+    std::vector<char> prev(len + 1, 0), cur(len + 1, 0);
+    for (size_t k = 0; k < parts.size(); ++k) {
+      // any_above[i]: the previous part matched somewhere at chain[i] or farther out.
+      std::vector<char> any_above(len + 2, 0);
+      for (size_t i = len; i-- > 0;) any_above[i] = any_above[i + 1] || prev[i];
+      for (size_t i = 0; i < len; ++i) {
+        const bool before = k == 0 || (joins[k - 1] == '>' ? prev[i + 1] != 0 : any_above[i + 1] != 0);
+        cur[i] = before && parts[k].matches(chain[i]);
+      }
+      cur[len] = 0;
+      std::swap(prev, cur);
+    }
+    return prev[0] != 0;
+  }
+  // CSS specificity (ids, classes, types) as one comparable number.
+  long specificity() const {
+    long total = 0;
+    for (const Compound& c : parts)
+      total += static_cast<long>(c.ids.size()) * 1000000 + static_cast<long>(c.classes.size()) * 1000 +
+               (c.type.empty() ? 0 : 1);
+    return total;
+  }
+};
+
+struct Rule {
+  Selector selector;
+  size_t order;
+  std::string declarations;
+};
+
+// Declarations that change what is drawn; a rule the importer cannot apply is reported only if it has one.
+bool draws(const std::string& declarations) {
+  static const char* const properties[] = {"fill",  "stroke",      "opacity", "transform", "display", "visibility",
+                                           "color", "paint-order", "clip",    "mask",      "filter",  "overflow"};
+  for (const char* p : properties)
+    if (declarations.find(p) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
 void Document::apply_class_styles() {
-  // Illustrator writes `<style>.st0{fill:#F00;}</style>` and class="st0". Class rules outrank
-  // presentation attributes and lose to the inline style, which is exactly where prefixing the
-  // `style` attribute puts them. Only `.class` selectors (Illustrator's only kind) are applied.
-  std::map<std::string, std::string> rules;
+  // Exporters write `<style>.st0{fill:#F00;}</style>` and class="st0" (Illustrator), or type and id
+  // rules. A rule outranks presentation attributes and loses to the inline style; among rules, the more
+  // specific wins, then the later (CSS 2.1, 6.4.3). Prefixing the `style` attribute with the matching
+  // rules in that order puts each declaration exactly there. Compound selectors of a type, ids and classes,
+  // joined by descendant and child combinators, are applied; sibling combinators, attribute selectors and
+  // pseudo-classes are not, and are reported.
+  std::vector<Rule> rules;
   std::vector<xmlNode*> stack{root_};
-  std::vector<xmlNode*> classed;
+  std::vector<xmlNode*> elements;
   while (!stack.empty()) {
     xmlNode* n = stack.back();
     stack.pop_back();
@@ -162,26 +304,47 @@ void Document::apply_class_styles() {
         const auto brace = block.find('{');
         if (brace == std::string::npos) continue;
         const std::string decls = trim(block.substr(brace + 1));
-        std::istringstream selectors(block.substr(0, brace));
+        // A statement at-rule before the selectors (`@import url(x);`) ends at its semicolon.
+        std::string prelude = block.substr(0, brace);
+        if (const auto semicolon = prelude.rfind(';'); semicolon != std::string::npos) prelude.erase(0, semicolon + 1);
+        std::istringstream selectors(prelude);
         std::string sel;
         while (std::getline(selectors, sel, ',')) {
           sel = trim(sel);
-          if (sel.size() > 1 && sel[0] == '.' && sel.find_first_of(" .:#>[") == 0 &&
-              sel.find_first_of(" .:#>[", 1) == std::string::npos)
-            rules[sel.substr(1)] += decls + ";";
+          if (sel.empty()) continue;
+          if (sel[0] == '@') {
+            // @font-face and the like hold no art styles, and @import is never loaded; the rules inside
+            // @media or @supports are not applied, and that is said when they would draw.
+            if ((sel.rfind("@media", 0) == 0 || sel.rfind("@supports", 0) == 0) && draws(decls))
+              notes_.push_back({"<style> at line " + std::to_string(xmlGetLineNo(n)),
+                                sel.substr(0, sel.find(' ')) + " rules are not applied; their styles are ignored"});
+            continue;
+          }
+          Selector parsed;
+          if (parsed.parse(sel)) {
+            rules.push_back({parsed, rules.size(), decls});
+          } else if (draws(decls)) {
+            notes_.push_back({"<style> at line " + std::to_string(xmlGetLineNo(n)),
+                              "CSS selector \"" + sel.substr(0, 60) +
+                                  "\" is not supported (only types, #ids and .classes, joined by spaces or >); "
+                                  "its rule is ignored"});
+          }
         }
       }
     }
-    if (!attribute(n, "class").empty()) classed.push_back(n);
+    elements.push_back(n);
     for (xmlNode* c = n->children; c; c = c->next)
       if (c->type == XML_ELEMENT_NODE) stack.push_back(c);
   }
   if (rules.empty()) return;
-  for (xmlNode* n : classed) {
-    std::istringstream classes(attribute(n, "class"));
-    std::string cls, prefix;
-    while (classes >> cls)
-      if (auto it = rules.find(cls); it != rules.end()) prefix += it->second;
+  std::stable_sort(rules.begin(), rules.end(), [](const Rule& a, const Rule& b) {
+    return a.selector.specificity() != b.selector.specificity() ? a.selector.specificity() < b.selector.specificity()
+                                                                : a.order < b.order;
+  });
+  for (xmlNode* n : elements) {
+    std::string prefix;
+    for (const Rule& rule : rules)
+      if (rule.selector.matches(n)) prefix += rule.declarations + ";";
     if (prefix.empty()) continue;
     const std::string style = prefix + attribute(n, "style");
     xmlSetProp(n, BAD_CAST "style", BAD_CAST style.c_str());

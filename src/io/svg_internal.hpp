@@ -75,15 +75,19 @@ class Document {
   xmlNode* root() const { return root_; }
   xmlNode* find(const std::string& id) const;
   const std::string& name() const { return name_; }
+  /// What the document itself could not apply, as (element, problem) warnings.
+  const std::vector<std::pair<std::string, std::string>>& notes() const { return notes_; }
 
  private:
   void index(xmlNode* node, int depth);
   void apply_class_styles();
+  void resolve_auto_radii(xmlNode* ellipse);
   std::string name_;
   xmlDoc* doc_ = nullptr;
   xmlNode* root_ = nullptr;
   xmlNs* svg_ns_ = nullptr;
   std::map<std::string, xmlNode*> by_id_;
+  std::vector<std::pair<std::string, std::string>> notes_;
 };
 
 /// The warning for path data `d` that svgpp's grammar read up to offset `stop` only: the character to
@@ -93,6 +97,23 @@ std::string path_data_error(const std::string& d, size_t stop);
 /// The warning for a `points` list that svgpp read only in part: an odd coordinate dropped, or where the
 /// data stops being numbers.
 std::string points_error(const std::string& points);
+
+/// A CSS length unit (empty or px, in, cm, mm, q, pt, pc) applied to `value`, in px (user units); nullopt
+/// for relative units (em, ex, %, …).
+std::optional<double> length_in_px(const std::string& unit, double value);
+/// A length attribute's value in user units, percentages of `percent_of`; nullopt when it is not one.
+std::optional<double> parse_length(const std::string& text, double percent_of);
+/// The `transform` attribute or CSS property (both spellings taken in either place, as browsers do);
+/// nullopt with `error` set when it does not parse. "none" is the identity.
+std::optional<Affine> parse_transform(const std::string& text, std::string& error);
+/// `transform-origin` in user units, keywords and percentages resolved against a box of the given size at
+/// the user-space origin (CSS Transforms 1, transform-box view-box); nullopt with `error` set when invalid.
+std::optional<Vec2> parse_transform_origin(const std::string& text, double box_width, double box_height,
+                                           std::string& error);
+/// `path` (in art units) cut to the intersection of the convex `clips` (art units): unchanged when it lies
+/// inside, else its fill inside the clip and its stroke (round joins and caps, within `tolerance`) as a
+/// filled band inside the clip, in paint order; empty when nothing of it is inside.
+std::vector<ArtPath> clip_to_viewports(ArtPath path, const std::vector<std::vector<Vec2>>& clips, double tolerance);
 
 /// `<name>: <what>: <problem>; <fix>` as every importer message reads.
 std::string message(const std::string& file, const std::string& what, const std::string& problem,

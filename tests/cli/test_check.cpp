@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 #include "run_animpak.hpp"
@@ -67,6 +68,31 @@ TEST_CASE("animpak check: skipped and reduced features are warnings, and the art
   CHECK(r.err.find("animpak: warning: ") != std::string::npos);
   const std::vector<double> viewport = report["document"]["viewport"];
   CHECK(viewport == std::vector<double>{0, 0, 100, 50});
+}
+
+TEST_CASE("animpak check: a warning many paths share is one line with their count and the first names") {
+  const animpak::test::TempDir scratch("animpak-check-");
+  std::string body;
+  for (int i = 0; i < 5; ++i)
+    body += "<path id=\"p" + std::to_string(i) + "\" d=\"M" + std::to_string(10 + 15 * i) +
+            " 10 l10 0 l-5 30\" stroke=\"#000\"/>";
+  const auto svg = scratch_svg(
+      scratch, "many.svg", R"svg(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">)svg" + body + "</svg>");
+  const CommandResult r = run_animpak("check " + svg.string() + " --json");
+  REQUIRE(r.code == 0);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  std::vector<std::string> warnings;
+  for (const auto& w : report["warnings"]) warnings.push_back(w.get<std::string>());
+  INFO(r.err);
+  const auto has = [&](const std::string& line) {
+    return std::find(warnings.begin(), warnings.end(), svg.string() + ": " + line) != warnings.end();
+  };
+  CHECK(has("5 elements (path#p0, path#p1, path#p2 and 2 more): stroke-linejoin miter is drawn round"));
+  CHECK(has("5 elements (path#p0, path#p1, path#p2 and 2 more): stroke-linecap butt is drawn round"));
+  CHECK(
+      has("5 paths (p0, p1, p2 and 2 more): 5 open subpath(s) filled as if closed (as SVG fills them); the "
+          "element's outline takes them in closed"));
+  CHECK(r.err.find("p3") == std::string::npos);
 }
 
 TEST_CASE("animpak check: a file that cannot be imported exits 2 with the error, also as JSON") {
