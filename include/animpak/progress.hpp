@@ -22,9 +22,9 @@ struct ProgressSample {
 };
 
 struct StopEstimate {
-  std::uint64_t iteration = 0;   ///< the predicted stop
-  double seconds_left = 0.0;     ///< at the recent pace
-  bool secondary_pending = false;  ///< secondary elements will grow after the predicted stall
+  std::uint64_t iteration = 0;     ///< the predicted stop
+  double seconds_left = 0.0;       ///< at the recent pace
+  bool secondary_pending = false;  ///< secondary elements will grow after the primary ones stall (counted in)
 };
 
 /// Predicts the iteration at which the run stops, and the seconds left (docs/cli.md, "Progress and the time
@@ -32,7 +32,7 @@ struct StopEstimate {
 /// (unit_mesh_density): they grow until they fill about 0.6 of it. Once they meet, from the stall test's
 /// own windows: each window's rise of the mean g decays by the ratio of the last two, until one rises by
 /// less than stall_growth. Either way §5.3's gap test can come first (the largest gap's exponential fall
-/// to stop_gap), and settling adds a share. The pace of the last half window, scaled by the growth still to
+/// over the last two windows, to stop_gap), and settling adds a share. The pace of the last half window, scaled by the growth still to
 /// come, gives the seconds. Nothing (nullopt) until enough samples.
 class StopModel {
  public:

@@ -138,8 +138,8 @@ std::string written_files(const fs::path& dir, WrittenBy by) {
     if (svg) what += std::string(what.empty() ? "" : " and ") + std::to_string(svg) + " SVG";
     if (png + svg) rows.push_back({"frames/", what + " frames, " + size_text(bytes)});
   }
-  for (const char* name : {"animation.gif", "animation.mp4", "animation.json", "animation.lottie", "animation.svg",
-                           "contact.png"})
+  for (const char* name :
+       {"animation.gif", "animation.mp4", "animation.json", "animation.lottie", "animation.svg", "contact.png"})
     file(name);
   std::ostringstream out;
   out << "animpak: files in " << dir.string() << ":\n";

@@ -91,9 +91,8 @@ TEST_CASE("animpak render: says what it renders and lists every file it wrote wi
                                            " --device reference --max-iterations 10 --frames 3 --size 32"
                                            " --format png,gif,lottie");
   REQUIRE(packed.code == 0);
-  CHECK_THAT(packed.err, Contains("rendering 3 frames at 32 px") && Contains("state.bin") &&
-                             Contains("input/") && Contains("3 PNG frames") && Contains("animation.gif") &&
-                             Contains("animation.json"));
+  CHECK_THAT(packed.err, Contains("rendering 3 frames at 32 px") && Contains("state.bin") && Contains("input/") &&
+                             Contains("3 PNG frames") && Contains("animation.gif") && Contains("animation.json"));
   const CommandResult rendered = run_animpak("render " + out + " --frames 4 --size 32 --format png,svg");
   REQUIRE(rendered.code == 0);
   CHECK_THAT(rendered.err, Contains("rendering 4 frames") && Contains("4 PNG and 4 SVG frames") &&
