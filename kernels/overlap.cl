@@ -1,6 +1,6 @@
 /* Overlap test and force, paper Eq. 3 (src/solver/reference/overlap.cpp): every boundary vertex, and
  * points of the slice intervals next to it (ForceParams.interval_points), against every other
- * element's boundary polygon interpolated at their t, at any depth, with the boundary edge tested for
+ * element's boundary polygon on its curve at their t (curve.cl), at any depth, with the boundary edge tested for
  * crossings on the same walk; the force adds a pull along the way out of the other element. The
  * elements tried are the broadphase's candidates (OverlapGridInfo, built on the host by
  * reference::build_overlap_grid; docs/architecture.md, "The overlap test"): the merged lists of the
@@ -11,25 +11,56 @@
 float ap_min(float a, float b) { return b < a ? b : a; }
 float ap_max(float a, float b) { return a < b ? b : a; }
 
-/** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
+/** Vertex k's position on its curve at weights b between the slices whose first vertices are lo and hi
+ * (reference curve_point in overlap.cpp). */
+void curve_point(__global const float* x,
+                 __global const float* y,
+                 __global const float* mx,
+                 __global const float* my,
+                 int lo,
+                 int hi,
+                 int k,
+                 const CurveBasis b,
+                 float* px,
+                 float* py) {
+  *px = curve_value(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b);
+  *py = curve_value(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b);
+}
+
+/** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon on the curve at weights b between the
  * slices whose first vertices are lo and hi (reference overlap_edge). */
 void overlap_edge(__global const float* x,
                   __global const float* y,
+                  __global const float* mx,
+                  __global const float* my,
                   int lo,
                   int hi,
                   int i,
                   int edges,
-                  float w,
+                  const CurveBasis b,
                   float* ax,
                   float* ay,
                   float* bx,
                   float* by) {
   const int j = i + 1 == edges ? 0 : i + 1;
-  *ax = x[lo + i] + (x[hi + i] - x[lo + i]) * w;
-  *ay = y[lo + i] + (y[hi + i] - y[lo + i]) * w;
-  *bx = x[lo + j] + (x[hi + j] - x[lo + j]) * w;
-  *by = y[lo + j] + (y[hi + j] - y[lo + j]) * w;
+  curve_point(x, y, mx, my, lo, hi, i, b, ax, ay);
+  curve_point(x, y, mx, my, lo, hi, j, b, bx, by);
 }
+
+#ifdef AP_LANES
+/** curve_value on AP_LANES lanes: the same operations on each lane, the clamp as selects. */
+ap_floatv curve_value_lanes(const ap_floatv x0,
+                            const ap_floatv x1,
+                            const ap_floatv m0,
+                            const ap_floatv m1,
+                            const CurveBasis b) {
+  ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
+  const ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
+  v = select(v, lo, v < lo);
+  v = select(v, hi, hi < v);
+  return v;
+}
+#endif
 
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
  * slice. */
@@ -143,16 +174,18 @@ int overlap_slice_pair(int e,
   return s;
 }
 
-/** The polygon of the slices whose first vertices are lo and hi, interpolated at w, edge by edge: the
+/** The polygon of the slices whose first vertices are lo and hi, on the curve at weights b, edge by edge: the
  * even-odd test of (px, py) into *inside, and into *crosses whether the query edge p → n properly crosses
  * one of its edges, tried until one is found and only where the two edges' boxes meet (reference
  * overlap_polygon_walk). */
 void overlap_polygon_walk(__global const float* x,
                           __global const float* y,
+                          __global const float* mx,
+                          __global const float* my,
                           int lo,
                           int hi,
                           int edges,
-                          float w,
+                          const CurveBasis b,
                           float px,
                           float py,
                           float nx,
@@ -171,11 +204,14 @@ void overlap_polygon_walk(__global const float* x,
    * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
    * lanes"). */
   for (; i + AP_LANES < edges; i += AP_LANES) {
-    const ap_floatv xa = ap_vloadf(0, x + lo + i), ya = ap_vloadf(0, y + lo + i);
-    const ap_floatv xb = ap_vloadf(0, x + lo + i + 1), yb = ap_vloadf(0, y + lo + i + 1);
-    const ap_floatv ax = xa + (ap_vloadf(0, x + hi + i) - xa) * w, ay = ya + (ap_vloadf(0, y + hi + i) - ya) * w;
-    const ap_floatv bx = xb + (ap_vloadf(0, x + hi + i + 1) - xb) * w,
-                    by = yb + (ap_vloadf(0, y + hi + i + 1) - yb) * w;
+    const ap_floatv ax = curve_value_lanes(ap_vloadf(0, x + lo + i), ap_vloadf(0, x + hi + i),
+                                           ap_vloadf(0, mx + lo + i), ap_vloadf(0, mx + hi + i), b);
+    const ap_floatv ay = curve_value_lanes(ap_vloadf(0, y + lo + i), ap_vloadf(0, y + hi + i),
+                                           ap_vloadf(0, my + lo + i), ap_vloadf(0, my + hi + i), b);
+    const ap_floatv bx = curve_value_lanes(ap_vloadf(0, x + lo + i + 1), ap_vloadf(0, x + hi + i + 1),
+                                           ap_vloadf(0, mx + lo + i + 1), ap_vloadf(0, mx + hi + i + 1), b);
+    const ap_floatv by = curve_value_lanes(ap_vloadf(0, y + lo + i + 1), ap_vloadf(0, y + hi + i + 1),
+                                           ap_vloadf(0, my + lo + i + 1), ap_vloadf(0, my + hi + i + 1), b);
     /* ray_crosses_segment */
     const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
     inside = inside != ((ap_lane_count(ray) & 1) != 0);
@@ -194,7 +230,7 @@ void overlap_polygon_walk(__global const float* x,
 #endif
   for (; i < edges; ++i) {
     float ax, ay, bx, by;
-    overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
+    overlap_edge(x, y, mx, my, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
     if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 && ap_min(ay, by) <= ey1 &&
         segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
@@ -204,14 +240,16 @@ void overlap_polygon_walk(__global const float* x,
   *crosses_out = crosses;
 }
 
-/** The way out of a point inside the interpolated polygon: its nearest outline point (*qx, *qy), the
+/** The way out of a point inside the polygon on the curve: its nearest outline point (*qx, *qy), the
  * first edge reaching the minimum winning; returns the squared distance (reference overlap_way_out). */
 float overlap_way_out(__global const float* x,
                       __global const float* y,
+                      __global const float* mx,
+                      __global const float* my,
                       int lo,
                       int hi,
                       int edges,
-                      float w,
+                      const CurveBasis b,
                       float px,
                       float py,
                       float* qx,
@@ -221,7 +259,7 @@ float overlap_way_out(__global const float* x,
   *qy = py;
   for (int i = 0; i < edges; ++i) {
     float ax, ay, bx, by, cx, cy;
-    overlap_edge(x, y, lo, hi, i, edges, w, &ax, &ay, &bx, &by);
+    overlap_edge(x, y, mx, my, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
     const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
     if (d2 < near2) near2 = d2, *qx = cx, *qy = cy;
   }
@@ -254,6 +292,9 @@ uchar overlap_point(int own,
                     __global const float* x,
                     __global const float* y,
                     __global const float* t,
+                    __global const float* mx,
+                    __global const float* my,
+                    bool cubic,
                     __global const float* growth,
                     __global const uchar* element_secondary,
                     const OverlapGridInfo grid,
@@ -279,12 +320,13 @@ uchar overlap_point(int own,
                                      box_y0, box_x1, box_y1, &w);
     if (s < 0) continue;
     const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
+    const CurveBasis b = curve_basis(w, t[hi] - t[lo], cubic);
     bool inside, crosses;
-    overlap_polygon_walk(x, y, lo, hi, edges, w, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
+    overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
     /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
      * entered. */
     float cqx = px, cqy = py;
-    const float near2 = inside ? overlap_way_out(x, y, lo, hi, edges, w, px, py, &cqx, &cqy) : INFINITY;
+    const float near2 = inside ? overlap_way_out(x, y, mx, my, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
     if (crosses) overlap = true;
     const bool other_secondary = element_secondary[e] != 0;
     if ((crosses || inside) && !(other_secondary && !own_secondary)) {
@@ -345,6 +387,9 @@ uchar overlap_test(int v,
                    __global const float* x,
                    __global const float* y,
                    __global const float* t,
+                   __global const float* mx,
+                   __global const float* my,
+                   bool cubic,
                    __global const float* growth,
                    __global const uchar* element_secondary,
                    const OverlapGridInfo grid,
@@ -364,25 +409,29 @@ uchar overlap_test(int v,
   *out_y = 0.0f;
   const float own_g = growth[own_slice];
   uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
-                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, growth,
-                              element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
+                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx, my, cubic,
+                              growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? 1 : -1;
     if (own_index + step < 0 || own_index + step >= own_slices) continue;
-    const int w = v + step * per_slice, wn = next + step * per_slice;
+    const int w = v + step * per_slice;
+    /* The interval's lower and upper slices, and v's side of it. */
+    const int lo = step > 0 ? own_lo : own_lo - per_slice, hi = lo + per_slice;
+    const int k = v - own_lo, kn = next - own_lo;
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
       const float f = (float)j / denominator;
-      const float mx = x[v] + (x[w] - x[v]) * f;
-      const float my = y[v] + (y[w] - y[v]) * f;
       const float mt = t[v] + (t[w] - t[v]) * f;
-      const float nx = x[next] + (x[wn] - x[next]) * f;
-      const float ny = y[next] + (y[wn] - y[next]) * f;
-      found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny, elements,
-                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
-                            growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
-      overlap_fold(found, near2, qx, qy, mx, my, &bits, &depth2, out_x, out_y);
+      const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, t[hi] - t[lo], cubic);
+      float px, py, nx, ny;
+      curve_point(x, y, mx, my, lo, hi, k, b, &px, &py);
+      curve_point(x, y, mx, my, lo, hi, kn, b, &nx, &ny);
+      found =
+          overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, px, py, mt, nx, ny, elements,
+                        element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx,
+                        my, cubic, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
+      overlap_fold(found, near2, qx, qy, px, py, &bits, &depth2, out_x, out_y);
     }
   }
   return bits;

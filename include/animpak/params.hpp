@@ -58,6 +58,8 @@ struct Params {
                                       ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
     int interval_points = 3;          ///< the overlap test also checks this many evenly spaced times inside
                                       ///< every slice interval (1: the middle only; docs/parameters.md)
+    int motion_curve = 1;             ///< between slices every vertex follows 1: a monotone C1 cubic through
+                                      ///< its slices, 0: straight lines (§6); include/animpak/curve.hpp
   };
 
   /// §5.3 growth (src/solver).

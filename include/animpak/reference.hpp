@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "animpak/closest_point.hpp"
+#include "animpak/curve.hpp"
 #include "animpak/params.hpp"
 #include "animpak/simulation.hpp"
 #include "animpak/spring_class.hpp"
@@ -161,17 +162,23 @@ struct OverlapResult {
                                      ///< except a secondary one when v's element is primary
 };
 
+/// Every vertex's tangent at its slice (include/animpak/curve.hpp: Steffen's, across the loop seam by
+/// `links`), from one snapshot; `cubic` false weighs them by nothing (straight lines). curve.cpp.
+void curve_tangents(const Topology& topo, const CurveLinks& links, const SimState& state, bool cubic,
+                    CurveTangents& out);
+
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
-/// vertex of its slice) against every other element's boundary polygon interpolated linearly at v's t,
+/// vertex of its slice) against every other element's boundary polygon on its curve at v's t (`tangents`),
 /// skipping elements whose slice boxes miss the edge (only the broadphase's candidates, `grid`, are
 /// tried, in increasing element order); then the same between slices, where the paper's discrete test
 /// cannot see (§6, §8): each slice interval holds `interval_points` evenly spaced times, at fractions
 /// j / (interval_points + 1), and v tests those of the two intervals next to it that lie in the half
-/// nearer to v (v and its edge interpolated towards the neighbouring slice, at that time; the middle is
-/// tested from both ends). Interior vertices and elements with fewer than two slices never overlap.
+/// nearer to v (v and its edge on their curves towards the neighbouring slice, at that time; the middle
+/// is tested from both ends). Interior vertices and elements with fewer than two slices never overlap.
 /// overlap.cpp.
 OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t v, std::int32_t interval_points);
+                           const OverlapGrid& grid, const CurveTangents& tangents, std::int32_t v,
+                           std::int32_t interval_points);
 
 /// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a point
 /// between slices next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so

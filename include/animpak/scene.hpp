@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "animpak/curve.hpp"
 #include "animpak/element.hpp"
 #include "animpak/io.hpp"
 #include "animpak/random.hpp"
@@ -63,7 +64,8 @@ struct World {
   std::vector<SpacetimeElement> library;  ///< built once per library entry, full size, animated
   std::vector<ElementInstance> elements;
   Topology topology;
-  SimState state;  ///< the initial state: shrunken elements at rest, g = 1
+  CurveLinks curve;  ///< curve_links(topology): where each slice's curve continues, for the frames
+  SimState state;    ///< the initial state: shrunken elements at rest, g = 1
   Params params;
   std::uint64_t seed = 1;
   bool loop = true;

@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 42> table{{
+const std::array<ParamInfo, 43> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -82,6 +82,11 @@ const std::array<ParamInfo, 42> table{{
     {"interval_points", "forces", field<&Params::forces, &Params::Forces::interval_points>(), 1, 15,
      "times the overlap test checks inside each slice interval, evenly spaced (paper §8)",
      "none: slices only (§8: future work)"},
+    {"motion_curve", "forces", field<&Params::forces, &Params::Forces::motion_curve>(), 0, 1,
+     "between slices every vertex follows 1: a monotone cubic through its slices (C1, no jolt at a slice); "
+     "0: straight lines. The frames, the animated files' keys, the quality measures and the overlap test "
+     "all use it",
+     "straight lines (§6)"},
     {"growth_rate", "growth", field<&Params::growth, &Params::Growth::growth_rate>(), 0.0, inf,
      "g += growth_rate · Δt_sim per free step (§5.3)", "g += 0.001 Δt_sim per free step (§5.3)"},
     {"shrink_rate", "growth", field<&Params::growth, &Params::Growth::shrink_rate>(), 0.0, inf,

@@ -89,13 +89,42 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
   keys.stroke_frames = std::move(frames), keys.stroke_scales = std::move(scales);
 }
 
+// How far, in pixels of the output, the player's straight line between two keys may stray from the
+// curve the frames follow: half a pixel of the output picture.
+constexpr double key_tolerance_px = 0.5;
+
+// The number of equal parts the interval [ta, tb] between two slices is keyed in: the fewest (at most 16)
+// for which the curve at the middle of every part lies within key_tolerance_px of the straight line
+// between the part's ends, for every vertex of the element.
+int key_parts(const World& world, const SimState& state, int element, double ta, double tb, double pixels) {
+  constexpr int most = 16;
+  for (int parts = 1; parts < most; ++parts) {
+    double worst = 0.0;
+    std::vector<Vec2> a = element_at(world, state, element, ta);
+    for (int j = 0; j < parts && worst <= key_tolerance_px; ++j) {
+      const double t0 = ta + (tb - ta) * j / parts, t1 = ta + (tb - ta) * (j + 1) / parts;
+      const std::vector<Vec2> b = element_at(world, state, element, t1);
+      const std::vector<Vec2> m = element_at(world, state, element, 0.5 * (t0 + t1));
+      for (std::size_t v = 0; v < m.size(); ++v)
+        worst =
+            std::max(worst, pixels * std::hypot(m[v].x - 0.5 * (a[v].x + b[v].x), m[v].y - 0.5 * (a[v].y + b[v].y)));
+      a = b;
+    }
+    if (worst <= key_tolerance_px) return parts;
+  }
+  return most;
+}
+
 }  // namespace
 
-// Frame i shows t = i / N when looping, i / (N − 1) otherwise (frame_times). Between two slices every
-// vertex moves straight (element_at) and every art point is a fixed barycentric combination of three
-// vertices of one triangle (replay_art), so the art moves straight too: keys at the slices, interpolated
-// linearly, are the motion itself. The first slice is at t = 0 and the last at t = 1 (the end-to-end
-// constraint), so linear keys span the document, the last at frame N when looping.
+// Frame i shows t = i / N when looping, i / (N − 1) otherwise (frame_times). Every art point is a fixed
+// barycentric combination of three vertices of one triangle (replay_art), so the art follows the vertices'
+// curve between slices (element_at): keys at the slices, and between two slices as many evenly spaced
+// keys as it takes for the player's straight line between keys to stay within key_tolerance_px of the
+// curve (measured at the middle of every key interval, the farthest point of a chord from a cubic that
+// bends one way). With straight lines between slices (motion_curve 0) the slices alone are the motion.
+// The first slice is at t = 0 and the last at t = 1 (the end-to-end constraint), so linear keys span the
+// document, the last at frame N when looping.
 ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out) {
   ElementKeys keys;
   auto add = [&](double frame, const std::vector<Vec2>& positions) {
@@ -113,14 +142,28 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   const SpacetimeElement& lib = world.library[inst.library];
   const int P = lib.vertices_per_slice();
   const double frames_per_unit = world.loop ? frames : frames - 1, steps = std::pow(10.0, key_decimals);
+  const auto frame_of = [&](double t) { return std::round(t * frames_per_unit * steps) / steps; };
+  const Box box = world.container.bounds();
+  const double pixels =
+      fit_to_picture(raster_width(box, out.style.size), out.style.size, box, 0.02 * out.style.size).scale;
+  const bool cubic = world.params.forces.motion_curve != 0;
   std::vector<Vec2> positions(P);
+  double last_t = 0.0;
   for (int s = 0; s < lib.slice_count; ++s) {
     const int first = inst.vertex_begin + s * P;
-    const double frame = std::round(state.t[first] * frames_per_unit * steps) / steps;
+    const double t = state.t[first], frame = frame_of(t);
     // Time springs keep slices apart; two at one time would be a jump, which no pair of keys draws.
     if (!keys.frames.empty() && frame <= keys.frames.back()) continue;
+    if (cubic && !keys.frames.empty()) {
+      const int parts = key_parts(world, state, element, last_t, t, pixels);
+      for (int j = 1; j < parts; ++j) {
+        const double tj = last_t + (t - last_t) * j / parts, fj = frame_of(tj);
+        if (fj > keys.frames.back() && fj < frame) add(fj, element_at(world, state, element, tj));
+      }
+    }
     for (int v = 0; v < P; ++v) positions[v] = {state.x[first + v], state.y[first + v]};
     add(frame, positions);
+    last_t = t;
   }
   // A document that does not loop shows its last slice through its last frame, up to op = N.
   if (keys.frames.back() < frames) add(frames, positions);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "animpak/curve.hpp"
 #include "animpak/render.hpp"
 
 namespace animpak {
@@ -19,12 +20,44 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   // Slices stay ordered (time springs) and flat (simultaneity), so the first vertex's t is the slice's.
   int s = 0;
   while (s < n - 2 && slice_t(s + 1) < tf) ++s;
+  std::vector<Vec2> out(P);
+  if (n < 2) {
+    for (int v = 0; v < P; ++v) out[v] = {state.x[inst.vertex_begin + v], state.y[inst.vertex_begin + v]};
+    return out;
+  }
   const double t0 = slice_t(s), t1 = slice_t(s + 1);
   const double w = t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
-  std::vector<Vec2> out(P);
+  // The curve the overlap test walks (include/animpak/curve.hpp), in double: the slices of this interval
+  // and, for the tangents, the ones before and after it, across the loop seam.
+  const Topology& topo = world.topology;
+  const CurveLinks& links =
+      world.curve.prev.size() == std::size_t(topo.slice_count()) ? world.curve : curve_links(topo);
+  const int g0 = inst.slice_begin + s, g1 = g0 + 1;
+  const bool cubic = world.params.forces.motion_curve != 0;
+  const CurveBasis<double> basis = curve_basis(w, t1 - t0, cubic);
+  // The tangent of vertex k of global slice g, in x and y (curve_tangents, in double).
+  const auto tangent = [&](int g, int k) {
+    const int p = links.prev[g], q = links.next[g], e = topo.slice_element[g];
+    const int v = topo.slice_begin[g] + k;
+    const double tg = state.t[topo.slice_begin[g]];
+    double hp = 0, hn = 0, xp = 0, yp = 0, xn = 0, yn = 0;
+    if (p >= 0) {
+      const double tp = state.t[topo.slice_begin[p]] - (g == topo.element_slice_begin[e] ? 1.0 : 0.0);
+      hp = tg - tp, xp = state.x[topo.slice_begin[p] + k], yp = state.y[topo.slice_begin[p] + k];
+    }
+    if (q >= 0) {
+      const double tn = state.t[topo.slice_begin[q]] + (g + 1 == topo.element_slice_begin[e + 1] ? 1.0 : 0.0);
+      hn = tn - tg, xn = state.x[topo.slice_begin[q] + k], yn = state.y[topo.slice_begin[q] + k];
+    }
+    const double x0 = state.x[v], y0 = state.y[v];
+    return Vec2{curve_tangent(curve_slope(xp, x0, hp), curve_slope(x0, xn, hn), hp, hn, p >= 0, q >= 0),
+                curve_tangent(curve_slope(yp, y0, hp), curve_slope(y0, yn, hn), hp, hn, p >= 0, q >= 0)};
+  };
   for (int v = 0; v < P; ++v) {
     const int a = inst.vertex_begin + s * P + v, b = a + P;
-    out[v] = {state.x[a] + w * (double(state.x[b]) - state.x[a]), state.y[a] + w * (double(state.y[b]) - state.y[a])};
+    const Vec2 ma = cubic ? tangent(g0, v) : Vec2{}, mb = cubic ? tangent(g1, v) : Vec2{};
+    out[v] = {curve_value<double>(state.x[a], state.x[b], ma.x, mb.x, basis),
+              curve_value<double>(state.y[a], state.y[b], ma.y, mb.y, basis)};
   }
   return out;
 }

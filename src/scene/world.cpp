@@ -191,6 +191,8 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
     }
   }
 
+  world.curve = curve_links(topo);
+
   SimState& state = world.state;
   const std::size_t n = state.x.size();
   state.vx.assign(n, 0.0f);

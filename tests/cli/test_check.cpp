@@ -205,7 +205,7 @@ TEST_CASE("animpak check SCENE.json: the scene's container with its outline and 
   CHECK(holed.err.find("is not a hole") == std::string::npos);
 }
 
-TEST_CASE("animpak check --container: a .path hole (type 7) is counted and measured; bad hole indices exit 2") {
+TEST_CASE("animpak check --container: a .path hole (type 7) is counted and measured, and bad hole indices exit 2") {
   const animpak::test::TempDir scratch("animpak-check-");
   // A 400 x 200 frame with a 100 x 100 hole.
   const auto frame = scratch_svg(scratch, "frame.path",

@@ -230,7 +230,8 @@ def main():
         if line.strip() in printed:
             print(f"ok   the document's {line[:40]}... line is what the commands printed")
         else:
-            fail(f"docs/first-scene.md quotes {line!r}, which no command printed")
+            said = [p for p in printed if p.startswith("quality:")]
+            fail(f"docs/first-scene.md quotes {line!r}, which no command printed (they printed {said})")
     print(f"{len(failures)} failure(s)")
     sys.exit(1 if failures else 0)
 

@@ -127,7 +127,7 @@ TEST_CASE("svg: degenerate shapes are dropped with one warning each naming the e
   INFO(warnings_of(art));
   for (const char* id : {"dot", "zero", "line", "out-and-back", "flat-rect", "thin-rect", "no-circle", "no-ellipse"})
     CHECK(!has_path(art, id));
-  // The same problem on several elements is one line naming them (docs/check.md, "Warnings").
+  // The same problem on several elements is one line naming them (docs/scene-format.md, "SVG structure").
   CHECK(has_warning(art,
                     "test.svg: 2 elements (path#dot, path#zero): its geometry is a single point or only "
                     "zero-length segments; nothing drawn (dropped)"));

@@ -44,7 +44,13 @@ std::string text_of(const fs::path& file) {
 // The tiny star world's elements are a tenth of the container wide: at 320 pixels high they are about 30
 // pixels across, so that a frame's edge pixels are a small share of its ink. A transparent background and
 // no container keep the alpha masks the elements' paint.
-World big_star_world() { return tiny_star_world(); }
+// Most tests here check the keys of straight motion between slices (motion_curve 0), where the slices alone
+// are the motion; the curve's keys between slices have tests of their own below.
+World big_star_world(int motion_curve = 0) {
+  World world = tiny_star_world();
+  world.params.forces.motion_curve = motion_curve;
+  return world;
+}
 
 FrameOutput animated_output(const fs::path& dir, std::vector<FrameFormat> formats) {
   FrameOutput out;
@@ -351,22 +357,30 @@ TEST_CASE(
       "rlottie was not found when the build was configured (Debian package librlottie-dev); "
       "nothing was compared");
 #else
-  const World world = big_star_world();
-  const SimState state = drifted_state(world);
-  const animpak::test::TempDir temp("animpak-animation-");
-  const auto dir = temp / "rlottie-between";
-  write_frames(world, state, animated_output(dir, {FrameFormat::png, FrameFormat::lottie}));
-  const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
-  REQUIRE(doc["layers"][world.elements.size() - 1]["shapes"][0]["it"][0]["ks"]["k"].size() == 4);
-  // Element 0's keys at frames 0, 1.5, 4 and 6, the others' at 0, 2, 4 and 6: frames 1, 3 and 5 lie between
-  // two slices of every element, frame 2 between two of element 0's.
-  for (int i = 0; i < kFrames; ++i) {
-    const PlayerFrame theirs = rlottie_frame(dir / "animation.json", std::size_t(i));
-    REQUIRE(theirs.error.empty());
-    const Image ours = read_rgba(dir / "frames" / frame_png(i));
-    const double iou = alpha_iou(ours, Image{theirs.width, theirs.height, theirs.rgba});
-    INFO("frame " << i << ": IoU " << iou);
-    CHECK(iou >= 0.99);
+  // Straight lines between slices (keys at the slices) and the curve (keys between them too).
+  for (const int curve : {0, 1}) {
+    INFO("motion_curve " << curve);
+    const World world = big_star_world(curve);
+    const SimState state = drifted_state(world);
+    const animpak::test::TempDir temp("animpak-animation-");
+    const auto dir = temp / "rlottie-between";
+    write_frames(world, state, animated_output(dir, {FrameFormat::png, FrameFormat::lottie}));
+    const nlohmann::json doc = nlohmann::json::parse(text_of(dir / "animation.json"));
+    const std::size_t keys = doc["layers"][world.elements.size() - 1]["shapes"][0]["it"][0]["ks"]["k"].size();
+    if (curve == 0)
+      REQUIRE(keys == 4);
+    else
+      REQUIRE(keys > 4);
+    // Element 0's slices at frames 0, 1.5, 4 and 6, the others' at 0, 2, 4 and 6: frames 1, 3 and 5 lie
+    // between two slices of every element, frame 2 between two of element 0's.
+    for (int i = 0; i < kFrames; ++i) {
+      const PlayerFrame theirs = rlottie_frame(dir / "animation.json", std::size_t(i));
+      REQUIRE(theirs.error.empty());
+      const Image ours = read_rgba(dir / "frames" / frame_png(i));
+      const double iou = alpha_iou(ours, Image{theirs.width, theirs.height, theirs.rgba});
+      INFO("frame " << i << ": IoU " << iou);
+      CHECK(iou >= 0.99);
+    }
   }
 #endif
 }

@@ -14,6 +14,7 @@ TEST_CASE("frame_times: a loop stops one step short of 1, a non-loop ends on 1")
 
 TEST_CASE("element_at: linear between the slices whose t bracket the frame time, clamped outside") {
   World world = tiny_star_world();
+  world.params.forces.motion_curve = 0;  // the paper's straight lines (§6)
   SimState& state = world.state;
   const ElementInstance& inst = world.elements[1];
   const int P = world.library[inst.library].vertices_per_slice();
@@ -40,6 +41,43 @@ TEST_CASE("element_at: linear between the slices whose t bracket the frame time,
   check_all(1.5, 0.3, 0.35);
   // The other elements keep their own slices.
   CHECK(element_at(world, state, 0, 0.45).size() == world.library[world.elements[0].library].slice.vertices.size());
+}
+
+TEST_CASE("element_at: on the curve, through the slices, between their values, a straight track kept straight") {
+  World world = tiny_star_world();
+  REQUIRE(world.params.forces.motion_curve == 1);
+  SimState& state = world.state;
+  const ElementInstance& inst = world.elements[1];
+  const int P = world.library[inst.library].vertices_per_slice();
+  // Slice s of element 1: x turns back at slice 2 (0, 0.1, 0.3, 0.2), y rises evenly, at evenly spaced times.
+  const float xs[] = {0.0f, 0.1f, 0.3f, 0.2f};
+  for (int s = 0; s < 4; ++s)
+    for (int v = 0; v < P; ++v) {
+      const int id = inst.vertex_begin + s * P + v;
+      state.t[id] = float(s) / 3.0f;
+      state.x[id] = xs[s];
+      state.y[id] = 0.2f + 0.05f * float(s);
+    }
+  for (int s = 0; s < 4; ++s)
+    for (const Vec2& p : element_at(world, state, 1, s / 3.0)) {
+      CHECK(p.x == Approx(xs[s]).margin(1e-6));
+      CHECK(p.y == Approx(0.2 + 0.05 * s).margin(1e-6));
+    }
+  // Between slices 1 and 2: x moves on towards the turn and never passes 0.3; y stays between its two
+  // slice values.
+  double last = 0.1;
+  for (int j = 1; j < 20; ++j) {
+    const Vec2 p = element_at(world, state, 1, (1.0 + j / 20.0) / 3.0).front();
+    CHECK(p.x > last);
+    CHECK(p.x <= 0.3);
+    CHECK(p.y >= 0.25 - 1e-9);
+    CHECK(p.y <= 0.3 + 1e-9);
+    last = p.x;
+  }
+  // At the turn (slice 2) x eases in: its speed just before is below the straight line's (0.6 per unit t).
+  const double d = 1e-4;
+  CHECK((element_at(world, state, 1, 2.0 / 3.0).front().x - element_at(world, state, 1, 2.0 / 3.0 - d).front().x) / d <
+        0.1);
 }
 
 TEST_CASE("element_scale: 1 at library size, s for a uniformly scaled copy, the initial scale after set-up") {

@@ -226,7 +226,7 @@ TEST_CASE("build_world: overlapping shrunken elements and guided paths leaving t
   CHECK_THAT(outside, Contains("runaway") && Contains("outside the container"));
 }
 
-TEST_CASE("build_world: more unguided elements than fit say how many do; that many place") {
+TEST_CASE("build_world: more unguided elements than fit say how many do, and that many place") {
   const std::string error = error_of(star_scene(400, kSlices, 1));
   INFO(error);
   const std::string lead = "tiny.json: 400 elements requested, at most about ";

@@ -132,9 +132,10 @@ TEST_CASE("overlap broadphase: the overlap test gives the same bits as a walk ov
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
     const OverlapGrid every;  // no cells: every query tries every element
+    const CurveTangents m = test::tangents(w);
     for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
-      const OverlapResult a = overlap_test(w.topo, w.state, boxes, grid, v, Params{}.forces.interval_points);
-      const OverlapResult b = overlap_test(w.topo, w.state, boxes, every, v, Params{}.forces.interval_points);
+      const OverlapResult a = overlap_test(w.topo, w.state, boxes, grid, m, v, Params{}.forces.interval_points);
+      const OverlapResult b = overlap_test(w.topo, w.state, boxes, every, m, v, Params{}.forces.interval_points);
       INFO("seed " << seed << ", vertex " << v);
       CHECK(a.overlap == b.overlap);
       CHECK(a.inside == b.inside);

@@ -210,7 +210,7 @@ OverlapResult overlap_at(const test::TinyWorld& w, std::int32_t v,
   slice_boxes(w.topo, w.state, boxes);
   OverlapGrid grid;
   build_overlap_grid(w.topo, boxes, grid);
-  return overlap_test(w.topo, w.state, boxes, grid, v, interval_points);
+  return overlap_test(w.topo, w.state, boxes, grid, test::tangents(w), v, interval_points);
 }
 
 // Two thin bars crossing like a plus sign over 26 slices: element 0 horizontal, element 1 vertical.

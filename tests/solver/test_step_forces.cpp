@@ -104,9 +104,9 @@ TEST_CASE("step_forces: a vertex inside another element gets overlap instead of 
     slice_boxes(w.topo, w.state, boxes);
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
-    CHECK(same(
-        parts.overlap.at(v),
-        overlap_force(w.topo, w.state, p, v, overlap_test(w.topo, w.state, boxes, grid, v, p.forces.interval_points))));
+    CHECK(same(parts.overlap.at(v), overlap_force(w.topo, w.state, p, v,
+                                                  overlap_test(w.topo, w.state, boxes, grid, test::tangents(w), v,
+                                                               p.forces.interval_points))));
     CHECK(f.closest[v] == 0.0f);  // an overlapping vertex touches
   }
   // Element 0's right corners (vertices 1, 2 of each slice) on every inner slice; at t = 0 and 1 the

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "animpak/curve.hpp"
+
 namespace animpak::opencl {
 
 TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQueue& queue, const Topology& topo) {
@@ -31,6 +33,8 @@ TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQue
   b.seg_bx = in(topo.container.bx, "container.bx"), b.seg_by = in(topo.container.by, "container.by");
   b.container_index = in(topo.container.index.data, "container.index");
   b.loop_end = in(topo.loop_end, "loop_end"), b.loop_start = in(topo.loop_start, "loop_start");
+  const CurveLinks links = curve_links(topo);
+  b.curve_prev = in(links.prev, "curve_prev"), b.curve_next = in(links.next, "curve_next");
   b.rest_copy_x = in(topo.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo.rest_copy_y, "rest_copy_y");
   b.rest_copy_t = in(topo.rest_copy_t, "rest_copy_t");
   b.rest_copy_cx = in(topo.slice_rest_copy_cx, "slice_rest_copy_cx");
@@ -65,6 +69,7 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
   w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
   w.box_t = scratch(fs, "slice_t");
+  w.tangent_x = scratch(fn, "curve_tangent_x"), w.tangent_y = scratch(fn, "curve_tangent_y");
   w.proposed = scratch(fs, "proposed_growth");
   return w;
 }

@@ -34,6 +34,7 @@ struct TopologyBuffers {
   cl::Buffer target_x, target_y, target_t;
   cl::Buffer seg_ax, seg_ay, seg_bx, seg_by, container_index;
   cl::Buffer loop_end, loop_start;
+  cl::Buffer curve_prev, curve_next;  // curve_links: the slices before and after each slice
   cl::Buffer rest_copy_x, rest_copy_y, rest_copy_t, rest_copy_cx, rest_copy_cy;
 };
 
@@ -48,6 +49,7 @@ struct ScratchBuffers {
   cl::Buffer run_next, run_cx, run_cy, run_ct;                                 // far-field cell aggregates
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;  // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;        // per-slice geometry
+  cl::Buffer tangent_x, tangent_y;                                             // the curve between slices
   cl::Buffer overlap_start, overlap_elements;  // overlap broadphase: sized by the backend as it grows
   cl::Buffer proposed;                         // growth proposals
 };

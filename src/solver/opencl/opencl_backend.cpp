@@ -113,6 +113,7 @@ class DeviceBackend final : public OpenclBackend {
     timed(times_.grid, slot_positions_.run(queue_, grid_.triangles));
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
     timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
+    timed(times_.forces, curve_tangents_.run(queue_, world_.vertices));
     build_overlap_grid();
     timed(times_.forces, repulsion_force_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
@@ -183,6 +184,7 @@ class DeviceBackend final : public OpenclBackend {
     slot_positions_.run(queue_, grid_.triangles);
     slice_centroids_.run(queue_, world_.slices);
     slice_boxes_.run(queue_, world_.slices);
+    curve_tangents_.run(queue_, world_.vertices);
     build_overlap_grid();
     repulsion_force_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
@@ -333,8 +335,12 @@ class DeviceBackend final : public OpenclBackend {
     overlap_grid_arg_ = repulsion_force_.bind(
         grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice, w.cell_start,
         w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
-        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, growth_,
-        b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
+        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.tangent_x,
+        w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x,
+        w.depth_y);
+    curve_tangents_ = Kernel(program, "curve_tangents");
+    curve_tangents_.bind(world_, b.slice, b.slice_begin, b.slice_element, b.element_slice_begin, b.curve_prev,
+                         b.curve_next, x_, y_, t_, w.tangent_x, w.tangent_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
     forces_ = Kernel(program, "step_forces");
@@ -526,9 +532,9 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
-      grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, repulsion_force_,
-      slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_, propose_growth_, grow_,
-      rest_lengths_, statistics_;
+      grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
+      repulsion_force_, slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_, propose_growth_,
+      grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
   reference::SliceBoxes boxes_;

@@ -38,6 +38,9 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   slice_boxes(topo, state, boxes);
   OverlapGrid overlap_grid;
   build_overlap_grid(topo, boxes, overlap_grid);
+  // The curve between slices that the overlap test walks, as the frames show it.
+  CurveTangents tangents;
+  curve_tangents(topo, curve_links(topo), state, params.forces.motion_curve != 0, tangents);
   const float stop_gap = static_cast<float>(params.stop.stop_gap);
 
   std::vector<std::int32_t> near, far;
@@ -51,7 +54,8 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
       repulsion_near_slots(grid, q, topo.element[v], near);
       repulsion_far_slots(grid, q, topo.element[v], far);
     }
-    const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, v, params.forces.interval_points);
+    const OverlapResult overlap =
+        overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.forces.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f edg = spring_force(topo, state, params, v);

@@ -2,7 +2,7 @@
 // out, and its slice stops growing (§5.3). The paper finds penetrations through the collision grid's
 // near block; that misses a vertex more than one cell deep and an edge that crosses another element's
 // outline with neither end inside (thin parts: tails, legs). Here every boundary vertex is tested against
-// every other element whose boundary polygon, interpolated linearly at the vertex's t, can reach it (a
+// every other element whose boundary polygon, on its curve at the vertex's t (include/animpak/curve.hpp), can reach it (a
 // box test first), whatever the depth, and its boundary edge is tested for crossings on the same walk;
 // so are interval_points times inside the slice intervals on either side of it.
 // Which elements the box test can accept comes from a broadphase rebuilt every step (OverlapGrid,
@@ -191,15 +191,20 @@ void overlap_candidates(const OverlapGrid& grid, std::int32_t elements, float ex
 
 namespace {
 
-// Edge i → i + 1 (wrapping at `edges`) of the boundary polygon interpolated at weight w between the
+// Vertex k's position on its curve at weights b between the slices whose first vertices are lo and hi.
+void curve_point(const SimState& state, const CurveTangents& m, std::int32_t lo, std::int32_t hi, std::int32_t k,
+                 const CurveBasis<float>& b, float& x, float& y) {
+  x = curve_value(state.x[lo + k], state.x[hi + k], m.x[lo + k], m.x[hi + k], b);
+  y = curve_value(state.y[lo + k], state.y[hi + k], m.y[lo + k], m.y[hi + k], b);
+}
+
+// Edge i → i + 1 (wrapping at `edges`) of the boundary polygon on the curve at weights b between the
 // slices whose first vertices are lo and hi.
-void overlap_edge(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t i, std::int32_t edges, float w,
-                  float& ax, float& ay, float& bx, float& by) {
+void overlap_edge(const SimState& state, const CurveTangents& m, std::int32_t lo, std::int32_t hi, std::int32_t i,
+                  std::int32_t edges, const CurveBasis<float>& b, float& ax, float& ay, float& bx, float& by) {
   const std::int32_t j = i + 1 == edges ? 0 : i + 1;
-  ax = state.x[lo + i] + (state.x[hi + i] - state.x[lo + i]) * w;
-  ay = state.y[lo + i] + (state.y[hi + i] - state.y[lo + i]) * w;
-  bx = state.x[lo + j] + (state.x[hi + j] - state.x[lo + j]) * w;
-  by = state.y[lo + j] + (state.y[hi + j] - state.y[lo + j]) * w;
+  curve_point(state, m, lo, hi, i, b, ax, ay);
+  curve_point(state, m, lo, hi, j, b, bx, by);
 }
 
 // What one query point found: a point p at time pt, with its boundary edge p → n.
@@ -232,18 +237,18 @@ std::int32_t overlap_slice_pair(const Topology& topo, const SimState& state, con
   return s;
 }
 
-// The polygon at weight w between the slices whose first vertices are lo and hi, edge by edge: the
+// The polygon at weights b between the slices whose first vertices are lo and hi, edge by edge: the
 // even-odd test of p, and whether the query edge p → n properly crosses one of its edges (touching does
 // not count), tried only until one is found and only where the two edges' boxes meet (disjoint boxes
 // cannot cross).
-void overlap_polygon_walk(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t edges, float w,
-                          float px, float py, float nx, float ny, float ex0, float ex1, float ey0, float ey1,
-                          bool& inside, bool& crosses) {
+void overlap_polygon_walk(const SimState& state, const CurveTangents& m, std::int32_t lo, std::int32_t hi,
+                          std::int32_t edges, const CurveBasis<float>& b, float px, float py, float nx, float ny,
+                          float ex0, float ex1, float ey0, float ey1, bool& inside, bool& crosses) {
   inside = false;
   crosses = false;
   for (std::int32_t i = 0; i < edges; ++i) {
     float ax, ay, bx, by;
-    overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
+    overlap_edge(state, m, lo, hi, i, edges, b, ax, ay, bx, by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
     if (!crosses && std::max(ax, bx) >= ex0 && std::min(ax, bx) <= ex1 && std::max(ay, by) >= ey0 &&
         std::min(ay, by) <= ey1 && segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
@@ -253,14 +258,14 @@ void overlap_polygon_walk(const SimState& state, std::int32_t lo, std::int32_t h
 
 // The way out of a point inside that polygon: its nearest outline point (qx, qy), the first edge reaching
 // the minimum winning; returns the squared distance.
-float overlap_way_out(const SimState& state, std::int32_t lo, std::int32_t hi, std::int32_t edges, float w, float px,
-                      float py, float& qx, float& qy) {
+float overlap_way_out(const SimState& state, const CurveTangents& m, std::int32_t lo, std::int32_t hi,
+                      std::int32_t edges, const CurveBasis<float>& b, float px, float py, float& qx, float& qy) {
   float near2 = std::numeric_limits<float>::infinity();
   qx = px;
   qy = py;
   for (std::int32_t i = 0; i < edges; ++i) {
     float ax, ay, bx, by, cx, cy;
-    overlap_edge(state, lo, hi, i, edges, w, ax, ay, bx, by);
+    overlap_edge(state, m, lo, hi, i, edges, b, ax, ay, bx, by);
     const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, cx, cy);
     if (d2 < near2) near2 = d2, qx = cx, qy = cy;
   }
@@ -270,8 +275,8 @@ float overlap_way_out(const SimState& state, std::int32_t lo, std::int32_t hi, s
 // The query point against every element but `own` that the broadphase lists, in increasing order, each
 // one's slice pair around pt searched from slice index `start` of that element.
 PointOverlap overlap_point(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t own, float own_g, std::int32_t start, float px,
-                           float py, float pt, float nx, float ny) {
+                           const OverlapGrid& grid, const CurveTangents& m, std::int32_t own, float own_g,
+                           std::int32_t start, float px, float py, float pt, float nx, float ny) {
   PointOverlap r;
   const bool own_secondary = topo.secondary(own);
   const float ex0 = std::min(px, nx), ex1 = std::max(px, nx), ey0 = std::min(py, ny), ey1 = std::max(py, ny);
@@ -284,16 +289,17 @@ PointOverlap overlap_point(const Topology& topo, const SimState& state, const Sl
     const std::int32_t s = overlap_slice_pair(topo, state, boxes, e, start, pt, ex0, ex1, ey0, ey1, w);
     if (s < 0) continue;
     const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1], edges = topo.slice_boundary[s];
+    const CurveBasis<float> b = curve_basis(w, state.t[hi] - state.t[lo], m.cubic);
     bool inside, crosses;
-    overlap_polygon_walk(state, lo, hi, edges, w, px, py, nx, ny, ex0, ex1, ey0, ey1, inside, crosses);
+    overlap_polygon_walk(state, m, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, inside, crosses);
     // Only a point inside needs its way out: a second walk, since most elements tried are near and not
     // entered.
     float qx = px, qy = py;
     const float near2 =
-        inside ? overlap_way_out(state, lo, hi, edges, w, px, py, qx, qy) : std::numeric_limits<float>::infinity();
+        inside ? overlap_way_out(state, m, lo, hi, edges, b, px, py, qx, qy) : std::numeric_limits<float>::infinity();
     if (crosses) r.overlap = true;
-    // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, between
-    // its two slices as its polygon is. A secondary element gives way to a primary one whatever their
+    // The larger of two overlapping slices yields (docs/parameters.md, "Growth"): e's g at pt, straight
+    // between its two slices. A secondary element gives way to a primary one whatever their
     // sizes ("Secondary elements"): it blocks and yields to it, never the other way round.
     const bool other_secondary = topo.secondary(e);
     if ((crosses || inside) && !(other_secondary && !own_secondary)) {
@@ -329,7 +335,8 @@ void overlap_fold(const PointOverlap& found, float px, float py, OverlapResult& 
 }  // namespace
 
 OverlapResult overlap_test(const Topology& topo, const SimState& state, const SliceBoxes& boxes,
-                           const OverlapGrid& grid, std::int32_t v, std::int32_t interval_points) {
+                           const OverlapGrid& grid, const CurveTangents& tangents, std::int32_t v,
+                           std::int32_t interval_points) {
   OverlapResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const std::int32_t own = topo.element[v], own_slice = topo.slice[v];
@@ -340,28 +347,31 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   const std::int32_t per_slice = topo.slice_begin[own_slice + 1] - own_lo;
   const float own_g = state.growth[own_slice];
   float depth2 = 0.0f;
-  overlap_fold(overlap_point(topo, state, boxes, grid, own, own_g, own_index, state.x[v], state.y[v], state.t[v],
-                             state.x[next], state.y[next]),
+  overlap_fold(overlap_point(topo, state, boxes, grid, tangents, own, own_g, own_index, state.x[v], state.y[v],
+                             state.t[v], state.x[next], state.y[next]),
                state.x[v], state.y[v], r, depth2);
   // Between slices (the paper's §6 and §8: overlaps can hide there): interval_points evenly spaced
   // times inside each slice interval, at fractions j / (interval_points + 1) of it. v tests those of the
   // two intervals next to it that lie in the half nearer to v (the middle from both ends), the point and
-  // its edge interpolated towards the same vertices of the neighbouring slice; the vertex at the other
+  // its edge on their curves towards the same vertices of the neighbouring slice; the vertex at the other
   // end tests the other half. docs/parameters.md, "Between slices".
   const float denominator = static_cast<float>(interval_points + 1);
   for (const std::int32_t step : {1, -1}) {
     if (own_index + step < 0 || own_index + step >= own_slices) continue;
-    const std::int32_t w = v + step * per_slice, wn = next + step * per_slice;
+    const std::int32_t w = v + step * per_slice;
+    // The interval's lower and upper slices, and v's side of it.
+    const std::int32_t lo = step > 0 ? own_lo : own_lo - per_slice, hi = lo + per_slice;
+    const std::int32_t k = v - own_lo, kn = next - own_lo;
     for (std::int32_t j = 1; 2 * j <= interval_points + 1; ++j) {
       const float f = static_cast<float>(j) / denominator;
-      const float mx = state.x[v] + (state.x[w] - state.x[v]) * f;
-      const float my = state.y[v] + (state.y[w] - state.y[v]) * f;
       const float mt = state.t[v] + (state.t[w] - state.t[v]) * f;
-      const float nx = state.x[next] + (state.x[wn] - state.x[next]) * f;
-      const float ny = state.y[next] + (state.y[wn] - state.y[next]) * f;
-      overlap_fold(
-          overlap_point(topo, state, boxes, grid, own, own_g, step > 0 ? own_index : own_index - 1, mx, my, mt, nx, ny),
-          mx, my, r, depth2);
+      const CurveBasis<float> b = curve_basis(step > 0 ? f : 1.0f - f, state.t[hi] - state.t[lo], tangents.cubic);
+      float mx, my, nx, ny;
+      curve_point(state, tangents, lo, hi, k, b, mx, my);
+      curve_point(state, tangents, lo, hi, kn, b, nx, ny);
+      overlap_fold(overlap_point(topo, state, boxes, grid, tangents, own, own_g, step > 0 ? own_index : own_index - 1,
+                                 mx, my, mt, nx, ny),
+                   mx, my, r, depth2);
     }
   }
   return r;

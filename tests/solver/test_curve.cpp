@@ -1,0 +1,126 @@
+// The curve between slices (include/animpak/curve.hpp): through every slice, C1 at the slices where the
+// straight lines turn corners, never outside the two slice values of an interval (the overlap test's box
+// bound), flat where a coordinate turns, periodic across the loop seam, and closer to a rotation's circle
+// than the chord.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "animpak/curve.hpp"
+#include "tiny_worlds.hpp"
+
+using namespace animpak;
+
+namespace {
+
+// A one-coordinate curve through (t_i, x_i) with the library's tangents, evaluated at t.
+struct Curve1 {
+  std::vector<double> t, x;
+  bool cubic = true;
+
+  double tangent(std::size_t i) const {
+    const bool p = i > 0, n = i + 1 < t.size();
+    const double hp = p ? t[i] - t[i - 1] : 0, hn = n ? t[i + 1] - t[i] : 0;
+    return curve_tangent(p ? curve_slope(x[i - 1], x[i], hp) : 0.0, n ? curve_slope(x[i], x[i + 1], hn) : 0.0, hp, hn,
+                         p, n);
+  }
+  double at(double tf) const {
+    std::size_t i = 0;
+    while (i + 2 < t.size() && t[i + 1] < tf) ++i;
+    const double h = t[i + 1] - t[i];
+    return curve_value(x[i], x[i + 1], tangent(i), tangent(i + 1), curve_basis((tf - t[i]) / h, h, cubic));
+  }
+};
+
+}  // namespace
+
+TEST_CASE("curve: passes through every slice and stays within each interval's two values") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> value(-1.0, 1.0), step(0.02, 0.2);
+  for (int trial = 0; trial < 200; ++trial) {
+    Curve1 c;
+    double t = 0;
+    for (int i = 0; i < 12; ++i) c.t.push_back(t), c.x.push_back(value(rng)), t += step(rng);
+    for (std::size_t i = 0; i < c.t.size(); ++i) CHECK(c.at(c.t[i]) == Approx(c.x[i]).margin(1e-12));
+    for (std::size_t i = 0; i + 1 < c.t.size(); ++i)
+      for (int j = 1; j < 50; ++j) {
+        const double v = c.at(c.t[i] + (c.t[i + 1] - c.t[i]) * j / 50.0);
+        INFO("trial " << trial << ", interval " << i << ", " << j << "/50");
+        CHECK(v >= std::min(c.x[i], c.x[i + 1]));
+        CHECK(v <= std::max(c.x[i], c.x[i + 1]));
+      }
+  }
+}
+
+TEST_CASE("curve: no corner at a slice (C1) where straight lines turn one, and flat where the coordinate turns") {
+  const Curve1 cubic{{0.0, 0.3, 0.5, 0.9, 1.0}, {0.0, 0.4, 0.5, 0.2, 0.1}, true};
+  Curve1 straight = cubic;
+  straight.cubic = false;
+  const double d = 1e-6;
+  for (const std::size_t i : {std::size_t(1), std::size_t(3)}) {  // monotone through knot 1; knot 3 as well
+    const double left = (cubic.at(cubic.t[i]) - cubic.at(cubic.t[i] - d)) / d;
+    const double right = (cubic.at(cubic.t[i] + d) - cubic.at(cubic.t[i])) / d;
+    CHECK(left == Approx(right).margin(1e-4));
+    const double sl = (straight.at(cubic.t[i]) - straight.at(cubic.t[i] - d)) / d;
+    const double sr = (straight.at(cubic.t[i] + d) - straight.at(cubic.t[i])) / d;
+    CHECK(std::abs(sl - sr) > 0.1);
+  }
+  // Knot 2 is a maximum: its tangent is zero, so the curve eases in and out of it.
+  CHECK(cubic.tangent(2) == 0.0);
+  CHECK((cubic.at(0.5 + d) - cubic.at(0.5)) / d == Approx(0.0).margin(1e-4));
+}
+
+TEST_CASE("curve: a rotation keeps its radius between slices far better than the chord") {
+  // A point on the unit circle turning 15° per slice interval (24 slices a turn), one loop; the slices
+  // sit half a step off the coordinates' extremes, the worst case for a clamped coordinate.
+  const int n = 24;
+  Curve1 x, y;
+  for (int i = -1; i <= n + 1; ++i) {
+    const double t = double(i) / n, a = 2.0 * M_PI * (t + 0.5 / n);
+    x.t.push_back(t), y.t.push_back(t), x.x.push_back(std::cos(a)), y.x.push_back(std::sin(a));
+  }
+  double chord = 0, curve = 0;
+  for (int i = 0; i < n; ++i) {
+    const double tm = (i + 0.5) / n;
+    const double r = std::hypot(x.at(tm), y.at(tm));
+    curve += std::abs(1.0 - r) / n;
+    chord += (1.0 - std::cos(M_PI / n)) / n;  // the straight line's midpoint
+  }
+  INFO("mean radius error: chord " << chord << ", curve " << curve);
+  CHECK(curve < chord / 3.0);
+}
+
+TEST_CASE("curve_links and curve_tangents: within an element, across the loop seam, and open ends") {
+  using test::TinySlice;
+  test::WorldBuilder b;
+  // Element 0 loops into itself: a square moving right then back over 5 slices (t 0 .. 1); element 1,
+  // open, moves right at constant speed.
+  const std::vector<float> xs = {0.3f, 0.4f, 0.5f, 0.4f, 0.3f};
+  std::vector<TinySlice> looped, open;
+  for (int s = 0; s < 5; ++s) {
+    looped.push_back({test::square(xs[s], 0.3f, 0.05f), s / 4.0f});
+    open.push_back({test::square(0.2f + 0.1f * s, 0.7f, 0.05f), s / 4.0f});
+  }
+  b.add_element(looped);
+  b.add_element(open);
+  for (int k = 0; k < 4; ++k) b.add_loop(4 * 4 + k, k);  // element 0's last slice ≡ its first
+  const test::TinyWorld w = b.build();
+  const CurveLinks links = curve_links(w.topo);
+  CHECK(links.prev == std::vector<std::int32_t>{3, 0, 1, 2, 3, -1, 5, 6, 7, 8});
+  CHECK(links.next == std::vector<std::int32_t>{1, 2, 3, 4, 1, 6, 7, 8, 9, -1});
+  CurveTangents m;
+  reference::curve_tangents(w.topo, links, w.state, true, m);
+  // Element 0: slice 0 and slice 4 are the same point of a periodic motion, with the same tangent; at the
+  // turn (slice 2, x at its largest) the tangent is zero; slices 1 and 3 move at Steffen's tangent.
+  CHECK(m.x[0] == m.x[16]);
+  CHECK(m.x[0] == 0.0f);  // the loop's leftmost point: a turn as well
+  CHECK(m.x[8] == 0.0f);
+  CHECK(m.x[4] == Approx(0.4f));  // both chords 0.1 per 0.25: slope 0.4
+  CHECK(m.x[12] == Approx(-0.4f));
+  // Element 1: open ends take their one chord's slope.
+  CHECK(m.x[20] == Approx(0.4f));
+  CHECK(m.x[36] == Approx(0.4f));
+  CHECK(m.y[20] == 0.0f);
+}
