@@ -50,6 +50,21 @@ class ArapSolver {
 std::vector<std::vector<Vec2>> animate_slices(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
                                               const AnimationSpec& spec, int slices);
 
+/// How far the curve between slices may stray from a scripted motion, as a share of the element's size
+/// (its art fits the unit square): 1 %, a pixel of a 100-pixel element.
+inline constexpr double slice_advice_tolerance = 0.01;
+
+/// How many slices the scripted motion in `spec` needs (docs/parameters.md, "How many slices a motion
+/// needs"): `slices`, about the fewest with which the curve between slices keeps every vertex within
+/// slice_advice_tolerance of the script (0: it barely moves, any count will do); `error`, the largest
+/// distance at `slices_now` slices, in the same units.
+struct SliceAdvice {
+  int slices = 0;
+  double error = 0.0;
+};
+SliceAdvice slice_advice(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
+                         const AnimationSpec& spec, int slices_now);
+
 /// The whole §3 pipeline for one library element: normalize, offset, sample, triangulate, bind,
 /// animate, extrude. Deterministic for a seed.
 SpacetimeElement build_element(const std::string& name, const ArtShape& art, const AnimationSpec& spec,

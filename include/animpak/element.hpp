@@ -115,6 +115,11 @@ struct SpacetimeElement {
   SpringCsr springs;               ///< edge, shear and negative-space springs on every slice, plus time springs
   std::vector<Triangle> envelope;  ///< two time edges and one boundary edge each; vertex ids
   std::vector<std::string> notes;  ///< what building it changed, e.g. the outline's dropped pieces
+  /// slice_advice of its script (include/animpak/animation.hpp): about the fewest slices that keep the curve
+  /// between slices within 1 % of its size of the script (0: it barely moves), and the largest distance
+  /// at slice_count, as a share of its size.
+  int slices_needed = 0;
+  double motion_error = 0.0;
 
   int vertices_per_slice() const { return static_cast<int>(slice.vertices.size()); }
   int vertex_count() const { return slice_count * vertices_per_slice(); }

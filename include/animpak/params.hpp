@@ -66,7 +66,7 @@ struct Params {
   struct Growth {
     double growth_rate = 0.01;  ///< g grows by growth_rate · Δt_sim per step on a free slice
     double shrink_rate = 0.01;  ///< g shrinks by shrink_rate · Δt_sim per step while a slice overlaps or spills
-    double growth_ratio = 1.3;  ///< an element's largest g is at most growth_ratio × its smallest
+    double growth_ratio = 1.1;  ///< an element's largest g is at most growth_ratio × its smallest
     double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
     double settle_shrink_rate = 0.04;      ///< while settling, overlapping and spilling slices shrink this fast
     double max_growth = 15.0;              ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)

@@ -1,5 +1,6 @@
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -65,20 +66,29 @@ int inspect(const InspectOptions& options) {
           {"negative_space", e.springs.count(SpringClass::negative_space)},
           {"time", e.springs.count(SpringClass::time)}}},
         {"envelope_triangles", e.envelope.size()},
+        {"slices_needed", e.slices_needed},
+        {"motion_error", e.motion_error},
     });
+    if (e.slices_needed > e.slice_count)
+      std::cerr << "animpak: warning: " << e.name << ": its scripted motion strays up to "
+                << std::round(1000.0 * e.motion_error) / 10.0 << " % of its size from the curve between "
+                << e.slice_count << " slices; about " << e.slices_needed << " slices keep it within 1 %\n";
   }
 
   if (options.json) {
     std::cout << report.dump(2) << "\n";
   } else {
-    std::printf("%-16s %6s %8s %9s %8s %8s %8s %8s %9s\n", "element", "slices", "v/slice", "vertices", "edge", "shear",
-                "neg", "time", "envelope");
+    std::printf("%-16s %6s %8s %9s %8s %8s %8s %8s %9s %7s\n", "element", "slices", "v/slice", "vertices", "edge",
+                "shear", "neg", "time", "envelope", "needs");
     for (const auto& e : report["elements"]) {
-      std::printf("%-16s %6d %8d %9d %8zu %8zu %8zu %8zu %9zu\n", e["name"].get<std::string>().c_str(),
+      // "needs": about the fewest slices that keep the scripted motion within 1 % of the element's size on
+      // the curve between slices; "-" when it barely moves.
+      const int needs = e["slices_needed"].get<int>();
+      std::printf("%-16s %6d %8d %9d %8zu %8zu %8zu %8zu %9zu %7s\n", e["name"].get<std::string>().c_str(),
                   e["slices"].get<int>(), e["vertices_per_slice"].get<int>(), e["vertices"].get<int>(),
                   e["springs"]["edge"].get<std::size_t>(), e["springs"]["shear"].get<std::size_t>(),
                   e["springs"]["negative_space"].get<std::size_t>(), e["springs"]["time"].get<std::size_t>(),
-                  e["envelope_triangles"].get<std::size_t>());
+                  e["envelope_triangles"].get<std::size_t>(), needs > 0 ? std::to_string(needs).c_str() : "-");
     }
   }
 

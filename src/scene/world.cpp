@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstdio>
 
 #include "animpak/animation.hpp"
 #include "animpak/error.hpp"
@@ -150,6 +151,18 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
                           "): elements will not see each other; use at least " +
                           std::to_string(static_cast<int>(std::ceil(1.0 / (3.0 * scene.params.forces.cell_size))) + 1) +
                           " slices or params.cell_size >= " + std::to_string(slice_gap / 3.0));
+
+  // A scripted motion that the curve between the scene's slices cannot follow within 1 % of the element's
+  // size (docs/parameters.md, "How many slices a motion needs").
+  for (const SpacetimeElement& e : library)
+    if (e.slices_needed > scene.params.element.slices) {
+      char error[32];
+      std::snprintf(error, sizeof error, "%.1f", 100.0 * e.motion_error);
+      world.notes.push_back("warning: element \"" + e.name + "\": its scripted motion strays up to " + error +
+                            " % of its size from the curve between " + std::to_string(scene.params.element.slices) +
+                            " slices; about " + std::to_string(e.slices_needed) +
+                            " slices keep it within 1 % (the scene's \"slices\")");
+    }
 
   Rng rng(scene.seed);
   std::vector<Placement> placements = scene_detail::place_guided(scene, container, library, world.notes);

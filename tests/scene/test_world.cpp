@@ -414,3 +414,24 @@ TEST_CASE("build_world: the aquatic-loop example is at the paper's Fig. 1 scale,
   CHECK(across.count({index(guided[0]), index(guided[1])}) == 1);
   CHECK(across.count({index(guided[1]), index(guided[0])}) == 1);
 }
+
+TEST_CASE("build_world: a scripted motion that the scene's slices cannot follow within 1 % of its size warns") {
+  auto notes_of = [](const World& w) {
+    std::string notes;
+    for (const std::string& n : w.notes) notes += n + "\n";
+    return notes;
+  };
+  // One turn per loop over 5 slices: 90° an interval.
+  const World turning = world_of(animpak::test::star_scene(2, 5, 1));
+  const SpacetimeElement& star = turning.library.front();
+  CHECK(star.slices_needed > 5);
+  CHECK(star.motion_error > 0.01);
+  CHECK_THAT(notes_of(turning), Contains("warning: element \"star\": its scripted motion strays up to ") &&
+                                    Contains(" % of its size from the curve between 5 slices; about " +
+                                             std::to_string(star.slices_needed) + " slices keep it within 1 %"));
+  // A gentle pulse over 24 slices: nothing to say.
+  const World pulsing =
+      world_of(animpak::test::star_scene(2, 24, 1, {}, R"({"preset": "pulse", "amplitude": 0.05, "count": 1})"));
+  CHECK(pulsing.library.front().slices_needed <= 24);
+  CHECK_THAT(notes_of(pulsing), !Contains("scripted motion"));
+}
