@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -216,7 +217,7 @@ struct Region {
 Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_scale);
 
 /// What measure_regions measures: everything, or everything but the evenness measures, whose raster and
-/// disc search cost about as much as the rest (the quarter points between slices skip them, docs/quality.md).
+/// disc search cost about as much as the rest (the points between slices skip them, docs/quality.md).
 enum class Measures { all, no_evenness };
 
 /// The metrics of one arrangement: each element's art region and the container region (t is left 0).
@@ -252,20 +253,43 @@ FrameMetrics measure_frame(const World& world, const SimState& state, double tf,
 FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf,
                            Measures what = Measures::all);
 
-/// Times audited inside every slice interval: its quarter points.
-inline constexpr int between_slice_points = 3;
+/// Times audited inside every slice interval: eight, evenly spaced.
+inline constexpr int between_slice_points = 8;
 
-/// The quarter points of every slice interval, t = (s + q / 4) / (n_s − 1) for s = 0 … n_s − 2 and
-/// q = 1, 2, 3, in increasing order: the times away from every slice, where interpolated elements can
-/// overlap unseen by the slices (paper §6). The middle alone misses a tip that passes a neighbour
-/// between it and a slice (docs/quality.md).
+/// Eight evenly spaced points of every slice interval, t = (s + q / 9) / (n_s − 1) for s = 0 … n_s − 2
+/// and q = 1 … 8, in increasing order: the times away from every slice, where elements on the curve
+/// between slices can overlap unseen by the slices (paper §6). The middle alone misses a tip that passes
+/// a neighbour between it and a slice (docs/quality.md).
 std::vector<double> between_slice_times(int slices);
+
+/// How the elements move and how their sizes follow their script (docs/quality.md, "Motion").
+struct MotionMetrics {
+  /// The art centroids' frame-to-frame acceleration (second difference, cyclic when the world loops), in
+  /// container units per frame², over every element and frame: its median and 99th percentile.
+  double acceleration_median = 0.0, acceleration_p99 = 0.0;
+  /// The mean acceleration at the frames next to one of the element's slice times over the mean at the
+  /// others: 1 when the slices do not show; straight lines between slices make it enormous.
+  double slice_ratio = 0.0;
+  /// Per element, at its slices: the largest over the smallest of its boundary's area over its scripted
+  /// area there (the rest copy's, shrunk as placed): its growth g squared, deformation included.
+  std::vector<double> size_over_script;
+  /// 99th percentile over median of the acceleration (infinite when the median is 0).
+  double kink() const {
+    return acceleration_median > 0.0 ? acceleration_p99 / acceleration_median : std::numeric_limits<double>::infinity();
+  }
+};
 
 /// The metrics of the rendered frames and of the times between slices.
 struct PackingQuality {
   std::vector<FrameMetrics> frames;
   std::vector<FrameMetrics> between_slices;
+  MotionMetrics motion;
 };
+
+/// MotionMetrics from each element's art centroid at each frame (centroids[element][frame]) at `times`,
+/// and the packed state's slices.
+MotionMetrics measure_motion(const World& world, const SimState& state, const std::vector<std::vector<Vec2>>& centroids,
+                             const std::vector<double>& times);
 
 /// lottie: animation.json, a Lottie (Bodymovin) document; dotlottie: animation.lottie, the same document in
 /// a dotLottie zip; svg_anim: animation.svg, paths animated with SMIL (docs/animation-formats.md).

@@ -2,8 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -134,16 +136,25 @@ nlohmann::json summary_json(const World& w, const QualitySummary& q) {
           {"channel_cv", {{"mean", q.channel_cv_mean}, {"max", q.channel_cv_max}}}};
 }
 
-// The per-frame and per-quarter-point metrics and their summaries (docs/quality.md, "stats.json").
+// The per-frame and between-slice metrics and their summaries (docs/quality.md, "stats.json").
 void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& quality) {
   stats["frames"] = metrics_json(w, quality.frames);
   stats["between_slices"] = metrics_json(w, quality.between_slices);
   stats["quality"] = {{"share_threshold", quality_share_threshold},
                       {"frames", summary_json(w, summarize(quality.frames))},
                       {"between_slices", summary_json(w, summarize(quality.between_slices))}};
-  // The quarter points between slices are measured without evenness (docs/quality.md, "Evenness").
+  // The points between slices are measured without evenness (docs/quality.md, "Evenness").
   for (std::size_t i = 0; i < quality.frames.size(); ++i) stats["frames"][i].update(evenness_json(quality.frames[i]));
   stats["quality"]["frames"].update(evenness_summary_json(summarize_evenness(quality.frames)));
+  // docs/quality.md, "Motion"; a kink of infinity (straight lines: no acceleration inside intervals) is null.
+  const MotionMetrics& m = quality.motion;
+  nlohmann::json sizes = nlohmann::json::array();
+  for (std::size_t e = 0; e < m.size_over_script.size() && e < w.elements.size(); ++e)
+    sizes.push_back({{"element", w.elements[e].name}, {"ratio", m.size_over_script[e]}});
+  stats["motion"] = {{"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}}},
+                     {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
+                     {"slice_ratio", m.slice_ratio},
+                     {"size_over_script", sizes}};
 }
 
 // Through a temporary file and a rename, so that a failed write never loses the statistics already there.
@@ -165,10 +176,24 @@ void write_json(const std::filesystem::path& file, const nlohmann::json& value) 
 
 }  // namespace
 
+std::string motion_line(const MotionMetrics& m) {
+  std::vector<double> sizes = m.size_over_script;
+  std::sort(sizes.begin(), sizes.end());
+  char line[256];
+  const double kink = m.kink();
+  std::snprintf(line, sizeof line,
+                "motion: kink %s (acceleration 99th percentile over median), slices %.1f (acceleration next to a "
+                "slice over elsewhere), area over the script's varies %.2fx (median element; worst %.2fx)",
+                std::isfinite(kink) ? std::to_string(static_cast<int>(std::lround(kink))).c_str() : "inf",
+                m.slice_ratio, sizes.empty() ? 1.0 : sizes[sizes.size() / 2], sizes.empty() ? 1.0 : sizes.back());
+  return line;
+}
+
 std::string quality_lines(const PackingQuality& quality) {
   return summary_line("quality", summarize(quality.frames)) + "\n" +
          summary_line("between slices", summarize(quality.between_slices)) + "\n" +
-         evenness_line(summarize_evenness(quality.frames)) + "\n";
+         evenness_line(summarize_evenness(quality.frames)) + "\n" +
+         (quality.frames.size() >= 3 ? motion_line(quality.motion) + "\n" : "");
 }
 
 // The columns of stats.json's "progress" rows, in ProgressSample's order.

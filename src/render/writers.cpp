@@ -259,14 +259,24 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   const std::vector<std::string> ids = frame_writers::element_ids(world);
   PackingQuality quality;
   const std::vector<double> times = frame_times(out.count, world.loop);
+  std::vector<std::vector<Vec2>> centroids(world.elements.size());
   for (int i = 0; i < out.count; ++i) {
     // One replay per frame, drawn, written and measured by every format alike.
     const std::vector<ElementArt> art = frame_art(world, state, times[i]);
+    for (std::size_t e = 0; e < art.size(); ++e) {
+      Vec2 sum;
+      std::size_t n = 0;
+      for (const auto& path : art[e].points)
+        for (const auto& line : path)
+          for (const Vec2& p : line) sum = sum + p, ++n;
+      centroids[e].push_back(n > 0 ? sum * (1.0 / double(n)) : sum);
+    }
     if (raster) draw_frame(world, art, out.style).write(frames / frame_name(i, "png"));
     if (wants(FrameFormat::svg)) write_svg(world, art, out.style, ids, frames / frame_name(i, "svg"));
     quality.frames.push_back(measure_frame(world, art, times[i]));
     report(out, "frame", i + 1, out.count);
   }
+  quality.motion = measure_motion(world, state, centroids, times);
   write_animations(world, state, out, ids, wants);
   report(out, "between slices");
   for (double t : between_slice_times(world.params.element.slices))

@@ -183,11 +183,11 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(f["contact"].back() == 0.0);
     CHECK(f.contains("wall_ratio"));
   }
-  // Five slices: the quarter points of the four intervals.
-  REQUIRE(stats["between_slices"].size() == 12);
-  CHECK(stats["between_slices"][0]["t"].get<double>() == Approx(0.0625));
-  CHECK(stats["between_slices"][1]["t"].get<double>() == Approx(0.125));
-  CHECK(stats["between_slices"][11]["t"].get<double>() == Approx(0.9375));
+  // Five slices: eight points of each of the four intervals.
+  REQUIRE(stats["between_slices"].size() == 32);
+  CHECK(stats["between_slices"][0]["t"].get<double>() == Approx(0.25 / 9));
+  CHECK(stats["between_slices"][1]["t"].get<double>() == Approx(0.5 / 9));
+  CHECK(stats["between_slices"][31]["t"].get<double>() == Approx(0.75 + 0.25 * 8 / 9));
   for (const char* times : {"frames", "between_slices"}) {
     INFO(times);
     const auto& q = stats["quality"][times];
@@ -206,8 +206,14 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
   CHECK_FALSE(stats["quality"]["between_slices"].contains("empty_disc"));
   CHECK_FALSE(stats["between_slices"][0].contains("contact"));
   CHECK_THAT(r.out, Contains("quality: 0 of 12 element-frames outside") &&
-                        Contains("between slices: 0 of 36 element-frames outside") &&
+                        Contains("between slices: 0 of 96 element-frames outside") &&
                         Contains("\nevenness: wall ratio ") && Contains(" element radii (worst "));
+  // The motion line and its figures (docs/quality.md, "Motion").
+  CHECK_THAT(r.out, Contains("\nmotion: kink ") && Contains(" (acceleration next to a slice over elsewhere), "));
+  CHECK(stats["motion"]["acceleration"]["p99"].get<double>() >=
+        stats["motion"]["acceleration"]["median"].get<double>());
+  CHECK(stats["motion"]["size_over_script"].size() == 3);
+  for (const auto& e : stats["motion"]["size_over_script"]) CHECK(e["ratio"].get<double>() >= 1.0);
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {

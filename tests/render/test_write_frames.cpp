@@ -45,9 +45,9 @@ TEST_CASE(
   const auto quality = write_frames(world, world.state, small_output(dir, {FrameFormat::png, FrameFormat::svg}));
   REQUIRE(quality.frames.size() == 3);
   CHECK(quality.frames[1].t == Approx(1.0 / 3));  // the tiny world loops: frames at i / 3
-  // Four slices: the quarter points of the three intervals, in time order.
-  REQUIRE(quality.between_slices.size() == 9);
-  for (int i = 0; i < 9; ++i) CHECK(quality.between_slices[i].t == Approx((i / 3 + (i % 3 + 1) * 0.25) / 3));
+  // Four slices: eight points of each of the three intervals, in time order.
+  REQUIRE(quality.between_slices.size() == 24);
+  for (int i = 0; i < 24; ++i) CHECK(quality.between_slices[i].t == Approx((i / 8 + (i % 8 + 1) / 9.0) / 3));
   CHECK(sorted_names(dir / "frames") == std::vector<std::string>{"frame_0000.png", "frame_0000.svg", "frame_0001.png",
                                                                  "frame_0001.svg", "frame_0002.png", "frame_0002.svg"});
   CHECK(sorted_names(dir) == std::vector<std::string>{"frames"});

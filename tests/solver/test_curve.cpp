@@ -124,3 +124,32 @@ TEST_CASE("curve_links and curve_tangents: within an element, across the loop se
   CHECK(m.x[36] == Approx(0.4f));
   CHECK(m.y[20] == 0.0f);
 }
+
+TEST_CASE("overlap test between slices: on the curve it finds an overlap that straight lines do not have") {
+  // Element 0 comes up, turns the corner diagonally between slices 1 and 2, and leaves to the right: on the
+  // curve it bulges to the upper left of the straight chord between those slices (x lags, y leads, by
+  // 0.0375 at the middle). Element 1, a small still square, sits just beyond the chord on that side.
+  const std::vector<float> times = {0.0f, 1.0f / 3.0f, 2.0f / 3.0f, 1.0f};
+  const float ax[] = {0.3f, 0.3f, 0.6f, 0.9f}, ay[] = {0.1f, 0.4f, 0.7f, 0.7f};
+  std::vector<test::TinySlice> mover, still;
+  for (int s = 0; s < 4; ++s) {
+    mover.push_back({test::square(ax[s], ay[s], 0.05f), times[s]});
+    still.push_back({test::square(0.37f, 0.66f, 0.03f), times[s]});
+  }
+  test::WorldBuilder b;
+  b.add_element(mover);
+  b.add_element(still);
+  const test::TinyWorld w = b.build();
+  reference::SliceBoxes boxes;
+  reference::slice_boxes(w.topo, w.state, boxes);
+  reference::OverlapGrid grid;
+  reference::build_overlap_grid(w.topo, boxes, grid);
+  for (const bool cubic : {true, false}) {
+    INFO((cubic ? "curve" : "straight lines"));
+    const CurveTangents m = test::tangents(w, cubic);
+    bool found = false;
+    for (std::int32_t v = 16; v < 32; ++v)  // element 1's vertices
+      found = found || reference::overlap_test(w.topo, w.state, boxes, grid, m, v, 3).overlap;
+    CHECK(found == cubic);
+  }
+}

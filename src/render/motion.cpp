@@ -1,0 +1,75 @@
+// Motion metrics of a packing (docs/quality.md, "Motion"): how smoothly the elements' art moves from frame
+// to frame, whether the slices show, and how closely each element's size follows its script. Measured on
+// the frames' art and the packed slices' geometry, never on the solver's own statistics.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "animpak/render.hpp"
+
+namespace animpak {
+
+namespace {
+
+double polygon_area(const std::vector<float>& x, const std::vector<float>& y, std::int32_t lo, std::int32_t count) {
+  double a = 0.0;
+  for (std::int32_t i = 0; i < count; ++i) {
+    const std::int32_t j = i + 1 == count ? 0 : i + 1;
+    a += double(x[lo + i]) * y[lo + j] - double(x[lo + j]) * y[lo + i];
+  }
+  return std::abs(0.5 * a);
+}
+
+}  // namespace
+
+MotionMetrics measure_motion(const World& world, const SimState& state,
+                             const std::vector<std::vector<Vec2>>& centroids, const std::vector<double>& times) {
+  MotionMetrics m;
+  const Topology& topo = world.topology;
+  const std::size_t n = times.size();
+  std::vector<double> all, at_slice, elsewhere;
+  for (std::size_t e = 0; e < centroids.size() && n >= 3; ++e) {
+    const ElementInstance& inst = world.elements[e];
+    const int first = inst.slice_begin, slices = topo.element_slice_begin[e + 1] - first;
+    const double step = n > 1 ? std::abs(times[1] - times[0]) : 1.0;
+    for (std::size_t i = world.loop ? 0 : 1; i < (world.loop ? n : n - 1); ++i) {
+      const Vec2 a = centroids[e][(i + n - 1) % n], b = centroids[e][i], c = centroids[e][(i + 1) % n];
+      const double value = std::hypot(a.x - 2.0 * b.x + c.x, a.y - 2.0 * b.y + c.y);
+      all.push_back(value);
+      // Frame i bends at a slice when one of the element's slice times lies within a frame of it.
+      bool near = false;
+      for (int s = 0; s < slices && !near; ++s) {
+        const double ts = state.t[topo.slice_begin[first + s]];
+        near = std::abs(times[i] - ts) < step || (world.loop && std::abs(std::abs(times[i] - ts) - 1.0) < step);
+      }
+      (near ? at_slice : elsewhere).push_back(value);
+    }
+  }
+  if (!all.empty()) {
+    std::sort(all.begin(), all.end());
+    m.acceleration_median = all[all.size() / 2];
+    m.acceleration_p99 = all[std::min(all.size() - 1, static_cast<std::size_t>(0.99 * double(all.size() - 1) + 0.5))];
+  }
+  const auto mean = [](const std::vector<double>& v) {
+    double s = 0.0;
+    for (const double x : v) s += x;
+    return v.empty() ? 0.0 : s / double(v.size());
+  };
+  if (!at_slice.empty() && mean(elsewhere) > 0.0) m.slice_ratio = mean(at_slice) / mean(elsewhere);
+  // Size over script at every slice: the boundary's area over the rest copy's, the element as scripted
+  // (shrunk and placed as at the start; docs/parameters.md, "Growth").
+  for (std::size_t e = 0; e < world.elements.size(); ++e) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (std::int32_t s = topo.element_slice_begin[e]; s < topo.element_slice_begin[e + 1]; ++s) {
+      const std::int32_t first = topo.slice_begin[s], count = topo.slice_boundary[s];
+      const double scripted = polygon_area(topo.rest_copy_x, topo.rest_copy_y, first, count);
+      if (!(scripted > 0.0)) continue;
+      const double ratio = polygon_area(state.x, state.y, first, count) / scripted;
+      lo = std::min(lo, ratio), hi = std::max(hi, ratio);
+    }
+    m.size_over_script.push_back(hi > 0.0 && lo > 0.0 ? hi / lo : 1.0);
+  }
+  return m;
+}
+
+}  // namespace animpak

@@ -1,0 +1,52 @@
+// measure_motion (docs/quality.md, "Motion"): the kink of the centroids' motion, whether the slices show,
+// and each element's size over its script.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "animpak/render.hpp"
+#include "tiny_world.hpp"
+
+using namespace animpak;
+
+TEST_CASE("measure_motion: even circling has no kink, corners at the slices an infinite one") {
+  const World world = tiny_star_world();  // 4 slices at t 0, 1/3, 2/3, 1; loops
+  const std::vector<double> times = frame_times(60, true);
+  std::vector<std::vector<Vec2>> circling(world.elements.size()), cornering(world.elements.size());
+  for (std::size_t e = 0; e < world.elements.size(); ++e)
+    for (const double t : times) {
+      const double a = 2.0 * std::numbers::pi * t;
+      circling[e].push_back({0.5 + 0.2 * std::cos(a), 0.5 + 0.2 * std::sin(a)});
+      // Straight from slice to slice through three corners, as the paper's interpolation moves.
+      const double u = t * 3.0 - std::floor(t * 3.0);
+      const Vec2 corners[] = {{0.2, 0.2}, {0.8, 0.2}, {0.5, 0.8}, {0.2, 0.2}};
+      const int k = static_cast<int>(std::floor(t * 3.0));
+      cornering[e].push_back(corners[k] + (corners[k + 1] - corners[k]) * u);
+    }
+  const MotionMetrics smooth = measure_motion(world, world.state, circling, times);
+  CHECK(smooth.kink() == Approx(1.0).epsilon(1e-6));
+  CHECK(smooth.slice_ratio == Approx(1.0).epsilon(1e-6));
+  const MotionMetrics jolting = measure_motion(world, world.state, cornering, times);
+  CHECK(jolting.acceleration_median == Approx(0.0).margin(1e-12));
+  CHECK(jolting.kink() > 1e6);
+  CHECK(jolting.slice_ratio > 1e3);
+}
+
+TEST_CASE("measure_motion: an element's size over its script, largest over smallest over its slices") {
+  World world = tiny_star_world();
+  const std::vector<std::vector<Vec2>> still(world.elements.size(), std::vector<Vec2>(3, Vec2{0.5, 0.5}));
+  const std::vector<double> times = frame_times(3, true);
+  // As placed, every element is its script: 1.
+  for (const double r : measure_motion(world, world.state, still, times).size_over_script) CHECK(r == Approx(1.0));
+  // Element 1's second slice grown by 10 % about its first vertex: its area by 21 % against the others.
+  const Topology& topo = world.topology;
+  const std::int32_t s = topo.element_slice_begin[1] + 1, lo = topo.slice_begin[s];
+  for (std::int32_t v = lo; v < topo.slice_begin[s + 1]; ++v) {
+    world.state.x[v] = world.state.x[lo] + 1.1f * (world.state.x[v] - world.state.x[lo]);
+    world.state.y[v] = world.state.y[lo] + 1.1f * (world.state.y[v] - world.state.y[lo]);
+  }
+  const MotionMetrics m = measure_motion(world, world.state, still, times);
+  CHECK(m.size_over_script[1] == Approx(1.21).epsilon(1e-4));
+  CHECK(m.size_over_script[0] == Approx(1.0));
+}
