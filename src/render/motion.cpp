@@ -22,8 +22,8 @@ double polygon_area(const std::vector<float>& x, const std::vector<float>& y, st
 
 }  // namespace
 
-MotionMetrics measure_motion(const World& world, const SimState& state,
-                             const std::vector<std::vector<Vec2>>& centroids, const std::vector<double>& times) {
+MotionMetrics measure_motion(const World& world, const SimState& state, const std::vector<std::vector<Vec2>>& centroids,
+                             const std::vector<double>& times) {
   MotionMetrics m;
   const Topology& topo = world.topology;
   const std::size_t n = times.size();
