@@ -176,6 +176,15 @@ void write_json(const std::filesystem::path& file, const nlohmann::json& value) 
 
 }  // namespace
 
+// A kink as a whole number, or in powers of ten once it is past a thousand (straight lines between slices
+// give 10⁸ and more).
+std::string kink_text(double kink) {
+  if (!std::isfinite(kink)) return "inf";
+  char text[32];
+  std::snprintf(text, sizeof text, kink < 1000.0 ? "%.0f" : "%.1e", kink);
+  return text;
+}
+
 std::string motion_line(const MotionMetrics& m) {
   std::vector<double> sizes = m.size_over_script;
   std::sort(sizes.begin(), sizes.end());
@@ -184,8 +193,8 @@ std::string motion_line(const MotionMetrics& m) {
   std::snprintf(line, sizeof line,
                 "motion: kink %s (acceleration 99th percentile over median), slices %.1f (acceleration next to a "
                 "slice over elsewhere), area over the script's varies %.2fx (median element; worst %.2fx)",
-                std::isfinite(kink) ? std::to_string(static_cast<int>(std::lround(kink))).c_str() : "inf",
-                m.slice_ratio, sizes.empty() ? 1.0 : sizes[sizes.size() / 2], sizes.empty() ? 1.0 : sizes.back());
+                kink_text(kink).c_str(), m.slice_ratio, sizes.empty() ? 1.0 : sizes[sizes.size() / 2],
+                sizes.empty() ? 1.0 : sizes.back());
   return line;
 }
 
