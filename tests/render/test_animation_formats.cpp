@@ -214,39 +214,43 @@ TEST_CASE(
     "alpha IoU at least 0.97") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
-  const World world = big_star_world();
-  const animpak::test::TempDir temp("animpak-animation-");
-  const auto dir = temp / "chromium";
-  const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
-  write_frames(world, world.state, out);
-  const std::string svg = text_of(dir / "animation.svg");
-  // Frames 1 and 3 lie between two slices.
-  for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
-    const Image ours = read_rgba(dir / "frames" / frame_png(i));
-    // The SVG inline, so that the page's script reaches its timeline: paused at frame i's time.
-    const fs::path page = dir / ("frame" + std::to_string(i) + ".html"),
-                   shot = dir / ("chromium" + std::to_string(i) + ".png");
-    std::ofstream(page) << "<!DOCTYPE html><html><head><style>html,body{margin:0;padding:0;overflow:hidden;"
-                           "background:transparent}svg{display:block}</style></head><body>"
-                        << svg << "<script>const svg = document.querySelector('svg'); svg.pauseAnimations(); "
-                        << "svg.setCurrentTime(" << i / out.fps << ");</script></body></html>\n";
-    // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's; a
-    // profile of its own keeps a Chromium already running (another test run) from taking the page over.
-    const std::string command =
-        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-        "--user-data-dir='" +
-        (dir / "profile").string() +
-        "' "
-        "--default-background-color=00000000 --window-size=" +
-        std::to_string(ours.width) + "," + std::to_string(ours.height) + " --screenshot='" + shot.string() +
-        "' 'file://" + page.string() + "' >/dev/null 2>&1";
-    REQUIRE(std::system(command.c_str()) == 0);
-    const Image theirs = read_rgba(shot);
-    REQUIRE(theirs.width == ours.width);
-    REQUIRE(theirs.height == ours.height);
-    const double iou = alpha_iou(ours, theirs);
-    INFO("frame " << i << " at " << i / out.fps << " s");
-    CHECK(iou >= kMinIou);
+  // Straight lines between slices (keys at the slices) and the curve (keys between them too).
+  for (const int curve : {0, 1}) {
+    INFO("motion_curve " << curve);
+    const World world = big_star_world(curve);
+    const animpak::test::TempDir temp("animpak-animation-");
+    const auto dir = temp / "chromium";
+    const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
+    write_frames(world, world.state, out);
+    const std::string svg = text_of(dir / "animation.svg");
+    // Frames 1 and 3 lie between two slices.
+    for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
+      const Image ours = read_rgba(dir / "frames" / frame_png(i));
+      // The SVG inline, so that the page's script reaches its timeline: paused at frame i's time.
+      const fs::path page = dir / ("frame" + std::to_string(i) + ".html"),
+                     shot = dir / ("chromium" + std::to_string(i) + ".png");
+      std::ofstream(page) << "<!DOCTYPE html><html><head><style>html,body{margin:0;padding:0;overflow:hidden;"
+                             "background:transparent}svg{display:block}</style></head><body>"
+                          << svg << "<script>const svg = document.querySelector('svg'); svg.pauseAnimations(); "
+                          << "svg.setCurrentTime(" << i / out.fps << ");</script></body></html>\n";
+      // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's; a
+      // profile of its own keeps a Chromium already running (another test run) from taking the page over.
+      const std::string command =
+          "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+          "--user-data-dir='" +
+          (dir / "profile").string() +
+          "' "
+          "--default-background-color=00000000 --window-size=" +
+          std::to_string(ours.width) + "," + std::to_string(ours.height) + " --screenshot='" + shot.string() +
+          "' 'file://" + page.string() + "' >/dev/null 2>&1";
+      REQUIRE(std::system(command.c_str()) == 0);
+      const Image theirs = read_rgba(shot);
+      REQUIRE(theirs.width == ours.width);
+      REQUIRE(theirs.height == ours.height);
+      const double iou = alpha_iou(ours, theirs);
+      INFO("frame " << i << " at " << i / out.fps << " s");
+      CHECK(iou >= kMinIou);
+    }
   }
 }
 
