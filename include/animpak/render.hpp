@@ -268,8 +268,9 @@ struct MotionMetrics {
   /// container units per frame², over every element and frame: its median and 99th percentile.
   double acceleration_median = 0.0, acceleration_p99 = 0.0;
   /// The mean acceleration at the frames next to one of the element's slice times over the mean at the
-  /// others: 1 when the slices do not show; straight lines between slices make it enormous.
-  double slice_ratio = 0.0;
+  /// others: 1 when the slices do not show; straight lines between slices make it enormous. NaN when
+  /// every frame is next to a slice (as many slices as frames), or none is.
+  double slice_ratio = std::numeric_limits<double>::quiet_NaN();
   /// Per element, at its slices: the largest over the smallest of its boundary's area over its scripted
   /// area there (the rest copy's, shrunk as placed): its growth g squared, deformation included.
   std::vector<double> size_over_script;

@@ -151,10 +151,11 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   nlohmann::json sizes = nlohmann::json::array();
   for (std::size_t e = 0; e < m.size_over_script.size() && e < w.elements.size(); ++e)
     sizes.push_back({{"element", w.elements[e].name}, {"ratio", m.size_over_script[e]}});
-  stats["motion"] = {{"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}}},
-                     {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
-                     {"slice_ratio", m.slice_ratio},
-                     {"size_over_script", sizes}};
+  stats["motion"] = {
+      {"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}}},
+      {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
+      {"slice_ratio", std::isfinite(m.slice_ratio) ? nlohmann::json(m.slice_ratio) : nlohmann::json(nullptr)},
+      {"size_over_script", sizes}};
 }
 
 // Through a temporary file and a rename, so that a failed write never loses the statistics already there.
@@ -185,16 +186,24 @@ std::string kink_text(double kink) {
   return text;
 }
 
+// The slices' visibility, or n/a when no frame lies away from a slice (as many slices as frames).
+std::string slices_text(double ratio) {
+  if (!std::isfinite(ratio)) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, ratio < 1000.0 ? "%.1f" : "%.1e", ratio);
+  return text;
+}
+
 std::string motion_line(const MotionMetrics& m) {
   std::vector<double> sizes = m.size_over_script;
   std::sort(sizes.begin(), sizes.end());
   char line[256];
   const double kink = m.kink();
   std::snprintf(line, sizeof line,
-                "motion: kink %s (acceleration 99th percentile over median), slices %.1f (acceleration next to a "
+                "motion: kink %s (acceleration 99th percentile over median), slices %s (acceleration next to a "
                 "slice over elsewhere), area over the script's varies %.2fx (median element; worst %.2fx)",
-                kink_text(kink).c_str(), m.slice_ratio, sizes.empty() ? 1.0 : sizes[sizes.size() / 2],
-                sizes.empty() ? 1.0 : sizes.back());
+                kink_text(kink).c_str(), slices_text(m.slice_ratio).c_str(),
+                sizes.empty() ? 1.0 : sizes[sizes.size() / 2], sizes.empty() ? 1.0 : sizes.back());
   return line;
 }
 

@@ -50,3 +50,12 @@ TEST_CASE("measure_motion: an element's size over its script, largest over small
   CHECK(m.size_over_script[1] == Approx(1.21).epsilon(1e-4));
   CHECK(m.size_over_script[0] == Approx(1.0));
 }
+
+TEST_CASE("measure_motion: with a slice next to every frame the slices' visibility is not a number") {
+  const World world = tiny_star_world();                   // 4 slices
+  const std::vector<double> times = frame_times(4, true);  // every frame within a frame of a slice time
+  std::vector<std::vector<Vec2>> moving(world.elements.size());
+  for (auto& c : moving)
+    for (const double t : times) c.push_back({0.5 + 0.1 * t * t, 0.5});
+  CHECK(std::isnan(measure_motion(world, world.state, moving, times).slice_ratio));
+}
