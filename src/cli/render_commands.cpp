@@ -123,8 +123,8 @@ void add_frame_options(CLI::App& cmd, FrameOptions& f) {
       ->check(CLI::Range(0, 6));
   cmd.add_option("--interpolation", f.interpolation,
                  "how lottie and svg-anim move: linear (keyed where the curve between slices needs it, so that "
-                 "straight lines between keys stay within 3/4 of a pixel of it) or hold (keyed at the frames, each "
-                 "shown until the next)")
+                 "straight lines between keys stay within 3/4 of a pixel, or 0.3 % of the element's size, of it) "
+                 "or hold (keyed at the frames, each shown until the next)")
       ->check(CLI::IsMember({"linear", "hold"}));
   cmd.add_option("--background", f.background,
                  "white, none (transparent PNG and GIF, no Lottie background layer, no SVG backdrop) or #rrggbb");
