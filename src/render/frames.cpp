@@ -30,8 +30,10 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   // The curve the overlap test walks (include/animpak/curve.hpp), in double: the slices of this interval
   // and, for the tangents, the ones before and after it, across the loop seam.
   const Topology& topo = world.topology;
-  const CurveLinks& links =
-      world.curve.prev.size() == std::size_t(topo.slice_count()) ? world.curve : curve_links(topo);
+  // build_world fills world.curve; a World put together by hand gets its links here.
+  CurveLinks own;
+  if (world.curve.prev.size() != std::size_t(topo.slice_count())) own = curve_links(topo);
+  const CurveLinks& links = own.prev.empty() ? world.curve : own;
   const int g0 = inst.slice_begin + s, g1 = g0 + 1;
   const bool cubic = world.params.forces.motion_curve != 0;
   const CurveBasis<double> basis = curve_basis(w, t1 - t0, cubic);
