@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "animpak/element.hpp"
@@ -64,6 +65,10 @@ struct SliceAdvice {
 };
 SliceAdvice slice_advice(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
                          const AnimationSpec& spec, int slices_now);
+
+/// The warning for an element whose scripted motion needs more slices than it was built with (its
+/// slices_needed above its slice_count), naming it, the error and the advised count; empty otherwise.
+std::string slice_advice_warning(const SpacetimeElement& element);
 
 /// The whole §3 pipeline for one library element: normalize, offset, sample, triangulate, bind,
 /// animate, extrude. Deterministic for a seed.

@@ -101,6 +101,33 @@ T curve_value(T x0, T x1, T m0, T m1, const CurveBasis<T>& b) {
   return x;
 }
 
+/// The tangent (dx/dt, dy/dt) of vertex k of global slice s of `state`, in T: from the chords to the same
+/// vertex of the slices before and after (`links`), the one before the first slice of an element one period
+/// earlier and the one after its last one period later (the loop seam). In float these are the reference's
+/// operations (curve_tangents; kernels/curve.cl is their twin); the frames take them in double.
+template <typename T>
+void curve_vertex_tangent(const Topology& topo, const CurveLinks& links, const SimState& state, std::int32_t s,
+                          std::int32_t k, T& mx, T& my) {
+  const std::int32_t p = links.prev[s], q = links.next[s], e = topo.slice_element[s];
+  const T t0 = T(state.t[topo.slice_begin[s]]);
+  T hp = T(0), hn = T(0), xp = T(0), yp = T(0), xn = T(0), yn = T(0);
+  if (p >= 0) {
+    const std::int32_t a = topo.slice_begin[p] + k;
+    const T tp =
+        s == topo.element_slice_begin[e] ? T(state.t[topo.slice_begin[p]]) - T(1) : T(state.t[topo.slice_begin[p]]);
+    hp = t0 - tp, xp = T(state.x[a]), yp = T(state.y[a]);
+  }
+  if (q >= 0) {
+    const std::int32_t b = topo.slice_begin[q] + k;
+    const T tn = s + 1 == topo.element_slice_begin[e + 1] ? T(state.t[topo.slice_begin[q]]) + T(1)
+                                                          : T(state.t[topo.slice_begin[q]]);
+    hn = tn - t0, xn = T(state.x[b]), yn = T(state.y[b]);
+  }
+  const T x0 = T(state.x[topo.slice_begin[s] + k]), y0 = T(state.y[topo.slice_begin[s] + k]);
+  mx = curve_tangent(curve_slope(xp, x0, hp), curve_slope(x0, xn, hn), hp, hn, p >= 0, q >= 0);
+  my = curve_tangent(curve_slope(yp, y0, hp), curve_slope(y0, yn, hn), hp, hn, p >= 0, q >= 0);
+}
+
 /// The tangent (dx/dt, dy/dt) of every vertex's curve at its slice, from one snapshot of the state.
 struct CurveTangents {
   std::vector<float> x, y;

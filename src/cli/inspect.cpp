@@ -69,10 +69,8 @@ int inspect(const InspectOptions& options) {
         {"slices_needed", e.slices_needed},
         {"motion_error", e.motion_error},
     });
-    if (e.slices_needed > e.slice_count)
-      std::cerr << "animpak: warning: " << e.name << ": its scripted motion strays up to "
-                << std::round(1000.0 * e.motion_error) / 10.0 << " % of its size from the curve between "
-                << e.slice_count << " slices; about " << e.slices_needed << " slices keep it within 1 %\n";
+    if (const std::string warning = slice_advice_warning(e); !warning.empty())
+      std::cerr << "animpak: warning: " << warning << "\n";
   }
 
   if (options.json) {

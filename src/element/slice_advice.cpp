@@ -4,6 +4,7 @@
 // the script at every dense time.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "animpak/animation.hpp"
 #include "animpak/curve.hpp"
@@ -90,6 +91,15 @@ SliceAdvice slice_advice(const SliceMesh& mesh, const Outline& outline, const Ar
   }
   advice.slices = hi;
   return advice;
+}
+
+std::string slice_advice_warning(const SpacetimeElement& element) {
+  if (element.slices_needed <= element.slice_count) return {};
+  char error[32];
+  std::snprintf(error, sizeof error, "%.1f", 100.0 * element.motion_error);
+  return "element \"" + element.name + "\": its scripted motion strays up to " + error +
+         " % of its size from the curve between " + std::to_string(element.slice_count) + " slices; about " +
+         std::to_string(element.slices_needed) + " slices keep it within 1 % (the scene's \"slices\")";
 }
 
 }  // namespace animpak

@@ -199,9 +199,9 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
     if (!times.empty() && frame_of(t) <= frame_of(times.back())) continue;
     if (cubic && !times.empty()) {
       const double before = times.back();
-      const int steps = std::max(8, 2 * key_parts(world, state, element, before, t, tolerance));
-      for (int j = 1; j < steps; ++j) {
-        const double tj = before + (t - before) * j / steps;
+      const int candidates = std::max(8, 2 * key_parts(world, state, element, before, t, tolerance));
+      for (int j = 1; j < candidates; ++j) {
+        const double tj = before + (t - before) * j / candidates;
         if (frame_of(tj) > frame_of(times.back()) && frame_of(tj) < frame_of(t))
           times.push_back(tj), at.push_back(element_at(world, state, element, tj)), art.push_back(flat_art(at.back()));
       }

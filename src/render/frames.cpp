@@ -37,23 +37,11 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   const int g0 = inst.slice_begin + s, g1 = g0 + 1;
   const bool cubic = world.params.forces.motion_curve != 0;
   const CurveBasis<double> basis = curve_basis(w, t1 - t0, cubic);
-  // The tangent of vertex k of global slice g, in x and y (curve_tangents, in double).
+  // The tangent of vertex k of global slice g, in double.
   const auto tangent = [&](int g, int k) {
-    const int p = links.prev[g], q = links.next[g], e = topo.slice_element[g];
-    const int v = topo.slice_begin[g] + k;
-    const double tg = state.t[topo.slice_begin[g]];
-    double hp = 0, hn = 0, xp = 0, yp = 0, xn = 0, yn = 0;
-    if (p >= 0) {
-      const double tp = state.t[topo.slice_begin[p]] - (g == topo.element_slice_begin[e] ? 1.0 : 0.0);
-      hp = tg - tp, xp = state.x[topo.slice_begin[p] + k], yp = state.y[topo.slice_begin[p] + k];
-    }
-    if (q >= 0) {
-      const double tn = state.t[topo.slice_begin[q]] + (g + 1 == topo.element_slice_begin[e + 1] ? 1.0 : 0.0);
-      hn = tn - tg, xn = state.x[topo.slice_begin[q] + k], yn = state.y[topo.slice_begin[q] + k];
-    }
-    const double x0 = state.x[v], y0 = state.y[v];
-    return Vec2{curve_tangent(curve_slope(xp, x0, hp), curve_slope(x0, xn, hn), hp, hn, p >= 0, q >= 0),
-                curve_tangent(curve_slope(yp, y0, hp), curve_slope(y0, yn, hn), hp, hn, p >= 0, q >= 0)};
+    Vec2 m;
+    curve_vertex_tangent(topo, links, state, g, k, m.x, m.y);
+    return m;
   };
   for (int v = 0; v < P; ++v) {
     const int a = inst.vertex_begin + s * P + v, b = a + P;

@@ -1,5 +1,4 @@
 #include <cmath>
-#include <cstdio>
 
 #include "animpak/animation.hpp"
 #include "animpak/error.hpp"
@@ -155,14 +154,8 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   // A scripted motion that the curve between the scene's slices cannot follow within 1 % of the element's
   // size (docs/parameters.md, "How many slices a motion needs").
   for (const SpacetimeElement& e : library)
-    if (e.slices_needed > scene.params.element.slices) {
-      char error[32];
-      std::snprintf(error, sizeof error, "%.1f", 100.0 * e.motion_error);
-      world.notes.push_back("warning: element \"" + e.name + "\": its scripted motion strays up to " + error +
-                            " % of its size from the curve between " + std::to_string(scene.params.element.slices) +
-                            " slices; about " + std::to_string(e.slices_needed) +
-                            " slices keep it within 1 % (the scene's \"slices\")");
-    }
+    if (const std::string warning = slice_advice_warning(e); !warning.empty())
+      world.notes.push_back("warning: " + warning);
 
   Rng rng(scene.seed);
   std::vector<Placement> placements = scene_detail::place_guided(scene, container, library, world.notes);
