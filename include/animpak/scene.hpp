@@ -46,6 +46,21 @@ void index_container(ContainerGeometry& box, std::int32_t cells = 32);
 /// at least `margin` from the boundary, in generation order. Deterministic for the generator's state.
 std::vector<Vec2> poisson_disk(const Container& container, double min_distance, double margin, Rng& rng);
 
+/// `wanted` of `candidates`, spread evenly by farthest-point selection: candidates[first] first, then
+/// each pick the candidate farthest from everything already there: the picks so far, the `occupied`
+/// points (guided elements' paths) and the wall, where the wall counts at twice its distance (as the
+/// mirror image of a seed there, so seeds settle half a spacing from it). The first maximum wins;
+/// deterministic. Fewer than `wanted` candidates: all of them, in selection order.
+std::vector<Vec2> spread_seeds(const Container& container, const std::vector<Vec2>& candidates, int wanted,
+                               const std::vector<Vec2>& occupied, std::size_t first = 0);
+
+/// Lloyd relaxation of `seeds` towards a centroidal Voronoi arrangement: `iterations` times, every seed
+/// moves to the centroid of the container points nearer to it than to any other seed or `occupied`
+/// point (a 128 × 128 grid over the container's box), unless that would bring it nearer than `margin`
+/// to the wall or nearer than `clearance` to an occupied point. Deterministic.
+std::vector<Vec2> relax_seeds(const Container& container, std::vector<Vec2> seeds, const std::vector<Vec2>& occupied,
+                              double margin, double clearance, int iterations);
+
 /// One element in the container: a library element, shrunk, oriented and placed.
 struct ElementInstance {
   std::string name;  ///< "<library name>#<k>" for unguided elements, the guided name otherwise

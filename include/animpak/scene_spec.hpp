@@ -124,6 +124,16 @@ using ArtLocator =
 SceneSpec parse_scene(const std::string& text, const std::filesystem::path& file_for_messages,
                       const std::filesystem::path& base_dir, const ArtLocator& locate = {});
 
+/// The slices of a still reference: nothing moves, so more slices only cost time, and 12 are enough for
+/// the collision grid to see each slice's time neighbours (fewer than about 10 are not; `pack` warns).
+inline constexpr int still_slices = 12;
+
+/// The still reference of `scene` (whose text is `text`), as scene text: every element's animation and
+/// phase removed, each guided element turned into one more ordinary copy of its library element (its
+/// count, or the scene's, one higher), and at most 12 slices; everything else, the seed included, as it
+/// was (docs/quality.md, "Still reference"). still_scene.cpp.
+std::string still_scene_text(const std::string& text, const SceneSpec& scene);
+
 /// The JSON Schema (draft 2020-12) of the scene file, written from the tables the parser checks keys,
 /// types and ranges with; docs/scene.schema.json is its output.
 std::string scene_json_schema();

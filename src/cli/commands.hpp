@@ -66,6 +66,7 @@ struct PackOptions {
   std::string device;               ///< empty: the default rule (first GPU, else PoCL, else the reference)
   std::string grid_sort = "auto";   ///< auto, host or device (GridSort)
   bool force = false;               ///< overwrite the packing already in `out`
+  bool still = false;               ///< pack the scene's still reference (still_scene_text)
   bool verbose = false;             ///< the progress line with overlaps, outside and the g range
   std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
 };

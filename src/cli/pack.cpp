@@ -156,6 +156,12 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     checkpoint.scene_file = std::filesystem::absolute(options.scene);
     const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
     checkpoint.scene_text = read_whole(checkpoint.scene_file);
+    if (options.still) {
+      checkpoint.scene_text = still_scene_text(checkpoint.scene_text, scene);
+      std::cerr << "animpak: packing the still reference: the same elements standing still"
+                << (scene.guided.empty() ? "" : ", guided elements as ordinary copies") << ", "
+                << std::min(scene.params.element.slices, still_slices) << " slices\n";
+    }
     checkpoint.seed = options.seed.value_or(scene.seed);
     inputs = snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text);
   }

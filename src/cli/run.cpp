@@ -39,6 +39,9 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_option("--resume", cl.pack.resume,
                           "continue the interrupted packing in this folder (with the scene and seed it started with)");
   cl.pack_cmd->add_flag("--force", cl.pack.force, "overwrite the packing already in --out DIR");
+  cl.pack_cmd->add_flag("--still", cl.pack.still,
+                        "pack the same elements standing still (no animation, guided elements as ordinary copies, "
+                        "at most 12 slices): the reference an animated packing's coverage is judged against");
   cl.pack_cmd->add_flag("--verbose", cl.pack.verbose,
                         "progress with the overlapping and outside vertex counts and the range of g");
   cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");
@@ -130,7 +133,8 @@ void check_pack_options(const PackOptions& pack) {
   const std::pair<bool, const char*> options_given[] = {{!pack.scene.empty(), "SCENE"},
                                                         {!pack.out.empty(), "--out"},
                                                         {pack.seed.has_value(), "--seed"},
-                                                        {pack.force, "--force"}};
+                                                        {pack.force, "--force"},
+                                                        {pack.still, "--still"}};
   for (const auto& [given, name] : options_given)
     if (pack.resume && given) refused += (refused.empty() ? "" : ", ") + std::string(name);
   if (!refused.empty())

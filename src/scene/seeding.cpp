@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "animpak/scene.hpp"
@@ -59,6 +60,68 @@ std::vector<Vec2> poisson_disk(const Container& container, double min_distance, 
     }
   }
   return samples;
+}
+
+// Gonzalez's farthest-point traversal: the picks' smallest distance is at least half the best possible
+// for `wanted` points among the candidates, and no region larger than the last pick's distance is left
+// without a seed. Each candidate keeps its distance to the nearest pick so far: O(wanted × candidates).
+std::vector<Vec2> spread_seeds(const Container& container, const std::vector<Vec2>& candidates, int wanted,
+                               const std::vector<Vec2>& occupied, std::size_t first) {
+  std::vector<double> room(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    double r = 2.0 * container.distance_to_boundary(candidates[i]);
+    for (const Vec2 q : occupied) r = std::min(r, norm(candidates[i] - q));
+    room[i] = r;
+  }
+  std::vector<Vec2> picks;
+  std::vector<bool> taken(candidates.size(), false);
+  while (static_cast<int>(picks.size()) < wanted && picks.size() < candidates.size()) {
+    std::size_t best = picks.empty() && first < candidates.size() ? first : candidates.size();
+    for (std::size_t i = 0; i < candidates.size() && !picks.empty(); ++i)
+      if (!taken[i] && (best == candidates.size() || room[i] > room[best])) best = i;
+    taken[best] = true;
+    picks.push_back(candidates[best]);
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      room[i] = std::min(room[i], norm(candidates[i] - candidates[best]));
+  }
+  return picks;
+}
+
+std::vector<Vec2> relax_seeds(const Container& container, std::vector<Vec2> seeds, const std::vector<Vec2>& occupied,
+                              double margin, double clearance, int iterations) {
+  constexpr int n = 128;
+  const Box box = container.bounds();
+  std::vector<Vec2> points;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec2 p{box.min.x + (i + 0.5) / n * (box.max.x - box.min.x),
+                   box.min.y + (j + 0.5) / n * (box.max.y - box.min.y)};
+      if (container.contains(p)) points.push_back(p);
+    }
+  const auto allowed = [&](Vec2 p) {
+    if (!container.contains(p) || container.distance_to_boundary(p) < margin) return false;
+    return std::all_of(occupied.begin(), occupied.end(), [&](Vec2 q) { return !(norm(p - q) < clearance); });
+  };
+  for (int it = 0; it < iterations; ++it) {
+    std::vector<Vec2> sum(seeds.size(), Vec2{0.0, 0.0});
+    std::vector<int> count(seeds.size(), 0);
+    for (const Vec2 p : points) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Vec2 q : occupied) nearest = std::min(nearest, dot(p - q, p - q));
+      int owner = -1;
+      for (std::size_t k = 0; k < seeds.size(); ++k)
+        if (const double d = dot(p - seeds[k], p - seeds[k]); d < nearest) nearest = d, owner = static_cast<int>(k);
+      if (owner < 0) continue;
+      sum[owner] = sum[owner] + p;
+      ++count[owner];
+    }
+    for (std::size_t k = 0; k < seeds.size(); ++k) {
+      if (count[k] == 0) continue;
+      const Vec2 centroid = sum[k] * (1.0 / count[k]);
+      if (allowed(centroid)) seeds[k] = centroid;
+    }
+  }
+  return seeds;
 }
 
 }  // namespace animpak

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <regex>
 
+#include "animpak/checkpoint.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
@@ -365,4 +366,37 @@ TEST_CASE("animpak render --background, --container and --format dotlottie, and 
   CHECK(mp4.code == 1);
   CHECK_THAT(mp4.err, Contains("MP4 (H.264) has no transparency"));
   CHECK(run_animpak("render " + out.string() + " --format lottie --no-container --container fill").code == 1);
+}
+
+TEST_CASE("animpak pack --still: the still reference is the packing of the same scene written without animation") {
+  // Three rotating stars and two guided ones swapping places, on 16 slices; by hand, its still
+  // reference: five stars standing still, 12 slices, the same seed.
+  const Sandbox box("still", animpak::test::star_scene(3, 16, 2, animpak::test::swapping_pair()));
+  const std::string star = animpak::test::example_file("default/star.svg");
+  write_bytes(box.path("by-hand.json"), R"({"container": {"art": ")" +
+                                            animpak::test::example_file("shapes/heart-container.path") +
+                                            R"("}, "elements": [{"name": "star", "art": ")" + star +
+                                            R"(", "count": 5}], "seed": 2, "slices": 12, "params": {}})");
+  const CommandResult still =
+      run_animpak("pack " + box.scene() + " --still --out " + box.path("still") + " --max-iterations 40 --no-render");
+  INFO(still.err);
+  REQUIRE(still.code == 0);
+  CHECK_THAT(still.err, Contains("still reference") && Contains("guided elements as ordinary copies") &&
+                            Contains("12 slices") && Contains("5 elements"));
+  REQUIRE(run_animpak("pack " + box.path("by-hand.json") + " --out " + box.path("hand") +
+                      " --max-iterations 40 --no-render")
+              .code == 0);
+  const animpak::Checkpoint a = animpak::read_checkpoint(box.path("still") + "/state.bin");
+  const animpak::Checkpoint b = animpak::read_checkpoint(box.path("hand") + "/state.bin");
+  CHECK(a.state.iteration == 40);
+  CHECK(a.state.x == b.state.x);
+  CHECK(a.state.y == b.state.y);
+  CHECK(a.state.t == b.state.t);
+  CHECK(a.state.growth == b.state.growth);
+  // The folder holds the still scene, so it renders and resumes as that scene.
+  const nlohmann::json scene = nlohmann::json::parse(bytes_of(box.path("still") + "/input/scene.json"));
+  CHECK_FALSE(scene.contains("guided"));
+  CHECK_FALSE(scene["elements"][0].contains("animation"));
+  CHECK(scene["elements"][0]["count"] == 5);
+  CHECK(run_animpak("pack --resume " + box.path("still") + " --still").code == 1);
 }
