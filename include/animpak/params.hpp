@@ -31,6 +31,7 @@ struct Params {
   struct Placement {
     double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
     double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
+    int seed_spread = 1;  ///< a fixed count's seeds: 1 spread (farthest points, Lloyd), 0 a random blue-noise subset
   };
 
   /// §5 forces, integration and the spatial queries (src/solver).

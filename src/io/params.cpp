@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 43> table{{
+const std::array<ParamInfo, 44> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -38,6 +38,10 @@ const std::array<ParamInfo, 43> table{{
      "size of every element at the start (§4)", "5–10 % of full size (§4)"},
     {"seed_spacing", "placement", field<&Params::placement, &Params::Placement::seed_spacing>(), 0.01, 1.0,
      "distance between unguided seeds when filling (§4)", "not stated (blue noise, §4)"},
+    {"seed_spread", "placement", field<&Params::placement, &Params::Placement::seed_spread>(), 0, 1,
+     "a fixed count's seeds: 1 spread over the container (farthest points, then Lloyd); 0 a random subset of "
+     "blue noise (0.4.0)",
+     "blue noise (§4)"},
     {"k_repulsion", "forces", field<&Params::forces, &Params::Forces::k_repulsion>(), 0.0, inf,
      "k_rpl, repulsion strength (Eq. 1)", "k_rpl = 10 (Eq. 1)"},
     {"repulsion_epsilon", "forces", field<&Params::forces, &Params::Forces::repulsion_epsilon>(), 1e-12, inf,

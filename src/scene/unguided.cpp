@@ -99,10 +99,12 @@ std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& contai
   // counting as a mirror image, and Lloyd relaxation then evens them out, keeping the margin and the
   // guided paths' clearance. Where that brings two seeds so close that their shrunken elements could
   // touch (a crowded scene), the random subset stays: its spacing is the largest that holds them all.
-  std::vector<Vec2> occupied;
-  for (const Placement& g : guided) occupied.insert(occupied.end(), g.path.begin(), g.path.end());
-  const std::vector<Vec2> dense = free_seeds(container, 0.25 * spacing, margin, guided, spacing, rng);
+  const std::vector<Vec2> dense = scene.params.placement.seed_spread != 0
+                                      ? free_seeds(container, 0.25 * spacing, margin, guided, spacing, rng)
+                                      : std::vector<Vec2>{};
   if (!dense.empty()) {
+    std::vector<Vec2> occupied;
+    for (const Placement& g : guided) occupied.insert(occupied.end(), g.path.begin(), g.path.end());
     std::vector<Vec2> picks = spread_seeds(container, dense, wanted, occupied, rng.below(dense.size()));
     if (static_cast<int>(picks.size()) == wanted && closest_pair(picks) >= 2.0 * margin) {
       std::vector<Vec2> relaxed = relax_seeds(container, picks, occupied, margin, spacing, seed_relaxation);

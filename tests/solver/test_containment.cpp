@@ -120,7 +120,8 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
 
 TEST_CASE("containment: a lone element in a large container stops at the wall, inside it") {
   // One star in the heart. Without the wall as a neighbour its slice gap stays infinite, the stop test
-  // never passes and it grows to max_growth, far past the heart.
+  // never passes and it grows to max_growth, far past the heart. Seeded in the heart's middle (a count's
+  // seeds are spread, docs/parameters.md "Seeds for a fixed count"), it stops at g ≈ 7.5.
   const World w = make_world(parse_scene(
       test::star_scene(1, 5, 2, {"", R"("cell_size": 0.2, "interior_spacing": 0.5, "max_iterations": 60000)"}),
       "tiny.json", "/"));
@@ -131,7 +132,7 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
   const RunResult r = run_simulation(*backend, w.params, control);
   INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations");
   REQUIRE(r.reason == StopReason::gap);
-  CHECK(r.last.max_growth < static_cast<float>(w.params.growth.max_growth) / 2);
+  CHECK(r.last.max_growth < 0.75f * static_cast<float>(w.params.growth.max_growth));
   CHECK(r.last.max_growth > 3.0f);  // it did grow to the wall: a tenth of the heart's width at least
   int outside = 0;
   for (std::int32_t v = 0; v < w.topology.vertex_count(); ++v)
