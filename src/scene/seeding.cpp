@@ -62,9 +62,8 @@ std::vector<Vec2> poisson_disk(const Container& container, double min_distance, 
   return samples;
 }
 
-// Gonzalez's farthest-point traversal: the picks' smallest distance is at least half the best possible
-// for `wanted` points among the candidates, and no region larger than the last pick's distance is left
-// without a seed. Each candidate keeps its distance to the nearest pick so far: O(wanted × candidates).
+// Gonzalez's farthest-point traversal (a 2-approximation of the k-centre covering among the
+// candidates): no candidate is left farther from every pick than the last pick's distance was. Each candidate keeps its distance to the nearest pick so far: O(wanted × candidates).
 std::vector<Vec2> spread_seeds(const Container& container, const std::vector<Vec2>& candidates, int wanted,
                                const std::vector<Vec2>& occupied, std::size_t first) {
   std::vector<double> room(candidates.size());

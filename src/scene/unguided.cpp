@@ -50,7 +50,7 @@ double closest_pair(const std::vector<Vec2>& points) {
   return d;
 }
 
-// Lloyd iterations over the picked seeds: 20 move them within a few per cent of their fixed point.
+// Lloyd iterations over the picked seeds (docs/parameters.md, "Seeds for a fixed count").
 constexpr int seed_relaxation = 20;
 
 template <class T>
