@@ -46,7 +46,8 @@ void index_container(ContainerGeometry& box, std::int32_t cells = 32);
 /// at least `margin` from the boundary, in generation order. Deterministic for the generator's state.
 std::vector<Vec2> poisson_disk(const Container& container, double min_distance, double margin, Rng& rng);
 
-/// `wanted` of `candidates`, spread evenly by farthest-point selection: candidates[first] first, then
+/// `wanted` of `candidates`, spread evenly by farthest-point selection: candidates[first] first (the
+/// first candidate if `first` is past the end), then
 /// each pick the candidate farthest from everything already there: the picks so far, the `occupied`
 /// points (guided elements' paths) and the wall, where the wall counts at twice its distance (as the
 /// mirror image of a seed there, so seeds settle half a spacing from it). The first maximum wins;

@@ -75,9 +75,12 @@ std::vector<Vec2> spread_seeds(const Container& container, const std::vector<Vec
   std::vector<Vec2> picks;
   std::vector<bool> taken(candidates.size(), false);
   while (static_cast<int>(picks.size()) < wanted && picks.size() < candidates.size()) {
-    std::size_t best = picks.empty() && first < candidates.size() ? first : candidates.size();
-    for (std::size_t i = 0; i < candidates.size() && !picks.empty(); ++i)
-      if (!taken[i] && (best == candidates.size() || room[i] > room[best])) best = i;
+    std::size_t best = first < candidates.size() ? first : 0;
+    if (!picks.empty()) {
+      best = candidates.size();
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (!taken[i] && (best == candidates.size() || room[i] > room[best])) best = i;
+    }
     taken[best] = true;
     picks.push_back(candidates[best]);
     for (std::size_t i = 0; i < candidates.size(); ++i)
@@ -97,6 +100,10 @@ std::vector<Vec2> relax_seeds(const Container& container, std::vector<Vec2> seed
                    box.min.y + (j + 0.5) / n * (box.max.y - box.min.y)};
       if (container.contains(p)) points.push_back(p);
     }
+  // The occupied points do not move: each grid point's squared distance to the nearest, once.
+  std::vector<double> occupied_d2(points.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (const Vec2 q : occupied) occupied_d2[i] = std::min(occupied_d2[i], dot(points[i] - q, points[i] - q));
   const auto allowed = [&](Vec2 p) {
     if (!container.contains(p) || container.distance_to_boundary(p) < margin) return false;
     return std::all_of(occupied.begin(), occupied.end(), [&](Vec2 q) { return !(norm(p - q) < clearance); });
@@ -104,9 +111,9 @@ std::vector<Vec2> relax_seeds(const Container& container, std::vector<Vec2> seed
   for (int it = 0; it < iterations; ++it) {
     std::vector<Vec2> sum(seeds.size(), Vec2{0.0, 0.0});
     std::vector<int> count(seeds.size(), 0);
-    for (const Vec2 p : points) {
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const Vec2 q : occupied) nearest = std::min(nearest, dot(p - q, p - q));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Vec2 p = points[i];
+      double nearest = occupied_d2[i];
       int owner = -1;
       for (std::size_t k = 0; k < seeds.size(); ++k)
         if (const double d = dot(p - seeds[k], p - seeds[k]); d < nearest) nearest = d, owner = static_cast<int>(k);
