@@ -155,3 +155,59 @@ __kernel void apply_containment(const WorldInfo world,
   vx[v] = 0.0f;
   vy[v] = 0.0f;
 }
+
+/** The wall as the mirror image of the element (reference wall_mirror_force): for a boundary vertex
+ * inside within wall_range of its nearest wall point q, Eq. 1 at the reflection 2q − x from the element's
+ * own triangles (repulsion_sum with own_only), reflected back across the wall's tangent at q and weighted
+ * k_mirror; zero otherwise. One work-item per boundary vertex; step_forces adds it to the wall's force. */
+__kernel void wall_mirror_force(const GridInfo grid,
+                                const ForceParams p,
+                                const WorldInfo world,
+                                const int boundary_count,
+                                __global const int* boundary_vertices, /* input: the boundary vertices */
+                                __global const float* x,
+                                __global const float* y,
+                                __global const float* t,          /* input */
+                                __global const int* element,      /* input: per vertex */
+                                __global const int* cell_start,   /* input: cells + 1 */
+                                __global const int* slot_element, /* input: per grid slot (grid_gather) */
+                                __global const float* slot_vertices,
+                                __global const float* slot_cx,
+                                __global const float* slot_cy,
+                                __global const float* slot_ct,
+                                __global const int* run_next, /* input: per grid slot (grid_runs) */
+                                __global const float* run_cx,
+                                __global const float* run_cy,
+                                __global const float* run_ct,
+                                __global const float* seg_ax,
+                                __global const float* seg_ay, /* input: container segments */
+                                __global const float* seg_bx,
+                                __global const float* seg_by,             /* input */
+                                const ContainerIndexInfo container_index, /* the container's index */
+                                __global const int* container_lists,      /* input: its lists */
+                                __global float* mirror_x,
+                                __global float* mirror_y,
+                                __global float* mirror_t) { /* output: per boundary vertex */
+  const int i = get_global_id(0);
+  if (i >= boundary_count) return;
+  const int v = boundary_vertices[i];
+  const float px = x[v], py = y[v], pt = t[v];
+  float d2, qx, qy;
+  const bool inside = container_query(world.segments, container_index, container_lists, px, py, true, seg_ax, seg_ay,
+                                      seg_bx, seg_by, &d2, &qx, &qy);
+  float mx = 0.0f, my = 0.0f, mt = 0.0f;
+  if (p.k_mirror != 0.0f && inside && d2 > 0.0f && d2 < p.wall_range2) {
+    float sx, sy, st, closest2;
+    repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                  run_ct, element[v], 1, qx + (qx - px), qy + (qy - py), pt, p.repulsion_epsilon, &sx, &sy, &st,
+                  &closest2);
+    const float nx = px - qx, ny = py - qy;
+    const float twice = 2.0f * ((sx * nx + sy * ny) / d2);
+    mx = p.k_mirror * (sx - twice * nx);
+    my = p.k_mirror * (sy - twice * ny);
+    mt = p.k_mirror * st;
+  }
+  mirror_x[v] = mx;
+  mirror_y[v] = my;
+  mirror_t[v] = mt;
+}

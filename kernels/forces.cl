@@ -45,6 +45,9 @@ __kernel void step_forces(const WorldInfo world,
                           __global const int* container_lists,      /* input: its lists */
                           __global const float* slice_cx,
                           __global const float* slice_cy, /* input: slice centroids */
+                          __global const float* mirror_x,
+                          __global const float* mirror_y,
+                          __global const float* mirror_t, /* input: wall_mirror_force, when k_mirror != 0 */
                           __global float* fx,
                           __global float* fy,
                           __global float* ft,          /* output: Eq. 7 per vertex */
@@ -68,9 +71,13 @@ __kernel void step_forces(const WorldInfo world,
   float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;
   if (target[v] >= 0 && (flags[v] & AP_VERTEX_ANCHOR) != 0)
     target_force(p, target[v], px, py, pt, target_x, target_y, target_t, &tgt_x, &tgt_y, &tgt_t);
-  float bdr_x = 0.0f, bdr_y = 0.0f;
-  const float bdr_t = 0.0f;
+  float bdr_x = 0.0f, bdr_y = 0.0f, bdr_t = 0.0f;
   boundary_force(p, in_container, wall2, wall_qx, wall_qy, px, py, boundary, &bdr_x, &bdr_y);
+  if (boundary && p.k_mirror != 0.0f && !overlapping) { /* the wall's mirror image (wall_mirror_force) */
+    bdr_x = bdr_x + mirror_x[v];
+    bdr_y = bdr_y + mirror_y[v];
+    bdr_t = bdr_t + mirror_t[v];
+  }
   float ovr_x = 0.0f, ovr_y = 0.0f, ovr_t = 0.0f;
   if (overlapping)
     overlap_force(p, v, inside, depth_x[v], depth_y[v], tri_begin, tri_list, tri_a, tri_b, tri_c, x, y, t, &ovr_x,
@@ -91,6 +98,7 @@ __kernel void step_forces(const WorldInfo world,
   float gap = dist;
   if (boundary) {
     float wall_gap = in_container ? sqrt(wall2) : 0.0f;
+    if (p.k_mirror != 0.0f) wall_gap = wall_gap + wall_gap; /* the mirror image's gap */
     /* Both ends inside, the edge to the next boundary vertex may still leave around a reflex corner. */
     if (in_container) {
       const int lo = slice_begin[s];

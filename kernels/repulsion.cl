@@ -33,7 +33,8 @@ void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float
   *at = *at + select((float4)(0.0f), (float4)(ut * w), mine);
 }
 
-/** Exact terms of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own`, each
+/** Exact terms of Eq. 1 for every near slot in [range.x, range.y) of triangles not owned by `own` (with
+ * own_only, of those owned by `own`: the wall's mirror image, boundary.cl), each
  * added to partial sum (slot mod 4) of (*ax, *ay, *at), in slot order within each partial. Built for a
  * CPU, AP_LANES slots at a time (closest_point_on_triangles): the partials are turned so that lane j
  * holds partial (range.x + j) mod 4, and each group adds its lanes 0-3, 4-7, 8-11, 12-15 in that order
@@ -42,6 +43,7 @@ void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float
  * range (all of it on a GPU), and as the reference. */
 void repulsion_near_slots(int2 range,
                           int own,
+                          int own_only,
                           float px,
                           float py,
                           float pt,
@@ -72,7 +74,8 @@ void repulsion_near_slots(int2 range,
     float4 lane_x = shuffle(sum_x, turn), lane_y = shuffle(sum_y, turn), lane_t = shuffle(sum_t, turn);
     for (; k + AP_LANES <= range.y; k += AP_LANES) {
       const ap_intv own_lane = ap_vloadi(0, slot_element + k) == own;
-      if (all(own_lane)) continue;
+      const ap_intv skip = own_only != 0 ? ~own_lane : own_lane;
+      if (all(skip)) continue;
       ap_floatv qx, qy, qt;
       closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
                                  ap_vloadf(0, bx + k), ap_vloadf(0, by + k), ap_vloadf(0, bt + k), ap_vloadf(0, cx + k),
@@ -81,7 +84,7 @@ void repulsion_near_slots(int2 range,
       const ap_floatv d2 = ux * ux + uy * uy + ut * ut;
       /* repulsion_weight with count 1, lane by lane. */
       const ap_floatv w = 1.0f / sqrt(d2) * (1.0f / (eps + d2)) * 1.0f;
-      const ap_intv take = ~own_lane & (d2 > 0.0f);
+      const ap_intv take = ~skip & (d2 > 0.0f);
       const ap_floatv zero = (ap_floatv)(0.0f);
       const ap_floatv wx = select(zero, ux * w, take), wy = select(zero, uy * w, take), wt = select(zero, ut * w, take);
       lane_x = lane_x + wx.s0123, lane_y = lane_y + wy.s0123, lane_t = lane_t + wt.s0123;
@@ -89,7 +92,7 @@ void repulsion_near_slots(int2 range,
       lane_x = lane_x + wx.s89ab, lane_y = lane_y + wy.s89ab, lane_t = lane_t + wt.s89ab;
       lane_x = lane_x + wx.scdef, lane_y = lane_y + wy.scdef, lane_t = lane_t + wt.scdef;
       /* The nearest distance is a minimum, exact in any order; NaN lanes are ignored as `d2 < c2` does. */
-      const ap_floatv other_d2 = select(d2, (ap_floatv)(INFINITY), own_lane);
+      const ap_floatv other_d2 = select(d2, (ap_floatv)(INFINITY), skip);
       const float8 m8 = fmin(other_d2.lo, other_d2.hi);
       const float4 m4 = fmin(m8.lo, m8.hi);
       c2 = fmin(c2, fmin(fmin(m4.x, m4.y), fmin(m4.z, m4.w)));
@@ -98,7 +101,7 @@ void repulsion_near_slots(int2 range,
   }
 #endif
   for (; k < range.y; ++k) {
-    if (slot_element[k] == own) continue;
+    if ((slot_element[k] == own) != (own_only != 0)) continue;
     float qx, qy, qt;
     closest_point_on_triangle(px, py, pt, ax[k], ay[k], at[k], bx[k], by[k], bt[k], cx[k], cy[k], ct[k], &qx, &qy, &qt);
     const float ux = px - qx, uy = py - qy, ut = pt - qt;
@@ -109,11 +112,13 @@ void repulsion_near_slots(int2 range,
   *ax_sum = sum_x, *ay_sum = sum_y, *at_sum = sum_t, *closest2 = c2;
 }
 
-/** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (repulsion.cpp): every
+/** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (with own_only, owned by
+ * it) (repulsion.cpp): every
  * triangle's centroid, or with far_cells every run's mean centroid, counted once per triangle of the run
  * (grid_runs). The range starts at a cell's first slot, which is a run's first slot. */
 void repulsion_far_slots(int2 range,
                          int own,
+                         int own_only,
                          float px,
                          float py,
                          float pt,
@@ -133,16 +138,73 @@ void repulsion_far_slots(int2 range,
   if (far_cells) {
     for (int k = range.x; k < range.y;) {
       const int next = run_next[k];
-      if (slot_element[k] != own)
+      if ((slot_element[k] == own) == (own_only != 0))
         repulsion_add_term(px - run_cx[k], py - run_cy[k], pt - run_ct[k], eps, (float)(next - k), sx, sy, st);
       k = next;
     }
     return;
   }
   for (int k = range.x; k < range.y; ++k) {
-    if (slot_element[k] == own) continue;
+    if ((slot_element[k] == own) != (own_only != 0)) continue;
     repulsion_add_term(px - slot_cx[k], py - slot_cy[k], pt - slot_ct[k], eps, 1.0f, sx, sy, st);
   }
+}
+
+/** Eq. 1's sum at (px, py, pt) (reference eq1_sum): the 3x3x3 near block with exact closest points in
+ * four partial sums, joined as (p0 + p1) + (p2 + p3); then the outer shell of the 5x5x5 block with
+ * centroids added to that one by one (the reference collects both lists and sums near before far), row by
+ * row. Triangles of elements other than `own`, or with own_only of `own` alone; *closest2 is the least
+ * squared near distance. */
+void repulsion_sum(const GridInfo grid,
+                   __global const int* cell_start,
+                   __global const int* slot_element,
+                   __global const float* slot_vertices,
+                   __global const float* slot_cx,
+                   __global const float* slot_cy,
+                   __global const float* slot_ct,
+                   __global const int* run_next,
+                   __global const float* run_cx,
+                   __global const float* run_cy,
+                   __global const float* run_ct,
+                   int own,
+                   int own_only,
+                   float px,
+                   float py,
+                   float pt,
+                   float eps,
+                   float* out_x,
+                   float* out_y,
+                   float* out_t,
+                   float* out_closest2) {
+  float4 near_x = (float4)(0.0f), near_y = (float4)(0.0f), near_t = (float4)(0.0f);
+  float closest2 = INFINITY;
+  const int qx = grid_axis_cell(px, grid.cell, grid.n);
+  const int qy = grid_axis_cell(py, grid.cell, grid.n);
+  const int qt = grid_axis_cell(pt, grid.cell, grid.n);
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      repulsion_near_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, own_only, px, py,
+                           pt, eps, slot_element, slot_vertices, grid.triangles, &near_x, &near_y, &near_t, &closest2);
+  float sx = (near_x.x + near_x.y) + (near_x.z + near_x.w);
+  float sy = (near_y.x + near_y.y) + (near_y.z + near_y.w);
+  float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
+  for (int dz = -2; dz <= 2; ++dz) {
+    for (int dy = -2; dy <= 2; ++dy) {
+      if (abs(dz) == 2 || abs(dy) == 2) { /* the whole row is in the shell */
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, own_only, px, py,
+                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
+      } else { /* only the row's two end cells are */
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, own_only, px, py,
+                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
+        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, own_only, px, py,
+                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                            run_ct, &sx, &sy, &st);
+      }
+    }
+  }
+  *out_x = sx, *out_y = sy, *out_t = st, *out_closest2 = closest2;
 }
 
 /** Eq. 1 for each boundary vertex, with its distance to the nearest other element (+inf when nothing
@@ -202,37 +264,9 @@ __kernel void repulsion_force(const GridInfo grid,
                    element_secondary, overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
-  float4 near_x = (float4)(0.0f), near_y = (float4)(0.0f), near_t = (float4)(0.0f);
-  float closest2 = INFINITY;
-  const int qx = grid_axis_cell(px, grid.cell, grid.n);
-  const int qy = grid_axis_cell(py, grid.cell, grid.n);
-  const int qt = grid_axis_cell(pt, grid.cell, grid.n);
-  /* The 3x3x3 near block with exact closest points in four partial sums, joined as (p0 + p1) + (p2 + p3);
-   * then the outer shell of the 5x5x5 block with centroids added to that one by one (the reference
-   * collects both lists and sums near before far), row by row. */
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      repulsion_near_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, px, py, pt, eps,
-                           slot_element, slot_vertices, grid.triangles, &near_x, &near_y, &near_t, &closest2);
-  float sx = (near_x.x + near_x.y) + (near_x.z + near_x.w);
-  float sy = (near_y.x + near_y.y) + (near_y.z + near_y.w);
-  float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
-  for (int dz = -2; dz <= 2; ++dz) {
-    for (int dy = -2; dy <= 2; ++dy) {
-      if (abs(dz) == 2 || abs(dy) == 2) { /* the whole row is in the shell */
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
-                            &sx, &sy, &st);
-      } else { /* only the row's two end cells are */
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
-                            &sx, &sy, &st);
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, px, py, pt, eps,
-                            grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy, run_ct,
-                            &sx, &sy, &st);
-      }
-    }
-  }
+  float sx, sy, st, closest2;
+  repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
+                run_ct, own, 0, px, py, pt, eps, &sx, &sy, &st, &closest2);
   const float k = p.k_repulsion;
   rpl_x[v] = overlapping ? 0.0f : k * sx;
   rpl_y[v] = overlapping ? 0.0f : k * sy;

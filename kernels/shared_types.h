@@ -101,6 +101,7 @@ typedef struct {
   ap_float settle_shrink_step; /* settle_shrink_rate * dt */
   ap_int interval_points;      /* times the overlap test checks inside each slice interval */
   ap_int motion_curve;         /* 1: the monotone cubic between slices (kernels/curve.cl); 0: straight lines */
+  ap_float k_mirror;           /* wall_mirror * k_repulsion: the wall as the element's mirror image; 0 off */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

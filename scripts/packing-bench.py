@@ -1,15 +1,17 @@
 #!/usr/bin/env python3
 """How dense and how even animpak packs (docs/quality.md, "Still reference"; docs/benchmark.md).
 
-    scripts/packing-bench.py [--animpak PATH] [--out DIR] [--discs 19,37,61] [--examples default,clipart]
-                             [--frames 100] [--size 200] [--device NAME]
+    scripts/packing-bench.py [--animpak PATH] [--out DIR] [--discs 19,37,61] [--disc-seeds 1,2,3]
+                             [--examples default,clipart] [--frames 100] [--size 200] [--device NAME]
 
 Two tables, each packing run by `animpak pack` to its stop and measured on its rendered frames:
 
   discs      N equal discs (the art) in a circle (the container), standing still, `offset` 0.04, 12
              slices: coverage against the best-known packing of N equal circles in a circle
              (Packomania: 19 0.803, 37 0.810, 61 0.813), times the channel factor (r / (r + offset))²
-             that each disc's channel leaves of its envelope (r = 0.5, the disc in its own units).
+             that each disc's channel leaves of its envelope (r = 0.5, the disc in its own units). One
+             row per seed in --disc-seeds (default 1): a packing can jam with a hole where a disc would
+             fit, and which seeds do says more than one seed.
   examples   each example scene packed standing still (`pack --still`) and as it is: the coverage of
              both, the animated packing's lowest frame over the still packing's mean, the wall ratio,
              the largest empty disc, iterations and simulation time.
@@ -67,7 +69,7 @@ def pct(lo, hi):
     return "%d–%d %%" % (round(100 * lo), round(100 * hi))
 
 
-def disc_scene(folder, count):
+def disc_scene(folder, count, seed=1):
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, "disc.svg"), "w") as f:
         f.write('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">'
@@ -79,7 +81,7 @@ def disc_scene(folder, count):
     with open(scene, "w") as f:
         json.dump({"container": {"art": "circle.svg"},
                    "elements": [{"name": "disc", "art": "disc.svg", "count": count}],
-                   "seed": 1, "loop": True, "slices": 12, "params": {"offset": DISC_OFFSET}}, f)
+                   "seed": seed, "loop": True, "slices": 12, "params": {"offset": DISC_OFFSET}}, f)
     return scene
 
 
@@ -88,6 +90,7 @@ def main():
     ap.add_argument("--animpak", default=os.path.join(ROOT, "build", "release", "animpak"))
     ap.add_argument("--out", default=None)
     ap.add_argument("--discs", default="19,37,61")
+    ap.add_argument("--disc-seeds", default="1")
     ap.add_argument("--examples", default="default,clipart,aquarium,annulus,aquatic-loop")
     ap.add_argument("--frames", type=int, default=100)
     ap.add_argument("--size", type=int, default=200)
@@ -99,17 +102,20 @@ def main():
     discs = [int(n) for n in args.discs.split(",") if n.strip()]
     if discs:
         factor = (0.5 / (0.5 + DISC_OFFSET)) ** 2
-        print("| discs | coverage | best known × channel | share of it | wall ratio | largest empty disc |"
+        seeds = [int(k) for k in args.disc_seeds.split(",") if k.strip()]
+        print("| discs | seed | coverage | best known × channel | share of it | wall ratio | largest empty disc |"
               " iterations | simulation |")
-        print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+        print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
         for n in discs:
-            folder = os.path.join(out, "discs-%d" % n)
-            s = summary(pack(args.animpak, disc_scene(folder, n), os.path.join(folder, "packing"), args))
-            limit = BEST_KNOWN.get(n)
-            bound = None if limit is None else limit * factor
-            print("| %d | %s | %s | %s | %s | %s | %d | %.0f s |" % (
-                n, fmt(100 * s["mean"], 1) + " %", fmt(bound, 3), fmt(None if bound is None else s["mean"] / bound),
-                fmt(s["wall"]), fmt(s["disc"]), s["iterations"], s["seconds"]), flush=True)
+            for seed in seeds:
+                folder = os.path.join(out, "discs-%d-seed-%d" % (n, seed))
+                s = summary(pack(args.animpak, disc_scene(folder, n, seed), os.path.join(folder, "packing"), args))
+                limit = BEST_KNOWN.get(n)
+                bound = None if limit is None else limit * factor
+                print("| %d | %d | %s | %s | %s | %s | %s | %d | %.0f s |" % (
+                    n, seed, fmt(100 * s["mean"], 1) + " %", fmt(bound, 3),
+                    fmt(None if bound is None else s["mean"] / bound), fmt(s["wall"]), fmt(s["disc"]),
+                    s["iterations"], s["seconds"]), flush=True)
         print()
 
     examples = [e for e in args.examples.split(",") if e.strip()]

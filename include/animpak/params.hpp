@@ -38,29 +38,31 @@ struct Params {
   struct Forces {
     double k_repulsion = 8e-8;        ///< Eq. 1
     double repulsion_epsilon = 4e-6;  ///< ε of Eq. 1
-    double wall_repulsion = 10.0;     ///< the container's wall repels a boundary vertex like this many Eq. 1 terms
-    double wall_range = 0.08;         ///< ... within this distance of the wall (the 5×5×5 repulsion shell's reach)
-    double k_edge = 5000.0;           ///< Eq. 2, slice edge springs
-    double k_shear = 5000.0;          ///< Eq. 2, shear springs
-    double k_negative_space = 50.0;   ///< Eq. 2, negative-space springs
-    double k_time = 5.0;              ///< Eq. 2, time springs
-    double k_target = 500.0;          ///< Eq. 2, target-point springs of guided elements (target slices only)
-    double k_overlap = 5.0;           ///< Eq. 3
-    double k_overlap_depth = 5.0;     ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
-    double k_boundary = 5.0;          ///< Eq. 4
-    double k_torsion = 2e-4;          ///< Eq. 5
-    double k_target_angle = 2e-3;     ///< Eq. 5 on a guided element's slices whose targets give an angle
-    double k_temporal = 1.0;          ///< Eq. 6
-    double dt = 0.05;                 ///< Δt_sim, symplectic Euler step
-    double velocity_cap = 0.02;       ///< speeds are capped at velocity_cap · Δt_sim
-    double cell_size = 0.04;          ///< collision grid cell edge (25³ cells over the unit cube)
-    int grid_rebuild_interval = 1;    ///< rebuild the collision grid every k steps
-    int far_cells = 1;                ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
-                                      ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
-    int interval_points = 3;          ///< the overlap test also checks this many evenly spaced times inside
-                                      ///< every slice interval (1: the middle only; docs/parameters.md)
-    int motion_curve = 1;             ///< between slices every vertex follows 1: a monotone C1 cubic through
-                                      ///< its slices, 0: straight lines (§6); include/animpak/curve.hpp
+    double wall_repulsion =
+        0.0;                   ///< the wall repels a boundary vertex like this many Eq. 1 terms from its nearest point
+    double wall_range = 0.08;  ///< both wall forces act within this distance of the wall (the repulsion shell's reach)
+    double wall_mirror = 1.0;  ///< the wall repels as the element's mirror image, weighted (0: off)
+    double k_edge = 5000.0;    ///< Eq. 2, slice edge springs
+    double k_shear = 5000.0;   ///< Eq. 2, shear springs
+    double k_negative_space = 50.0;  ///< Eq. 2, negative-space springs
+    double k_time = 5.0;             ///< Eq. 2, time springs
+    double k_target = 500.0;         ///< Eq. 2, target-point springs of guided elements (target slices only)
+    double k_overlap = 5.0;          ///< Eq. 3
+    double k_overlap_depth = 5.0;    ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
+    double k_boundary = 5.0;         ///< Eq. 4
+    double k_torsion = 2e-4;         ///< Eq. 5
+    double k_target_angle = 2e-3;    ///< Eq. 5 on a guided element's slices whose targets give an angle
+    double k_temporal = 1.0;         ///< Eq. 6
+    double dt = 0.05;                ///< Δt_sim, symplectic Euler step
+    double velocity_cap = 0.02;      ///< speeds are capped at velocity_cap · Δt_sim
+    double cell_size = 0.04;         ///< collision grid cell edge (25³ cells over the unit cube)
+    int grid_rebuild_interval = 1;   ///< rebuild the collision grid every k steps
+    int far_cells = 1;               ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
+                                     ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
+    int interval_points = 3;         ///< the overlap test also checks this many evenly spaced times inside
+                                     ///< every slice interval (1: the middle only; docs/parameters.md)
+    int motion_curve = 1;            ///< between slices every vertex follows 1: a monotone C1 cubic through
+                                     ///< its slices, 0: straight lines (§6); include/animpak/curve.hpp
   };
 
   /// §5.3 growth (src/solver).

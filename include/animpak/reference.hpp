@@ -75,12 +75,16 @@ void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element
 void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
 
 /// The near triangles as grid slots, in the same order (the triangle is sorted_triangles[k]): Eq. 1
-/// adds each one's term to the partial sum of its slot mod 4 (repulsion_force).
-void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
+/// adds each one's term to the partial sum of its slot mod 4 (repulsion_force). With `own_only`, the
+/// slots of own_element's triangles instead (the wall's mirror image, wall_mirror_force).
+void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out,
+                          bool own_only = false);
 
 /// What Eq. 1 visits in the outer shell, as grid slots in the same order: with grid.far_cells the first
-/// slot of every run (one per cell and other element), otherwise the slot of every far triangle.
-void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out);
+/// slot of every run (one per cell and other element), otherwise the slot of every far triangle; with
+/// `own_only`, those of own_element instead.
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out,
+                         bool own_only = false);
 
 // ---- geometry helpers ---------------------------------------------------------------------------------
 
@@ -219,6 +223,16 @@ Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, fl
 
 /// The container's force on vertex v. boundary.cpp.
 Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
+/// The wall as the mirror image of the element (docs/parameters.md, "Containment"): for a boundary vertex
+/// inside the container within wall_range of its nearest wall point q (`wall`, its query with the nearest
+/// point), Eq. 1 at the reflection x' = 2q − x from the element's own triangles, summed as
+/// repulsion_force sums (near slots of x' in four partials, then far slots, own_only), reflected back
+/// across the wall's tangent at q (s − 2 (s·n) n in x, y with n = (x − q)/|x − q|; t unchanged) and
+/// weighted wall_mirror · k_rpl. The reflected element is a neighbour at twice the wall distance, so the
+/// wall presses as a neighbour would. Zero otherwise, and when wall_mirror is 0. repulsion.cpp.
+Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
+                        std::int32_t v, const ContainerQuery& wall);
 
 /// Current centroid of every slice (mean of its vertices in index order), for Eq. 5. torsion.cpp.
 void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx, std::vector<float>& cy);

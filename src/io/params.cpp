@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 44> table{{
+const std::array<ParamInfo, 45> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -47,9 +47,11 @@ const std::array<ParamInfo, 44> table{{
     {"repulsion_epsilon", "forces", field<&Params::forces, &Params::Forces::repulsion_epsilon>(), 1e-12, inf,
      "ε, softening of Eq. 1", "ε = 1 (Eq. 1)"},
     {"wall_repulsion", "forces", field<&Params::forces, &Params::Forces::wall_repulsion>(), 0.0, inf,
-     "Eq. 1 terms the container's wall counts as", "not in the paper"},
+     "Eq. 1 terms the container's wall counts as from its nearest point (0.5.0: 10)", "not in the paper"},
     {"wall_range", "forces", field<&Params::forces, &Params::Forces::wall_range>(), 0.0, 1.0,
      "distance within which the wall repels", "not in the paper"},
+    {"wall_mirror", "forces", field<&Params::forces, &Params::Forces::wall_mirror>(), 0.0, inf,
+     "weight of the wall's mirror image: Eq. 1 from the element reflected in the wall (0: off)", "not in the paper"},
     {"k_edge", "forces", field<&Params::forces, &Params::Forces::k_edge>(), 0.0, inf,
      "k_edg of slice edge springs (Eq. 2)", "10 (Eq. 2)"},
     {"k_shear", "forces", field<&Params::forces, &Params::Forces::k_shear>(), 0.0, inf,

@@ -400,3 +400,29 @@ TEST_CASE("animpak pack --still: the still reference is the packing of the same 
   CHECK(scene["elements"][0]["count"] == 5);
   CHECK(run_animpak("pack --resume " + box.path("still") + " --still").code == 1);
 }
+
+TEST_CASE("animpak pack: the wall settles at about half the channel, two discs in a circle") {
+  // One channel lies between art and wall against two between two elements, so an even packing shows a
+  // wall ratio (median art-to-wall gap over median art-to-art gap) of about 0.5 (docs/quality.md,
+  // "Evenness"). The wall as the element's mirror image gives it by symmetry; the point wall of 0.4.0
+  // (wall_repulsion 10, no mirror) left 1.2 here.
+  const std::string scene = R"({"container": {"art": "circle.svg"},
+    "elements": [{"name": "disc", "art": "disc.svg", "count": 2}],
+    "seed": 1, "loop": true, "slices": 12, "params": {"offset": 0.04}})";
+  const Sandbox box("wall", scene);
+  write_bytes(box.path("disc.svg"), R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">)"
+                                    R"(<circle cx="50" cy="50" r="50" fill="#c33"/></svg>)");
+  write_bytes(box.path("circle.svg"), R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 200">)"
+                                      R"(<circle cx="100" cy="100" r="100" fill="#eee"/></svg>)");
+  const CommandResult r =
+      run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --frames 6 --format svg --size 100");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json stats = nlohmann::json::parse(bytes_of(box.path("out") + "/stats.json"));
+  const nlohmann::json& frames = stats["quality"]["frames"];
+  CHECK(frames["overlapping_pairs"] == 0);
+  CHECK(frames["element_frames_outside"] == 0);
+  const double ratio = frames["wall_ratio"]["median"].get<double>();
+  CHECK(ratio > 0.3);
+  CHECK(ratio < 0.75);
+}

@@ -266,6 +266,39 @@ TEST_CASE("forces: elements touching the container and a hole", "[equivalence][o
   for (const Params& params : {Params{}, paper_params()}) check_forces(w, params, "container");
 }
 
+TEST_CASE("forces: the wall as the element's mirror image, at the outline, a hole and a corner",
+          "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  // Slices as close in t as a scene's, so the element's own triangles are within the repulsion's reach.
+  const std::vector<float> times = {0.42f, 0.47f, 0.52f, 0.57f};
+  WorldBuilder b;
+  b.set_container({{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.7f}, {0.0f, 1.0f}}, square(0.5f, 0.4f, 0.1f)});
+  b.add_element(square_tube(0.05f, 0.5f, 0.03f, times));    // near the outline's left side
+  b.add_element(square_tube(0.5f, 0.25f, 0.04f, times));    // just below the hole
+  b.add_element(square_tube(0.93f, 0.06f, 0.03f, times));   // in a corner
+  b.add_element(square_tube(0.5f, 0.6f, 0.05f, times));     // between the hole and the notch
+  b.add_element(square_tube(0.09f, 0.55f, 0.008f, times));  // a neighbour of the first
+  const TinyWorld w = finish(b);
+  for (Params params : {Params{}, paper_params()}) {
+    params.forces.wall_mirror = 1.0;
+    params.forces.wall_range = 0.08;
+    check_forces(w, params, "mirror");
+    params.forces.wall_repulsion = 0.0;
+    params.forces.wall_mirror = 2.5;
+    check_forces(w, params, "mirror alone");
+    // Not vacuous: the mirror changes the wall's force on some vertices.
+    const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+    reference::ForceBreakdown on, off;
+    reference::step_forces(w.topo, w.state, params, grid, &on);
+    params.forces.wall_mirror = 0.0;
+    reference::step_forces(w.topo, w.state, params, grid, &off);
+    int changed = 0;
+    for (std::size_t v = 0; v < on.boundary.x.size(); ++v)
+      changed += on.boundary.x[v] != off.boundary.x[v] || on.boundary.t[v] != off.boundary.t[v];
+    CHECK(changed > 20);
+  }
+}
+
 TEST_CASE("forces: boundary edges across a reflex corner of the container, both ends inside", "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;

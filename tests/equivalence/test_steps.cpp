@@ -70,6 +70,19 @@ TEST_CASE("steps: random worlds, 20 steps each", "[equivalence][opencl]") {
   }
 }
 
+TEST_CASE("steps: random worlds with the wall as the elements' mirror image, 20 steps each", "[equivalence][opencl]") {
+  for (std::uint64_t seed = 15; seed <= 16; seed += seed_stride()) {
+    RandomWorldShape shape;
+    shape.elements = 5;
+    shape.max_radius = 0.15f;
+    const TinyWorld w = random_world(seed, shape);
+    Params params = paper_params();
+    params.forces.wall_mirror = 1.0;
+    params.forces.wall_repulsion = 0.0;
+    check_steps(w.topo, w.state, params, 20, 1, "mirror, seed " + std::to_string(seed));
+  }
+}
+
 TEST_CASE("steps: many small elements, the overlap broadphase leaving most out", "[equivalence][opencl]") {
   RandomWorldShape shape;
   shape.elements = 50;

@@ -43,36 +43,44 @@ TEST_CASE("containment: a vertex outside the container or inside a hole moves ju
 }
 
 TEST_CASE("containment: a slice whose boundary touches the wall is flagged and stops growing") {
-  const Params p = test::paper_params();
-  WorldBuilder b;
-  std::vector<float> times;
-  for (int k = 0; k <= 25; ++k) times.push_back(static_cast<float>(k) / 25.0f);
-  std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.05f, times);
-  slices[7].ring = test::square(0.95f - p.stop.stop_gap / 2, 0.5f, 0.05f);  // slice 7 within stop_gap of x = 1
-  slices[9].ring = test::square(0.97f, 0.5f, 0.05f);                        // slice 9 spills past it
-  b.add_element(slices);
-  const test::TinyWorld w = b.build();
-  const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-  const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
-  for (int s = 0; s < 26; ++s) {
-    std::uint8_t bits = 0;
-    float gap = std::numeric_limits<float>::infinity();
-    for (int v = s * 4; v < s * 4 + 4; ++v) bits |= f.contact[v], gap = std::min(gap, f.closest[v]);
-    INFO("slice " << s);
-    CHECK(((bits & contact_wall) != 0) == (s == 7 || s == 9));
-    CHECK(((bits & contact_outside) != 0) == (s == 9));
-    // Nothing else is near, so the gap is the wall's: 0.45 for the centred slices.
-    if (s != 7 && s != 9) CHECK(gap == Approx(0.45f).epsilon(1e-5));
-    if (s == 9) CHECK(gap == 0.0f);
+  // The wall's gap is the distance d to it with the point wall, and 2d, the gap to the element's mirror
+  // image, with the image (the default): either way, a slice whose gap is below stop_gap touches.
+  for (const bool mirror : {false, true}) {
+    INFO((mirror ? "mirror image" : "point wall"));
+    Params p = test::paper_params();
+    p.forces.wall_mirror = mirror ? 1.0 : 0.0;
+    const float scale = mirror ? 2.0f : 1.0f;
+    WorldBuilder b;
+    std::vector<float> times;
+    for (int k = 0; k <= 25; ++k) times.push_back(static_cast<float>(k) / 25.0f);
+    std::vector<test::TinySlice> slices = test::square_tube(0.5f, 0.5f, 0.05f, times);
+    // Slice 7's gap is half stop_gap; slice 8 is 0.45 from x = 1 then, and slice 9 spills past the wall.
+    slices[7].ring = test::square(0.95f - static_cast<float>(p.stop.stop_gap) / (2.0f * scale), 0.5f, 0.05f);
+    slices[9].ring = test::square(0.97f, 0.5f, 0.05f);
+    b.add_element(slices);
+    const test::TinyWorld w = b.build();
+    const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
+    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    for (int s = 0; s < 26; ++s) {
+      std::uint8_t bits = 0;
+      float gap = std::numeric_limits<float>::infinity();
+      for (int v = s * 4; v < s * 4 + 4; ++v) bits |= f.contact[v], gap = std::min(gap, f.closest[v]);
+      INFO("slice " << s);
+      CHECK(((bits & contact_wall) != 0) == (s == 7 || s == 9));
+      CHECK(((bits & contact_outside) != 0) == (s == 9));
+      // Nothing else is near, so the gap is the wall's: 0.45 for the centred slices (twice with the image).
+      if (s != 7 && s != 9) CHECK(gap == Approx(0.45f * scale).epsilon(1e-5));
+      if (s == 9) CHECK(gap == 0.0f);
+    }
+    SimState state = w.state;
+    Params grow = p;
+    grow.growth.growth_ratio = 100.0;
+    std::vector<std::uint8_t> changed;
+    test::grow_step(w.topo, f.contact, grow, true, state, changed);
+    CHECK(changed[7] == growth_kept);
+    CHECK(changed[9] == growth_kept);  // at g = 1 already: a spilling slice cannot shrink below the start
+    CHECK(changed[8] == growth_grew);
   }
-  SimState state = w.state;
-  Params grow = p;
-  grow.growth.growth_ratio = 100.0;
-  std::vector<std::uint8_t> changed;
-  test::grow_step(w.topo, f.contact, grow, true, state, changed);
-  CHECK(changed[7] == growth_kept);
-  CHECK(changed[9] == growth_kept);  // at g = 1 already: a spilling slice cannot shrink below the start
-  CHECK(changed[8] == growth_grew);
 }
 
 TEST_CASE("containment: a boundary edge across a reflex corner of the container counts as outside") {

@@ -127,8 +127,10 @@ TEST_CASE("boundary: Eq. 4 on a unit-square container") {
 }
 
 TEST_CASE("boundary: the wall repels a boundary vertex inside the container like Eq. 1, interior vertices not") {
-  Params p = test::paper_params();  // k_rpl 10, ε 1, wall_repulsion 10
-  p.forces.wall_range = 0.2;        // both vertices below are within reach
+  Params p = test::paper_params();  // k_rpl 10, ε 1
+  p.forces.wall_repulsion = 10.0;   // the point wall alone (0.5.0's default), not the mirror image
+  p.forces.wall_mirror = 0.0;
+  p.forces.wall_range = 0.2;  // both vertices below are within reach
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
@@ -148,6 +150,8 @@ TEST_CASE("boundary: the wall repels a boundary vertex inside the container like
 
 TEST_CASE("boundary: the wall repels only within wall_range, so a wall across the container pushes nothing") {
   Params p = test::paper_params();
+  p.forces.wall_repulsion = 10.0;  // the point wall
+  p.forces.wall_mirror = 0.0;
   WorldBuilder b;
   b.set_container({test::square(0.5f, 0.5f, 0.5f), test::square(0.5f, 0.5f, 0.125f)});
   b.add_element({{{{0.25f, 0.5f}, {0.5f, 0.9f}}, 0.5f}}, false);
@@ -161,6 +165,58 @@ TEST_CASE("boundary: the wall repels only within wall_range, so a wall across th
   p.forces.wall_range = 0.09;
   const Vec3f far1 = boundary_force(w.topo, w.state, p, 1);
   CHECK((far1.x == 0.0f && far1.y == 0.0f));
+}
+
+TEST_CASE("boundary: the wall's mirror image pushes a vertex as the element reflected in the wall would") {
+  // A: the container's left wall at x = 0.48 (twelve cells of 0.04, so the reflection maps grid cells onto
+  // grid cells) and an element 0.01 from it. B: no wall there, and the element's reflection in x = 0.48 as
+  // a second element. The mirror force on a vertex in A is the repulsion the reflection exerts in B, up
+  // to the order of the sums' terms.
+  Params p;
+  p.forces.wall_mirror = 1.0;
+  p.forces.wall_repulsion = 0.0;
+  const test::Ring ring = {{0.49f, 0.40f}, {0.55f, 0.41f}, {0.54f, 0.47f}, {0.50f, 0.46f}};
+  test::Ring reflected;
+  for (const auto& q : ring) reflected.push_back({0.96f - q[0], q[1]});
+  const std::vector<float> times = {0.3f, 0.5f, 0.7f};
+  const auto tube = [&](const test::Ring& r) {
+    std::vector<test::TinySlice> slices;
+    for (const float t : times) slices.push_back({r, t});
+    return slices;
+  };
+  WorldBuilder a;
+  a.set_container({{{0.48f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.48f, 1.0f}}});
+  a.add_element(tube(ring));
+  const test::TinyWorld wa = a.build();
+  WorldBuilder b;
+  b.add_element(tube(ring));
+  b.add_element(tube(reflected));
+  const test::TinyWorld wb = b.build();
+  const CollisionGrid ga = build_collision_grid(wa.topo, wa.state, p);
+  const CollisionGrid gb = build_collision_grid(wb.topo, wb.state, p);
+  int pushed = 0;
+  for (std::int32_t v = 0; v < wa.topo.vertex_count(); ++v) {
+    INFO("vertex " << v);
+    const ContainerQuery wall = container_query(wa.topo.container, wa.state.x[v], wa.state.y[v], true);
+    const Vec3f m = wall_mirror_force(wa.topo, wa.state, p, ga, v, wall);
+    std::vector<std::int32_t> near, far;
+    const Vec3f q{wb.state.x[v], wb.state.y[v], wb.state.t[v]};
+    repulsion_near_slots(gb, q, 0, near);
+    repulsion_far_slots(gb, q, 0, far);
+    const Vec3f r = repulsion_force(wb.topo, wb.state, p, gb, v, near, far, false).force;
+    CHECK(m.x == Approx(r.x).epsilon(1e-4).margin(1e-12));
+    CHECK(m.y == Approx(r.y).epsilon(1e-4).margin(1e-12));
+    CHECK(m.t == Approx(r.t).epsilon(1e-4).margin(1e-12));
+    pushed += m.x > 0.0f;  // away from the wall
+  }
+  CHECK(pushed >= 3);  // the vertices near the wall on every slice
+  // Added to the wall's force in the step, and off with wall_mirror 0.
+  const ContainerQuery wall = container_query(wa.topo.container, wa.state.x[4], wa.state.y[4], true);
+  const StepForces with = step_forces(wa.topo, wa.state, p, ga, nullptr);
+  p.forces.wall_mirror = 0.0;
+  CHECK(wall_mirror_force(wa.topo, wa.state, p, ga, 4, wall).x == 0.0f);
+  const StepForces without = step_forces(wa.topo, wa.state, p, ga, nullptr);
+  CHECK(with.total.x[4] > without.total.x[4]);
 }
 
 TEST_CASE("boundary: a vertex inside a hole is pulled to the hole's ring") {

@@ -70,11 +70,14 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
     CHECK(same(r, rr.force));
     // The slice gap counts the container's wall as a neighbour.
     const ContainerQuery wall = container_query(w.topo.container, q.x, q.y, true);
-    const float expected = std::min(std::sqrt(wall.distance2), rr.closest);  // nothing overlaps here
+    const float d = std::sqrt(wall.distance2);
+    const float expected = std::min(d + d, rr.closest);  // the wall's mirror image is twice as far; no overlap
     CHECK(f.closest[v] == expected);
     CHECK(same(e, spring_force(w.topo, w.state, p, v)));
     CHECK(same(tg, target_force(w.topo, w.state, p, v)));
-    CHECK(same(b, boundary_force(w.topo, w.state, p, v)));
+    const Vec3f point = boundary_force(w.topo, w.state, p, v),
+                mirror = wall_mirror_force(w.topo, w.state, p, g, v, wall);
+    CHECK(same(b, Vec3f{point.x + mirror.x, point.y + mirror.y, point.t + mirror.t}));
     CHECK(same(o, Vec3f{}));
     CHECK(same(to, torsion_force(w.topo, w.state, p, v, cx[w.topo.slice[v]], cy[w.topo.slice[v]])));
     CHECK(same(tm, temporal_force(w.topo, w.state, p, v)));

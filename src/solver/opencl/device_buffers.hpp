@@ -50,6 +50,7 @@ struct ScratchBuffers {
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;  // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;        // per-slice geometry
   cl::Buffer tangent_x, tangent_y;                                             // the curve between slices
+  cl::Buffer mirror_x, mirror_y, mirror_t;                                     // the wall's mirror image
   cl::Buffer overlap_start, overlap_elements;  // overlap broadphase: sized by the backend as it grows
   cl::Buffer proposed;                         // growth proposals
 };

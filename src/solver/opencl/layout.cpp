@@ -15,11 +15,11 @@ static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, n
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
-static_assert(sizeof(ForceParams) == 27 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+static_assert(sizeof(ForceParams) == 28 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
               offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92 &&
               offsetof(ForceParams, settle_shrink_step) == 96 && offsetof(ForceParams, interval_points) == 100 &&
-              offsetof(ForceParams, motion_curve) == 104);
+              offsetof(ForceParams, motion_curve) == 104 && offsetof(ForceParams, k_mirror) == 108);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
@@ -58,6 +58,7 @@ ForceParams force_params(const Params& params) {
   p.wall_range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
   p.interval_points = params.forces.interval_points;
   p.motion_curve = params.forces.motion_curve != 0 ? 1 : 0;
+  p.k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
   return p;
 }
 

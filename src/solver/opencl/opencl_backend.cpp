@@ -116,6 +116,7 @@ class DeviceBackend final : public OpenclBackend {
     timed(times_.forces, curve_tangents_.run(queue_, world_.vertices));
     build_overlap_grid();
     timed(times_.forces, repulsion_force_.run(queue_, boundary_count_));
+    if (mirror_) timed(times_.forces, wall_mirror_.run(queue_, boundary_count_));
     timed(times_.forces, forces_.run(queue_, world_.vertices));
     timed(times_.integrate, integrate_.run(queue_, world_.vertices));
     timed(times_.constraints, constraints_.run(queue_, world_.slices));
@@ -187,6 +188,7 @@ class DeviceBackend final : public OpenclBackend {
     curve_tangents_.run(queue_, world_.vertices);
     build_overlap_grid();
     repulsion_force_.run(queue_, boundary_count_);
+    if (mirror_) wall_mirror_.run(queue_, boundary_count_);
     forces_.run(queue_, n);
     forces_.set(0, world_);
     reference::StepForces r;
@@ -338,6 +340,13 @@ class DeviceBackend final : public OpenclBackend {
         b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.tangent_x,
         w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x,
         w.depth_y);
+    mirror_ = p.k_mirror != 0.0f;
+    wall_mirror_ = Kernel(program, "wall_mirror_force");
+    wall_mirror_.bind(grid_, p, world_, boundary_count_, boundary_buf_, x_, y_, t_, b.element, w.cell_start,
+                      w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy,
+                      w.run_ct, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
+                      opencl::container_index_info(topo_.container.index), b.container_index, w.mirror_x, w.mirror_y,
+                      w.mirror_t);
     curve_tangents_ = Kernel(program, "curve_tangents");
     curve_tangents_.bind(world_, b.slice, b.slice_begin, b.slice_element, b.element_slice_begin, b.curve_prev,
                          b.curve_next, x_, y_, t_, w.tangent_x, w.tangent_y);
@@ -350,7 +359,7 @@ class DeviceBackend final : public OpenclBackend {
                      b.tri_c, b.tri_begin, b.tri_list, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
                      w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                      opencl::container_index_info(topo_.container.index), b.container_index, w.slice_cx, w.slice_cy,
-                     fx_, fy_, ft_, closest_, contact_, breakdown_) -
+                     w.mirror_x, w.mirror_y, w.mirror_t, fx_, fy_, ft_, closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
@@ -533,10 +542,11 @@ class DeviceBackend final : public OpenclBackend {
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
       grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
-      repulsion_force_, slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_, propose_growth_,
-      grow_, rest_lengths_, statistics_;
+      repulsion_force_, wall_mirror_, slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_,
+      propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
+  bool mirror_ = false;  ///< wall_mirror is on: wall_mirror_force runs before step_forces
   reference::SliceBoxes boxes_;
   reference::OverlapGrid overlap_grid_;
   std::size_t overlap_start_capacity_ = 0, overlap_elements_capacity_ = 0;

@@ -42,6 +42,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   CurveTangents tangents;
   curve_tangents(topo, curve_links(topo), state, params.forces.motion_curve != 0, tangents);
   const float stop_gap = static_cast<float>(params.stop.stop_gap);
+  const float k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
 
   std::vector<std::int32_t> near, far;
   for (std::int32_t v = 0; v < n; ++v) {
@@ -60,7 +61,13 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f edg = spring_force(topo, state, params, v);
     const Vec3f tgt = target_force(topo, state, params, v);
-    const Vec3f bdr = boundary_force(params, wall, px, py, boundary);
+    Vec3f bdr = boundary_force(params, wall, px, py, boundary);
+    if (boundary && k_mirror != 0.0f && !overlap.overlap) {
+      // The wall's mirror image joins the wall's point force (docs/parameters.md, "Containment"); like
+      // Eq. 1, it gives way to Eq. 3 on a vertex that overlaps another element.
+      const Vec3f mirror = wall_mirror_force(topo, state, params, grid, v, wall);
+      bdr = {bdr.x + mirror.x, bdr.y + mirror.y, bdr.t + mirror.t};
+    }
     const Vec3f ovr = overlap_force(topo, state, params, v, overlap);
     const std::int32_t s = topo.slice[v];
     const Vec3f tor = torsion_force(topo, state, params, v, cx[s], cy[s]);
@@ -75,6 +82,8 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
     std::uint8_t contact = wall.inside ? 0 : contact_outside;
     if (boundary) {
       float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
+      // With the mirror image, the wall's neighbour is that image, twice as far away.
+      if (k_mirror != 0.0f) wall_gap = wall_gap + wall_gap;
       // Both ends inside, the boundary edge to the next vertex may still leave the container around a
       // reflex corner. Only when the wall is nearer than the edge is long can it cross (the crossing point
       // is on the wall): that edge counts as outside, and its vertex touches.

@@ -107,13 +107,14 @@ void for_block_cells(const CollisionGrid& grid, Vec3f q, std::int32_t r, std::in
   }
 }
 
-// The slots of other elements' triangles in those cells, in sorted order within a cell.
+// The slots of other elements' triangles in those cells (with `own_only`, of own_element's instead), in
+// sorted order within a cell.
 void collect(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::int32_t r, std::int32_t min_ring,
-             std::vector<std::int32_t>& out) {
+             std::vector<std::int32_t>& out, bool own_only = false) {
   out.clear();
   for_block_cells(grid, q, r, min_ring, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
-      if (grid.slot_element[k] != own_element) out.push_back(k);
+      if ((grid.slot_element[k] == own_element) == own_only) out.push_back(k);
     }
   });
 }
@@ -125,9 +126,9 @@ void slots_to_triangles(const CollisionGrid& grid, std::vector<std::int32_t>& sl
 
 }  // namespace
 
-void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
-                          std::vector<std::int32_t>& out) {
-  collect(grid, q, own_element, 1, 0, out);
+void repulsion_near_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out,
+                          bool own_only) {
+  collect(grid, q, own_element, 1, 0, out, own_only);
 }
 
 void near_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
@@ -140,12 +141,13 @@ void far_triangles(const CollisionGrid& grid, Vec3f q, std::int32_t own_element,
   slots_to_triangles(grid, out);
 }
 
-void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out) {
+void repulsion_far_slots(const CollisionGrid& grid, Vec3f q, std::int32_t own_element, std::vector<std::int32_t>& out,
+                         bool own_only) {
   out.clear();
   for_block_cells(grid, q, 2, 2, [&](std::int32_t c) {
     for (std::int32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1];) {
       const std::int32_t next = grid.far_cells ? grid.run_next[k] : k + 1;
-      if (grid.slot_element[k] != own_element) out.push_back(k);
+      if ((grid.slot_element[k] == own_element) == own_only) out.push_back(k);
       k = next;
     }
   });

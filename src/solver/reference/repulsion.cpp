@@ -26,17 +26,12 @@ void add_term(float ux, float uy, float ut, float eps, Vec3f& sum, float count =
   sum.t = sum.t + ut * w;
 }
 
-}  // namespace
-
-RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
-                                const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
-                                const std::vector<std::int32_t>& far, bool overlapping) {
-  RepulsionResult r;
-  if ((topo.flags[v] & vertex_boundary) == 0) return r;
-  const Vec3f x{state.x[v], state.y[v], state.t[v]};
-  const float eps = static_cast<float>(params.forces.repulsion_epsilon);
+// Eq. 1's sum at x: the near slots' exact closest points in four partials by slot mod 4, joined as
+// (p0 + p1) + (p2 + p3), then the far slots one by one; closest2 is the least squared near distance.
+Vec3f eq1_sum(const Topology& topo, const SimState& state, const CollisionGrid& grid, Vec3f x,
+              const std::vector<std::int32_t>& near, const std::vector<std::int32_t>& far, float eps, float& closest2) {
   Vec3f part[4];
-  float closest2 = std::numeric_limits<float>::infinity();
+  closest2 = std::numeric_limits<float>::infinity();
   for (const std::int32_t k : near) {
     const std::int32_t tri = grid.sorted_triangles[k];
     const std::int32_t a = topo.env_a[tri], b = topo.env_b[tri], c = topo.env_c[tri];
@@ -60,13 +55,49 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
       add_term(x.x - grid.cx[tri], x.y - grid.cy[tri], x.t - grid.ct[tri], eps, sum);
     }
   }
+  return sum;
+}
 
+}  // namespace
+
+RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
+                                const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
+                                const std::vector<std::int32_t>& far, bool overlapping) {
+  RepulsionResult r;
+  if ((topo.flags[v] & vertex_boundary) == 0) return r;
+  const Vec3f x{state.x[v], state.y[v], state.t[v]};
+  const float eps = static_cast<float>(params.forces.repulsion_epsilon);
+  float closest2 = 0.0f;
+  const Vec3f sum = eq1_sum(topo, state, grid, x, near, far, eps, closest2);
   // The closest distance feeds the stop test even while the vertex overlaps.
   r.closest = std::sqrt(closest2);
   if (overlapping) return r;
   const float k = static_cast<float>(params.forces.k_repulsion);
   r.force = {k * sum.x, k * sum.y, k * sum.t};
   return r;
+}
+
+Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
+                        std::int32_t v, const ContainerQuery& wall) {
+  const float k = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
+  if (k == 0.0f || (topo.flags[v] & vertex_boundary) == 0 || !wall.inside) return {};
+  const float range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
+  if (!(wall.distance2 > 0.0f) || !(wall.distance2 < range2)) return {};
+  const float px = state.x[v], py = state.y[v];
+  // The vertex's reflection in the wall, and Eq. 1 there from the element's own triangles: the force the
+  // mirror image of the element puts on the vertex, seen from the other side.
+  const Vec3f mirror{wall.qx + (wall.qx - px), wall.qy + (wall.qy - py), state.t[v]};
+  std::vector<std::int32_t> near, far;
+  repulsion_near_slots(grid, mirror, topo.element[v], near, true);
+  repulsion_far_slots(grid, mirror, topo.element[v], far, true);
+  float closest2 = 0.0f;
+  const Vec3f s =
+      eq1_sum(topo, state, grid, mirror, near, far, static_cast<float>(params.forces.repulsion_epsilon), closest2);
+  // Back across the wall's tangent: s − 2 (s·n) n with n = (x − q)/|x − q|, written with the unnormalised
+  // normal over its squared length.
+  const float nx = px - wall.qx, ny = py - wall.qy;
+  const float twice = 2.0f * ((s.x * nx + s.y * ny) / wall.distance2);
+  return {k * (s.x - twice * nx), k * (s.y - twice * ny), k * s.t};
 }
 
 }  // namespace animpak::reference
