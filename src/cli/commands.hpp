@@ -63,10 +63,12 @@ struct PackOptions {
   std::optional<std::filesystem::path> resume;  ///< continue from DIR/state.bin
   std::optional<std::uint64_t> seed;
   std::optional<std::uint64_t> max_iterations;
-  std::string device;               ///< empty: the default rule (first GPU, else PoCL, else the reference)
-  std::string grid_sort = "auto";   ///< auto, host or device (GridSort)
-  bool force = false;               ///< overwrite the packing already in `out`
-  bool still = false;               ///< pack the scene's still reference (still_scene_text)
+  std::string device;              ///< empty: the default rule (first GPU, else PoCL, else the reference)
+  std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
+  bool force = false;              ///< overwrite the packing already in `out`
+  bool still = false;              ///< pack the scene's still reference (still_scene_text)
+  /// a folder `pack --still` wrote: stats.json carries its coverage beside this packing's
+  std::optional<std::filesystem::path> still_reference;
   bool verbose = false;             ///< the progress line with overlaps, outside and the g range
   std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
 };
@@ -90,6 +92,7 @@ struct RenderOptions {
   bool force = false;                          ///< render with a `scene` or art that differs from the packed one
   FrameOptions frames;
   bool contact_plot = false;  ///< also draw the frames' contact functions into DIR/contact.png
+  std::optional<std::filesystem::path> still_reference;  ///< as PackOptions::still_reference
 };
 
 int render(const RenderOptions& options);

@@ -132,6 +132,9 @@ std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort,
 }  // namespace
 
 int pack(const PackOptions& options, const FrameRenderer& render_frames) {
+  // Read before the packing, so that a wrong folder is refused before minutes of work, not after.
+  std::optional<StillReference> still;
+  if (options.still_reference) still = read_still_reference(*options.still_reference);
   Checkpoint checkpoint;
   std::filesystem::path out = options.out;
   std::optional<InputSnapshot> inputs;
@@ -248,8 +251,11 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     report.quality = render_frames(world, out);
     write_stats(out / "stats.json", report);
   }
+  std::string still_line;
+  if (still && !report.quality.frames.empty())
+    still_line = add_still_reference(out / "stats.json", *still, report.quality);
   std::cerr << written_files(out, WrittenBy::pack);
-  if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality);
+  if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality) << still_line;
   return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
 }
 

@@ -283,6 +283,63 @@ std::vector<ProgressSample> read_progress(const std::filesystem::path& file) {
   return out;
 }
 
+StillReference read_still_reference(const std::filesystem::path& folder) {
+  const std::filesystem::path file = folder / "stats.json";
+  const std::string what = "--still-reference " + folder.string() + ": ";
+  const std::string todo = "; pack the scene standing still first: animpak pack SCENE --still --out " + folder.string();
+  std::ifstream in(file);
+  if (!in) throw InputError(what + "cannot read " + file.string() + todo);
+  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  if (stats.is_discarded() || !stats.is_object()) throw InputError(what + file.string() + " is not JSON" + todo);
+  const nlohmann::json* mean = nullptr;
+  if (stats.contains("quality") && stats["quality"].is_object() && stats["quality"].contains("frames")) {
+    const nlohmann::json& frames = stats["quality"]["frames"];
+    if (frames.is_object() && frames.contains("coverage") && frames["coverage"].is_object() &&
+        frames["coverage"].contains("mean"))
+      mean = &frames["coverage"]["mean"];
+  }
+  if (mean == nullptr || !mean->is_number() || !(mean->get<double>() > 0.0))
+    throw InputError(what + file.string() +
+                     " has no frame coverage (quality.frames.coverage.mean): the packing was not rendered; render "
+                     "it with animpak render " +
+                     folder.string());
+  return {folder, mean->get<double>()};
+}
+
+std::string add_still_reference(const std::filesystem::path& file, const StillReference& still,
+                                const PackingQuality& quality) {
+  nlohmann::json stats;
+  {
+    std::ifstream in(file);
+    stats = nlohmann::json::parse(in, nullptr, false);
+  }
+  if (stats.is_discarded() || !stats.is_object()) return {};
+  const QualitySummary q = summarize(quality.frames);
+  const double lowest = q.coverage_min / still.coverage, mean = q.coverage_mean / still.coverage;
+  stats["still_reference"] = {{"folder", std::filesystem::absolute(still.folder).lexically_normal().string()},
+                              {"coverage", still.coverage},
+                              {"lowest_over_still", lowest},
+                              {"mean_over_still", mean}};
+  write_json(file, stats);
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(1) << "still: the same elements standing still cover "
+       << 100.0 * still.coverage << " %; the lowest frame here covers " << std::setprecision(2) << lowest
+       << " of that, the mean " << mean << "\n";
+  return line.str();
+}
+
+std::optional<StillReference> stored_still_reference(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  if (stats.is_discarded() || !stats.is_object() || !stats.contains("still_reference")) return std::nullopt;
+  const nlohmann::json& ref = stats["still_reference"];
+  if (!ref.is_object() || !ref.contains("coverage") || !ref["coverage"].is_number() || !ref.contains("folder") ||
+      !ref["folder"].is_string() || !(ref["coverage"].get<double>() > 0.0))
+    return std::nullopt;
+  return StillReference{ref["folder"].get<std::string>(), ref["coverage"].get<double>()};
+}
+
 bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
                           const PackingQuality& quality) {
   nlohmann::json stats;

@@ -48,6 +48,27 @@ std::vector<ProgressSample> read_progress(const std::filesystem::path& file);
 bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
                           const PackingQuality& quality);
 
+/// The still reference an animated packing's coverage is judged by (docs/quality.md, "Still reference"):
+/// the mean frame coverage in FOLDER/stats.json, a folder that `pack --still` wrote.
+struct StillReference {
+  std::filesystem::path folder;
+  double coverage = 0.0;
+};
+
+/// Reads it; InputError naming the file and what to do when it is missing, not JSON, or holds no rendered
+/// frames' coverage.
+StillReference read_still_reference(const std::filesystem::path& folder);
+
+/// Adds "still_reference" to `file` (stats.json, already written): the folder, its mean coverage, and
+/// this packing's lowest and mean frame coverage over it. Returns the `still:` line to print (empty when
+/// the file is not a JSON object: it is left as it is).
+std::string add_still_reference(const std::filesystem::path& file, const StillReference& still,
+                                const PackingQuality& quality);
+
+/// The still reference `file` (stats.json) already carries, if any: a render without --still-reference
+/// keeps the comparison, its ratios taken anew for the frames it draws.
+std::optional<StillReference> stored_still_reference(const std::filesystem::path& file);
+
 /// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
 struct QualitySummary {
   int times = 0;

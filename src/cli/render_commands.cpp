@@ -192,6 +192,9 @@ class RenderingFrontend final : public Frontend {
                             "(checked against the packed scene and DIR/input/manifest.json's hashes)");
     render_cmd_->add_flag("--force", render_.force, "render with a --scene or art that differs from the packed one");
     add_frame_options(*render_cmd_, render_.frames);
+    render_cmd_->add_option("--still-reference", render_.still_reference,
+                            "a folder `pack --still` wrote for this scene: stats.json then carries its coverage "
+                            "beside these frames', and a `still:` line compares them");
     render_cmd_->add_flag("--contact-plot", render_.contact_plot,
                           "also draw every frame's spherical contact function H(r) into DIR/contact.png");
 
@@ -236,6 +239,9 @@ class RenderingFrontend final : public Frontend {
 }  // namespace
 
 int render(const RenderOptions& options) {
+  // Read first, so that a wrong folder is refused before the frames are drawn.
+  std::optional<StillReference> still;
+  if (options.still_reference) still = read_still_reference(*options.still_reference);
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
   LoadedWorld loaded =
       world_from_checkpoint(checkpoint, true, packed_scene(options.dir, checkpoint, options.scene, options.force));
@@ -249,8 +255,11 @@ int render(const RenderOptions& options) {
   if (options.contact_plot) {
     write_contact_plot(quality.frames, options.dir / "contact.png");
   }
+  if (!still) still = stored_still_reference(stats);
+  std::string still_line;
+  if (still && !quality.frames.empty()) still_line = add_still_reference(stats, *still, quality);
   std::cerr << written_files(options.dir, WrittenBy::render);
-  std::cout << quality_lines(quality);
+  std::cout << quality_lines(quality) << still_line;
   return 0;
 }
 

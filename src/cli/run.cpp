@@ -42,6 +42,9 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_flag("--still", cl.pack.still,
                         "pack the same elements standing still (no animation, guided elements as ordinary copies, "
                         "at most 12 slices): the reference an animated packing's coverage is judged against");
+  cl.pack_cmd->add_option("--still-reference", cl.pack.still_reference,
+                          "a folder `pack --still` wrote for this scene: stats.json then carries its coverage "
+                          "beside this packing's, and a `still:` line compares them");
   cl.pack_cmd->add_flag("--verbose", cl.pack.verbose,
                         "progress with the overlapping and outside vertex counts and the range of g");
   cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");

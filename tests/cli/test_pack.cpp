@@ -426,3 +426,38 @@ TEST_CASE("animpak pack: the wall settles at about half the channel, two discs i
   CHECK(ratio > 0.3);
   CHECK(ratio < 0.75);
 }
+
+TEST_CASE("animpak pack/render --still-reference: stats.json carries the still packing's coverage beside the frames'") {
+  const Sandbox box("still-ref", animpak::test::star_scene(3, 8, 2));
+  const std::string frames = " --max-iterations 30 --frames 4 --format svg --size 64";
+  // A folder without a rendered still packing is refused before the packing starts, naming what to do.
+  const CommandResult missing = run_animpak("pack " + box.scene() + " --out " + box.path("a") + frames +
+                                            " --still-reference " + box.path("none"));
+  CHECK(missing.code == 2);
+  CHECK_THAT(missing.err, Contains("--still-reference") && Contains("--still --out"));
+  CHECK_FALSE(fs::exists(box.path("a") + "/state.bin"));
+  REQUIRE(run_animpak("pack " + box.scene() + " --still --out " + box.path("still") + frames).code == 0);
+  const CommandResult r = run_animpak("pack " + box.scene() + " --out " + box.path("a") + frames +
+                                      " --still-reference " + box.path("still"));
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json still = nlohmann::json::parse(bytes_of(box.path("still") + "/stats.json"));
+  const nlohmann::json stats = nlohmann::json::parse(bytes_of(box.path("a") + "/stats.json"));
+  const double still_mean = still["quality"]["frames"]["coverage"]["mean"].get<double>();
+  const nlohmann::json& ref = stats["still_reference"];
+  CHECK(ref["coverage"].get<double>() == still_mean);
+  CHECK(ref["lowest_over_still"].get<double>() ==
+        Approx(stats["quality"]["frames"]["coverage"]["min"].get<double>() / still_mean));
+  CHECK(ref["mean_over_still"].get<double>() ==
+        Approx(stats["quality"]["frames"]["coverage"]["mean"].get<double>() / still_mean));
+  CHECK_THAT(r.out, Contains("still: the same elements standing still cover"));
+  // A render keeps the comparison, its ratios taken for the frames it draws.
+  const CommandResult again = run_animpak("render " + box.path("a") + " --frames 3 --format svg --size 64");
+  REQUIRE(again.code == 0);
+  CHECK_THAT(again.out, Contains("still:"));
+  const nlohmann::json rendered = nlohmann::json::parse(bytes_of(box.path("a") + "/stats.json"));
+  CHECK(rendered["still_reference"]["coverage"].get<double>() == still_mean);
+  CHECK(rendered["still_reference"]["lowest_over_still"].get<double>() ==
+        Approx(rendered["quality"]["frames"]["coverage"]["min"].get<double>() / still_mean));
+  CHECK(rendered["quality"]["frames"]["times"] == 3);
+}
