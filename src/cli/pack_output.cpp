@@ -286,11 +286,12 @@ std::vector<ProgressSample> read_progress(const std::filesystem::path& file) {
 StillReference read_still_reference(const std::filesystem::path& folder) {
   const std::filesystem::path file = folder / "stats.json";
   const std::string what = "--still-reference " + folder.string() + ": ";
-  const std::string todo = "; pack the scene standing still first: animpak pack SCENE --still --out " + folder.string();
+  const std::string remedy =
+      "; pack the scene standing still first: animpak pack SCENE --still --out " + folder.string();
   std::ifstream in(file);
-  if (!in) throw InputError(what + "cannot read " + file.string() + todo);
+  if (!in) throw InputError(what + "cannot read " + file.string() + remedy);
   const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
-  if (stats.is_discarded() || !stats.is_object()) throw InputError(what + file.string() + " is not JSON" + todo);
+  if (stats.is_discarded() || !stats.is_object()) throw InputError(what + file.string() + " is not JSON" + remedy);
   const nlohmann::json* mean = nullptr;
   if (stats.contains("quality") && stats["quality"].is_object() && stats["quality"].contains("frames")) {
     const nlohmann::json& frames = stats["quality"]["frames"];
