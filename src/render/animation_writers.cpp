@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 #include "animpak/error.hpp"
 #include "animpak/version.hpp"
@@ -70,9 +71,9 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
   const double tolerance = stroke_tolerance(world, element, out);
   if (tolerance == 0) return;
   std::vector<double> frames, scales;
-  for (std::size_t k = 0; k + 1 < keys.frames.size(); ++k) {
-    frames.push_back(keys.frames[k]), scales.push_back(keys.stroke_scales[k]);
-    const double a = keys.frames[k], b = keys.frames[k + 1];
+  for (std::size_t k = 0; k + 1 < keys.stroke_frames.size(); ++k) {
+    frames.push_back(keys.stroke_frames[k]), scales.push_back(keys.stroke_scales[k]);
+    const double a = keys.stroke_frames[k], b = keys.stroke_frames[k + 1];
     const double sa = keys.stroke_scales[k], sb = keys.stroke_scales[k + 1];
     std::vector<double> inner_frames, inner_scales;
     bool straight = true;
@@ -85,7 +86,7 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
     frames.insert(frames.end(), inner_frames.begin(), inner_frames.end());
     scales.insert(scales.end(), inner_scales.begin(), inner_scales.end());
   }
-  frames.push_back(keys.frames.back()), scales.push_back(keys.stroke_scales.back());
+  frames.push_back(keys.stroke_frames.back()), scales.push_back(keys.stroke_scales.back());
   keys.stroke_frames = std::move(frames), keys.stroke_scales = std::move(scales);
 }
 
@@ -117,50 +118,124 @@ int key_parts(const World& world, const SimState& state, int element, double ta,
   return most;
 }
 
-// Which of the candidate times (increasing, with the element's positions there) become keys: the first
-// and the last, and between two keys the candidate farthest from their straight line, recursively, until
-// every candidate lies within `tolerance` (in the positions' units) of the line between the keys around
-// it (Ramer–Douglas–Peucker in time, every vertex of the element at once). Slice times are candidates
-// too, but a slice where the motion runs straight on needs no key.
-void keep_keys(const std::vector<double>& times, const std::vector<std::vector<Vec2>>& at, std::size_t a, std::size_t b,
-               double tolerance, std::vector<char>& keep) {
-  if (b <= a + 1) return;
+// The farthest any point of `at` (a path's points at each candidate time) strays, at the candidates
+// between a and b, from where a player puts it with keys at a and b and `ease` between them; stops
+// counting once past `enough`.
+double segment_error(const std::vector<double>& times, const std::vector<std::vector<Vec2>>& at, std::size_t a,
+                     std::size_t b, const Ease& ease, double enough) {
   double worst = 0.0;
-  std::size_t worst_at = a;
-  for (std::size_t c = a + 1; c < b; ++c) {
-    const double w = (times[c] - times[a]) / (times[b] - times[a]);
+  for (std::size_t c = a + 1; c < b && worst <= enough; ++c) {
+    const double e = ease.at((times[c] - times[a]) / (times[b] - times[a]));
     for (std::size_t v = 0; v < at[c].size(); ++v) {
-      const Vec2 line = at[a][v] + (at[b][v] - at[a][v]) * w;
-      const double d = std::hypot(at[c][v].x - line.x, at[c][v].y - line.y);
-      if (d > worst) worst = d, worst_at = c;
+      const Vec2 line = at[a][v] + (at[b][v] - at[a][v]) * e;
+      worst = std::max(worst, std::hypot(at[c][v].x - line.x, at[c][v].y - line.y));
     }
   }
-  if (worst <= tolerance) return;
-  keep[worst_at] = 1;
-  keep_keys(times, at, a, worst_at, tolerance, keep);
-  keep_keys(times, at, worst_at, b, tolerance, keep);
+  return worst;
+}
+
+// Easing parameters as written (Lottie and SMIL alike take them to four decimals).
+double ease_decimals(double y) { return std::round(y * 1e4) / 1e4; }
+
+// Whether keys at candidates a and b carry the path within `tolerance` of its curve at every candidate
+// between, with straight timing or else with the timing curve fitted to the share of the way each
+// candidate lies along the keys' line (least squares over the path's points, then the two control values
+// by least squares, kept in [0, 1] as SMIL requires); `ease` is set to the one that does.
+bool segment_fits(const std::vector<double>& times, const std::vector<std::vector<Vec2>>& at, std::size_t a,
+                  std::size_t b, double tolerance, Ease& ease) {
+  if (segment_error(times, at, a, b, Ease{}, tolerance) <= tolerance) {
+    ease = Ease{};
+    return true;
+  }
+  if (b < a + 3) return false;  // one candidate between: no fit to speak of
+  double along = 0.0;
+  for (std::size_t v = 0; v < at[a].size(); ++v) along += dot(at[b][v] - at[a][v], at[b][v] - at[a][v]);
+  if (along <= 0.0) return false;
+  // Normal equations of e(s) − s³ = 3(1−s)²s·y1 + 3(1−s)s²·y2 against each candidate's share of the way.
+  double m11 = 0, m12 = 0, m22 = 0, r1 = 0, r2 = 0;
+  for (std::size_t c = a + 1; c < b; ++c) {
+    const double s = (times[c] - times[a]) / (times[b] - times[a]);
+    double share = 0.0;
+    for (std::size_t v = 0; v < at[a].size(); ++v) share += dot(at[c][v] - at[a][v], at[b][v] - at[a][v]);
+    share /= along;
+    const double f1 = 3 * (1 - s) * (1 - s) * s, f2 = 3 * (1 - s) * s * s, r = share - s * s * s;
+    m11 += f1 * f1, m12 += f1 * f2, m22 += f2 * f2, r1 += f1 * r, r2 += f2 * r;
+  }
+  const double det = m11 * m22 - m12 * m12;
+  if (std::abs(det) <= 1e-12 * std::max(1.0, m11 * m22)) return false;
+  const Ease fitted{ease_decimals(std::clamp((r1 * m22 - r2 * m12) / det, 0.0, 1.0)),
+                    ease_decimals(std::clamp((r2 * m11 - r1 * m12) / det, 0.0, 1.0)), false};
+  if (segment_error(times, at, a, b, fitted, tolerance) > tolerance) return false;
+  ease = fitted;
+  return true;
+}
+
+// A path's keys among the candidate times (increasing, with the path's points at each): from each key, the
+// farthest candidate that segment_fits reaches becomes the next (found by doubling the reach, then halving
+// the gap between the last that fits and the first that does not), so a path that moves straight on, or
+// eases along its line, needs no key in between. The first and the last candidates are keys.
+std::vector<std::pair<std::size_t, Ease>> path_keys(const std::vector<double>& times,
+                                                    const std::vector<std::vector<Vec2>>& at, double tolerance) {
+  const std::size_t n = times.size();
+  std::vector<std::pair<std::size_t, Ease>> keys{{0, Ease{}}};
+  Ease ease;
+  for (std::size_t a = 0; a + 1 < n;) {
+    std::size_t good = a + 1, bad = n;
+    Ease good_ease;
+    for (std::size_t reach = 2; good + 1 < n; reach *= 2) {
+      const std::size_t b = std::min(a + reach, n - 1);
+      if (!segment_fits(times, at, a, b, tolerance, ease)) {
+        bad = b;
+        break;
+      }
+      good = b, good_ease = ease;
+    }
+    while (bad < n && bad - good > 1) {
+      const std::size_t mid = good + (bad - good) / 2;
+      if (segment_fits(times, at, a, mid, tolerance, ease))
+        good = mid, good_ease = ease;
+      else
+        bad = mid;
+    }
+    keys.emplace_back(good, good_ease);
+    a = good;
+  }
+  return keys;
 }
 
 }  // namespace
 
+ElementKeys still_keys(const ArtPoints& points) {
+  ElementKeys keys;
+  for (const auto& lines : points) keys.paths.push_back({{0.0}, {lines}, {}});
+  keys.stroke_frames = {0.0}, keys.stroke_scales = {1.0};
+  return keys;
+}
+
 // Frame i shows t = i / N when looping, i / (N − 1) otherwise (frame_times). Every art point is a fixed
 // barycentric combination of three vertices of one triangle (replay_art), and the art follows the
-// vertices' curve between slices (element_at): keys where the art's points need them for the player's
-// straight line between keys to stay within the tolerance of the curve (keep_keys). With straight lines
-// between slices (motion_curve 0) the keys at the slices are the motion itself.
+// vertices' curve between slices (element_at): each path is keyed where its points need it for the
+// player's line between keys, with the key's easing, to stay within the tolerance of the curve
+// (path_keys). With straight lines between slices (motion_curve 0) the keys at the slices are the motion
+// itself, shared by every path.
 // The first slice is at t = 0 and the last at t = 1 (the end-to-end constraint), so linear keys span the
 // document, the last at frame N when looping.
 ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out) {
   ElementKeys keys;
-  auto add = [&](double frame, const std::vector<Vec2>& positions) {
-    const ElementArt art = element_art(world, element, positions);
-    keys.frames.push_back(frame), keys.points.push_back(art.points);
+  // A key of every path, and of the stroke, at `frame`.
+  auto add = [&](double frame, const ElementArt& art) {
+    keys.paths.resize(art.points.size());
+    for (std::size_t p = 0; p < art.points.size(); ++p) {
+      PathKeys& path = keys.paths[p];
+      if (!path.frames.empty()) path.ease.emplace_back();
+      path.frames.push_back(frame), path.lines.push_back(art.points[p]);
+    }
     keys.stroke_frames.push_back(frame), keys.stroke_scales.push_back(art.stroke_scale);
   };
   const int frames = out.count;
   if (out.interpolation == Interpolation::hold || frames == 1) {
     const std::vector<double> times = frame_times(frames, world.loop);
-    for (int i = 0; i < frames; ++i) add(i, element_at(world, state, element, times[i]));
+    for (int i = 0; i < frames; ++i) add(i, element_art(world, element, element_at(world, state, element, times[i])));
     return keys;
   }
   const ElementInstance& inst = world.elements[element];
@@ -184,13 +259,8 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   // in which chords stay within the tolerance (key_parts; at least 8), so that checking the candidates
   // checks the curve.
   std::vector<double> times;
-  std::vector<std::vector<Vec2>> at, art;  // the slice vertices and the art's points, at each candidate
-  const auto flat_art = [&](const std::vector<Vec2>& vertices) {
-    std::vector<Vec2> points;
-    for (const auto& path : element_art(world, element, vertices).points)
-      for (const auto& line : path) points.insert(points.end(), line.begin(), line.end());
-    return points;
-  };
+  std::vector<ElementArt> art;  // the art at each candidate
+  std::vector<char> slice;      // whether the candidate is a slice
   std::vector<Vec2> positions(P);
   for (int s = 0; s < lib.slice_count; ++s) {
     const int first = inst.vertex_begin + s * P;
@@ -202,20 +272,34 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
       const int candidates = std::max(8, 2 * key_parts(world, state, element, before, t, tolerance));
       for (int j = 1; j < candidates; ++j) {
         const double tj = before + (t - before) * j / candidates;
-        if (frame_of(tj) > frame_of(times.back()) && frame_of(tj) < frame_of(t))
-          times.push_back(tj), at.push_back(element_at(world, state, element, tj)), art.push_back(flat_art(at.back()));
+        if (frame_of(tj) > frame_of(times.back()) && frame_of(tj) < frame_of(t)) {
+          times.push_back(tj), slice.push_back(0);
+          art.push_back(element_art(world, element, element_at(world, state, element, tj)));
+        }
       }
     }
     for (int v = 0; v < P; ++v) positions[v] = {state.x[first + v], state.y[first + v]};
-    times.push_back(t), at.push_back(positions), art.push_back(flat_art(positions));
+    times.push_back(t), slice.push_back(1), art.push_back(element_art(world, element, positions));
   }
-  std::vector<char> keep(times.size(), cubic ? 0 : 1);
-  keep.front() = keep.back() = 1;
-  if (cubic) keep_keys(times, art, 0, times.size() - 1, tolerance, keep);
-  for (std::size_t k = 0; k < times.size(); ++k)
-    if (keep[k]) add(frame_of(times[k]), at[k]);
+  if (!cubic) {
+    for (std::size_t k = 0; k < times.size(); ++k) add(frame_of(times[k]), art[k]);
+  } else {
+    keys.paths.resize(art.front().points.size());
+    for (std::size_t p = 0; p < keys.paths.size(); ++p) {
+      std::vector<std::vector<Vec2>> at(times.size());
+      for (std::size_t k = 0; k < times.size(); ++k)
+        for (const auto& line : art[k].points[p]) at[k].insert(at[k].end(), line.begin(), line.end());
+      PathKeys& path = keys.paths[p];
+      for (const auto& [k, ease] : path_keys(times, at, tolerance)) {
+        if (!path.frames.empty()) path.ease.push_back(ease);
+        path.frames.push_back(frame_of(times[k])), path.lines.push_back(art[k].points[p]);
+      }
+    }
+    for (std::size_t k = 0; k < times.size(); ++k)
+      if (slice[k]) keys.stroke_frames.push_back(frame_of(times[k])), keys.stroke_scales.push_back(art[k].stroke_scale);
+  }
   // A document that does not loop shows its last slice through its last frame, up to op = N.
-  if (keys.frames.back() < frames) add(frames, positions);
+  if (keys.stroke_frames.back() < frames) add(frames, art.back());
   add_stroke_keys(world, state, element, out, frames_per_unit, keys);
   return keys;
 }
@@ -254,18 +338,25 @@ std::string shape_value(const std::vector<Vec2>& pixels, bool closed, int decima
 }
 
 // Keyframes of one property, value(k) at frames[k]. Linear keys ease linearly (a straight line between two
-// keys), hold keys ("h": 1) show their value until the next. Keys carry no end value ("e"): each interval
-// ends on the next key's start, as Bodymovin 5.5 and later write it, and players draw such a file exactly
-// as one with end values. `shape` properties take scalar easing, others one entry per dimension.
+// keys) unless `ease` gives the interval a timing curve (Ease); hold keys ("h": 1) show their value until
+// the next. Keys carry no end value ("e"): each interval ends on the next key's start, as Bodymovin 5.5 and
+// later write it, and players draw such a file exactly as one with end values. `shape` properties take
+// scalar easing, others one entry per dimension.
 template <class Value>
 void write_keyframes(std::ostream& json, const std::vector<double>& frames, Interpolation interpolation, bool shape,
-                     Value value) {
+                     Value value, const std::vector<Ease>& ease = {}) {
   if (frames.size() == 1) {
     json << still(value(0));
     return;
   }
-  const std::string easing = shape ? "\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}"
+  const std::string linear = shape ? "\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}"
                                    : "\"i\":{\"x\":[1],\"y\":[1]},\"o\":{\"x\":[0],\"y\":[0]}";
+  const auto easing = [&](std::size_t k) {
+    if (k >= ease.size() || ease[k].linear) return linear;
+    const std::string y1 = number(ease[k].y1, 4), y2 = number(ease[k].y2, 4);
+    return shape ? "\"i\":{\"x\":0.6667,\"y\":" + y2 + "},\"o\":{\"x\":0.3333,\"y\":" + y1 + "}"
+                 : "\"i\":{\"x\":[0.6667],\"y\":[" + y2 + "]},\"o\":{\"x\":[0.3333],\"y\":[" + y1 + "]}";
+  };
   const bool hold = interpolation == Interpolation::hold;
   json << "{\"a\":1,\"k\":[";
   for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -273,7 +364,7 @@ void write_keyframes(std::ostream& json, const std::vector<double>& frames, Inte
     if (hold)
       json << ",\"h\":1";
     else if (k + 1 < frames.size())
-      json << "," << easing;
+      json << "," << easing(k);
     json << "}";
   }
   json << "]}";
@@ -323,13 +414,26 @@ class LottieLayers {
   }
 
   // One shape layer of art moving through `keys`; within it, too, the first item is on top: the paths
-  // from the last-painted one down.
+  // from the last-painted one down. The layer sits at the least corner of its points over the whole
+  // animation, rounded to the decimals kept, and the points are written from there: shorter numbers, the
+  // same pixels.
   void art_layer(const std::string& name, const ArtShape& art, const ElementKeys& keys) {
-    head(4, name);
+    Vec2 least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    for (const PathKeys& path : keys.paths)
+      for (const auto& lines : path.lines)
+        for (const auto& line : lines)
+          for (Vec2 v : line) {
+            const Vec2 pixel = fit_.to_pixel(v);
+            least = {std::min(least.x, pixel.x), std::min(least.y, pixel.y)};
+          }
+    const double steps = std::pow(10.0, decimals_);
+    origin_ = std::isfinite(least.x) ? Vec2{std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps}
+                                     : Vec2{0, 0};
+    head(4, name, origin_);
     json_ << ",\"shapes\":[";
     for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
       json_ << (p + 1 < int(art.paths.size()) ? ",\n" : "\n");
-      path_group(art.paths[p], p, keys);
+      path_group(art.paths[p], keys.paths[p], keys);
     }
     json_ << "]";
     tail();
@@ -342,25 +446,36 @@ class LottieLayers {
   }
 
  private:
-  void head(int type, const std::string& name) {
+  // A layer's head; its transform the identity, or a move to `at`.
+  void head(int type, const std::string& name, Vec2 at = {0, 0}) {
     json_ << (index_ ? ",\n" : "\n");
     json_ << "{\"ddd\":0,\"ind\":" << ++index_ << ",\"ty\":" << type << ",\"nm\":" << json_string(name)
-          << ",\"sr\":1,\"ks\":" << identity_layer_transform << ",\"ao\":0";
+          << ",\"sr\":1,\"ks\":";
+    if (at.x == 0 && at.y == 0)
+      json_ << identity_layer_transform;
+    else
+      json_ << "{\"o\":{\"a\":0,\"k\":100},\"r\":{\"a\":0,\"k\":0},\"p\":{\"a\":0,\"k\":[" << number(at.x, decimals_)
+            << "," << number(at.y, decimals_)
+            << ",0]},\"a\":{\"a\":0,\"k\":[0,0,0]},\"s\":{\"a\":0,\"k\":[100,100,100]}}";
+    json_ << ",\"ao\":0";
   }
   void tail() { json_ << ",\"ip\":0,\"op\":" << frames_ << ",\"st\":0,\"bm\":0}"; }
 
   // A group's fill and stroke paint every shape above them in it as one path, so holes and even–odd
   // fills come out as in the frames; the later-painted of the two comes first.
-  void path_group(const ArtPath& path, int p, const ElementKeys& keys) {
+  void path_group(const ArtPath& path, const PathKeys& path_keys, const ElementKeys& keys) {
     json_ << "{\"ty\":\"gr\",\"nm\":" << json_string(path.id) << ",\"it\":[";
     for (int q = 0; q < int(path.polylines.size()); ++q) {
       if (!drawn(path.polylines[q])) continue;
       json_ << "{\"ty\":\"sh\",\"nm\":\"polyline " << q << "\",\"ks\":";
-      write_keyframes(json_, keys.frames, interpolation_, true, [&](std::size_t k) {
-        std::vector<Vec2> pixels = keys.points[k][p][q];
-        for (Vec2& v : pixels) v = fit_.to_pixel(v);
-        return shape_value(pixels, path.polylines[q].closed, decimals_);
-      });
+      write_keyframes(
+          json_, path_keys.frames, interpolation_, true,
+          [&](std::size_t k) {
+            std::vector<Vec2> pixels = path_keys.lines[k][q];
+            for (Vec2& v : pixels) v = fit_.to_pixel(v) - origin_;
+            return shape_value(pixels, path.polylines[q].closed, decimals_);
+          },
+          path_keys.ease);
       json_ << "},";
     }
     const bool fills = path.fill.enabled, strokes = path.stroke.enabled && path.stroke_width > 0;
@@ -392,6 +507,7 @@ class LottieLayers {
   Interpolation interpolation_;
   int decimals_, width_ = 0, height_ = 0, frames_ = 0, index_ = 0;
   PixelFit fit_;
+  Vec2 origin_{0, 0};  // where the art layer being written sits
 };
 
 }  // namespace
@@ -409,7 +525,7 @@ void write_lottie(const World& world, const SimState& state, const FrameOutput& 
     check_written(json, file);
   }
   if (out.style.container == ContainerDrawing::fill)
-    layers.art_layer("container", world.container.art, {{0.0}, {own_points(world.container.art)}, {0.0}, {1.0}});
+    layers.art_layer("container", world.container.art, still_keys(own_points(world.container.art)));
   if (out.style.background.a > 0) layers.background(out.style.background);
   layers.document_tail();
   check_written(json, file);
@@ -443,13 +559,14 @@ SvgView svg_view(const World& world, const FrameOutput& out) {
   return view;
 }
 
+// A path's d, its points in the art's coordinates less `origin`.
 void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path,
-                         const std::vector<std::vector<Vec2>>& lines) {
+                         const std::vector<std::vector<Vec2>>& lines, Vec2 origin = {0, 0}) {
   bool first = true;
   for (std::size_t q = 0; q < path.polylines.size(); ++q) {
     if (!drawn(path.polylines[q])) continue;
     for (std::size_t k = 0; k < lines[q].size(); ++k) {
-      const Vec2 a = view.frame.to_art(lines[q][k]);
+      const Vec2 a = view.frame.to_art(lines[q][k]) - origin;
       svg << (k ? " L" : (first ? "M" : " M")) << view.n(a.x) << ' ' << view.n(a.y);
     }
     if (path.polylines[q].closed) svg << " Z";
@@ -501,45 +618,78 @@ void write_svg_head(std::ostream& svg, const SvgView& view, const World& world, 
 }
 
 // One cycle lasts N / fps seconds and frame i shows at i / fps, so a key at frame f has keyTime f / N.
-// Linear keys end at frame N (element_keys), as calcMode="linear" needs a last keyTime of 1; held ones
-// (calcMode="discrete") are the N frames.
-std::string smil_timing(const std::vector<double>& frames, int count, double fps, Interpolation interpolation) {
+// Linear keys end at frame N (element_keys), as calcMode="linear" needs a last keyTime of 1; where an
+// interval eases (Ease), calcMode="spline" with each interval's keySplines, "0 0 1 1" for a straight one.
+// Held keys (calcMode="discrete") are the N frames.
+std::string smil_timing(const std::vector<double>& frames, int count, double fps, Interpolation interpolation,
+                        const std::vector<Ease>& ease = {}) {
   std::string key_times;
   for (double f : frames) {
     if (!key_times.empty()) key_times += ';';
     key_times += number(f / count, key_decimals + 6);
   }
-  return "dur=\"" + number(count / fps, 6) + "s\" repeatCount=\"indefinite\" calcMode=\"" +
-         (interpolation == Interpolation::linear ? "linear" : "discrete") + "\" keyTimes=\"" + key_times + "\"";
+  const bool eased = std::any_of(ease.begin(), ease.end(), [](const Ease& e) { return !e.linear; });
+  std::string mode = interpolation == Interpolation::linear ? (eased ? "spline" : "linear") : "discrete";
+  std::string timing = "dur=\"" + number(count / fps, 6) + "s\" repeatCount=\"indefinite\" calcMode=\"" + mode +
+                       "\" keyTimes=\"" + key_times + "\"";
+  if (eased && interpolation == Interpolation::linear) {
+    timing += " keySplines=\"";
+    for (std::size_t k = 0; k < ease.size(); ++k)
+      timing +=
+          (k ? ";" : "") + (ease[k].linear ? std::string("0 0 1 1")
+                                           : "0.3333 " + number(ease[k].y1, 4) + " 0.6667 " + number(ease[k].y2, 4));
+    timing += "\"";
+  }
+  return timing;
 }
 
 // A path's own d and stroke width are its first key's, what a reader without SMIL shows; <animate> moves
 // them through the keys.
-void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& path, int p, const ElementKeys& keys,
-                         const std::string& shape_timing, const std::string& stroke_timing) {
+void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& path, const PathKeys& keys,
+                         const ElementKeys& element, Vec2 origin, const std::string& shape_timing,
+                         const std::string& stroke_timing) {
   const bool strokes = path.stroke.enabled && path.stroke_width > 0;
   auto stroke_width = [&](std::size_t k) {
-    return view.n(path.stroke_width * keys.stroke_scales[k] / view.frame.scale);
+    return view.n(path.stroke_width * element.stroke_scales[k] / view.frame.scale);
   };
   svg << "<path d=\"";
-  write_svg_path_data(svg, view, path, keys.points[0][p]);
+  write_svg_path_data(svg, view, path, keys.lines[0], origin);
   svg << "\"" << svg_paint(path, stroke_width(0));
-  if (keys.frames.size() == 1) {
+  if (keys.frames.size() == 1 && element.stroke_frames.size() == 1) {
     svg << "/>\n";
     return;
   }
-  svg << ">\n<animate attributeName=\"d\" " << shape_timing << " values=\"";
-  for (std::size_t k = 0; k < keys.frames.size(); ++k) {
-    if (k) svg << ';';
-    write_svg_path_data(svg, view, path, keys.points[k][p]);
+  svg << ">\n";
+  if (keys.frames.size() > 1) {
+    svg << "<animate attributeName=\"d\" " << shape_timing << " values=\"";
+    for (std::size_t k = 0; k < keys.frames.size(); ++k) {
+      if (k) svg << ';';
+      write_svg_path_data(svg, view, path, keys.lines[k], origin);
+    }
+    svg << "\"/>\n";
   }
-  svg << "\"/>\n";
-  if (strokes) {
+  if (strokes && element.stroke_frames.size() > 1) {
     svg << "<animate attributeName=\"stroke-width\" " << stroke_timing << " values=\"";
-    for (std::size_t k = 0; k < keys.stroke_frames.size(); ++k) svg << (k ? ";" : "") << stroke_width(k);
+    for (std::size_t k = 0; k < element.stroke_frames.size(); ++k) svg << (k ? ";" : "") << stroke_width(k);
     svg << "\"/>\n";
   }
   svg << "</path>\n";
+}
+
+// The least corner of an element's art over all its keys, in the art's coordinates, rounded down to the
+// decimals written: the element's group is moved there and its points written from it.
+Vec2 svg_origin(const SvgView& view, const ElementKeys& keys) {
+  Vec2 least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (const PathKeys& path : keys.paths)
+    for (const auto& lines : path.lines)
+      for (const auto& line : lines)
+        for (Vec2 v : line) {
+          const Vec2 a = view.frame.to_art(v);
+          least = {std::min(least.x, a.x), std::min(least.y, a.y)};
+        }
+  if (!std::isfinite(least.x)) return {0, 0};
+  const double steps = std::pow(10.0, view.decimals);
+  return {std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps};
 }
 
 }  // namespace
@@ -553,11 +703,15 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
   for (int e = 0; e < int(world.elements.size()); ++e) {
     const ArtShape& art = world.library[world.elements[e].library].art.art;
     const ElementKeys keys = element_keys(world, state, e, out);
-    const std::string shape_timing = smil_timing(keys.frames, out.count, out.fps, out.interpolation),
-                      stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
-    svg << "<g id=\"" << xml_escaped(ids[e]) << "\">\n";
-    for (int p = 0; p < int(art.paths.size()); ++p)
-      write_animated_path(svg, view, art.paths[p], p, keys, shape_timing, stroke_timing);
+    const std::string stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
+    const Vec2 origin = svg_origin(view, keys);
+    svg << "<g id=\"" << xml_escaped(ids[e]) << "\" transform=\"translate(" << view.n(origin.x) << ' '
+        << view.n(origin.y) << ")\">\n";
+    for (int p = 0; p < int(art.paths.size()); ++p) {
+      const PathKeys& path = keys.paths[p];
+      write_animated_path(svg, view, art.paths[p], path, keys, origin,
+                          smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease), stroke_timing);
+    }
     svg << "</g>\n";
     check_written(svg, file);
   }

@@ -21,18 +21,42 @@ std::vector<std::string> element_ids(const World& world);
 /// stroke (`stroke_width` wide, round joins and caps as draw_art strokes) and paint order.
 std::string svg_paint(const ArtPath& path, const std::string& stroke_width);
 
-/// The keys of one element's animation, in frames of the document (frame i is frames/frame_i.png),
-/// increasing: its art's points at `frames`, its stroke scale at `stroke_frames` (the same frames and, where
-/// the scale is not straight between two slices, the frames between them).
-struct ElementKeys {
+/// How a player moves a path between two keys: from the first key's points towards the next's along the
+/// straight line between them, the share e(s) of the way at the share s of the interval, with
+/// e(s) = 3(1−s)²s·y1 + 3(1−s)s²·y2 + s³ (a cubic Bézier timing curve with control points (1/3, y1) and
+/// (2/3, y2), Lottie's key easing and SMIL's keySplines alike). (1/3, 2/3) is e(s) = s: linear.
+struct Ease {
+  double y1 = 1.0 / 3.0, y2 = 2.0 / 3.0;
+  bool linear = true;
+  double at(double s) const {
+    return linear ? s : 3 * (1 - s) * (1 - s) * s * y1 + 3 * (1 - s) * s * s * y2 + s * s * s;
+  }
+};
+
+/// The keys of one art path: its polylines' points at `frames`, increasing, in frames of the document
+/// (frame i is frames/frame_i.png), and the easing of each interval between two keys (ease[k] leads from
+/// frames[k] to frames[k + 1]).
+struct PathKeys {
   std::vector<double> frames;
-  std::vector<ArtPoints> points;
+  std::vector<std::vector<std::vector<Vec2>>> lines;
+  std::vector<Ease> ease;
+};
+
+/// The keys of one element's animation: one PathKeys per art path, each path keyed where its own motion
+/// needs it, and its stroke scale at `stroke_frames` (the element's slices and, where the scale is not
+/// straight between two of them, the frames between).
+struct ElementKeys {
+  std::vector<PathKeys> paths;
   std::vector<double> stroke_frames, stroke_scales;
 };
 
-/// Element `element`'s keys in an `out.count`-frame document: linear, its own slices, from frame 0 to
-/// frame N (N − 1 and a last one holding it, when the world does not loop); held, the N frames. One
-/// frame: one key.
+/// One key of every path at frame 0, no stroke scaling: a still picture (the container's art).
+ElementKeys still_keys(const ArtPoints& points);
+
+/// Element `element`'s keys in an `out.count`-frame document, from frame 0 to frame N (N − 1 and a last
+/// one holding it, when the world does not loop): linear with straight motion between slices
+/// (motion_curve 0), its own slices; on the curve, each path where its motion needs it (within the
+/// tolerance of key_tolerance); held, the N frames. One frame: one key.
 ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out);
 
 /// animation.json: one Lottie shape layer per element (docs/animation-formats.md).

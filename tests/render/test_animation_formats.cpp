@@ -73,6 +73,67 @@ SimState drifted_state(const World& world) {
   return state;
 }
 
+// The tiny world with 8 slices, element 0 no longer turning but sliding along x and back over the loop,
+// fast in the middle and slow at the turns (slice s moved by 0.15 (1 − cos 2πs/8) / 2): on the curve its
+// points follow straight lines at uneven speed, the motion a key's easing carries.
+SimState sliding_state(const World& world) {
+  SimState state = world.state;
+  const SpacetimeElement& lib = world.library[world.elements[0].library];
+  const int P = lib.vertices_per_slice(), first = world.elements[0].vertex_begin;
+  for (int s = 1; s < lib.slice_count; ++s) {
+    const double offset = 0.075 * (1 - std::cos(2 * M_PI * s / lib.slice_count));
+    for (int v = 0; v < P; ++v)
+      state.x[first + s * P + v] = float(state.x[first + v] + offset), state.y[first + s * P + v] = state.y[first + v];
+  }
+  return state;
+}
+
+// A Lottie shape property's points at `frame`, as a player computes them: the key before it, moved towards
+// the next along the straight line by the key's timing curve (cubic Bézier from (0, 0) over (o.x, o.y)
+// and (i.x, i.y) to (1, 1), solved for x by bisection), or held; the layer's position added.
+std::vector<Vec2> lottie_points_at(const nlohmann::json& shape, Vec2 layer, double frame) {
+  auto points = [&](const nlohmann::json& value) {
+    std::vector<Vec2> out;
+    for (const auto& v : value["v"]) out.push_back(Vec2{v[0].get<double>(), v[1].get<double>()} + layer);
+    return out;
+  };
+  if (shape["a"] == 0) return points(shape["k"]);
+  const nlohmann::json& keys = shape["k"];
+  std::size_t k = 0;
+  while (k + 1 < keys.size() && keys[k + 1]["t"].get<double>() <= frame) ++k;
+  std::vector<Vec2> a = points(keys[k]["s"][0]);
+  if (k + 1 == keys.size() || keys[k].contains("h")) return a;
+  const std::vector<Vec2> b = points(keys[k + 1]["s"][0]);
+  const double s = (frame - keys[k]["t"].get<double>()) / (keys[k + 1]["t"].get<double>() - keys[k]["t"].get<double>());
+  const double ox = keys[k]["o"]["x"], oy = keys[k]["o"]["y"], ix = keys[k]["i"]["x"], iy = keys[k]["i"]["y"];
+  auto bezier = [](double p1, double p2, double u) {
+    return 3 * (1 - u) * (1 - u) * u * p1 + 3 * (1 - u) * u * u * p2 + u * u * u;
+  };
+  double lo = 0, hi = 1;
+  for (int i = 0; i < 60; ++i) (bezier(ox, ix, 0.5 * (lo + hi)) < s ? lo : hi) = 0.5 * (lo + hi);
+  const double e = bezier(oy, iy, 0.5 * (lo + hi));
+  for (std::size_t v = 0; v < a.size(); ++v) a[v] = a[v] + (b[v] - a[v]) * e;
+  return a;
+}
+
+// The first shape of the last layer: element 0's outline (layers run from the last-drawn element down).
+const nlohmann::json& doc_last_outline(const nlohmann::json& doc) {
+  return doc["layers"].back()["shapes"][0]["it"][0]["ks"];
+}
+
+// Every shape property of a Lottie document's art layers, with its layer's position.
+std::vector<std::pair<const nlohmann::json*, Vec2>> lottie_shapes(const nlohmann::json& doc) {
+  std::vector<std::pair<const nlohmann::json*, Vec2>> shapes;
+  for (const auto& layer : doc["layers"]) {
+    if (!layer.contains("shapes")) continue;
+    const Vec2 at{layer["ks"]["p"]["k"][0].get<double>(), layer["ks"]["p"]["k"][1].get<double>()};
+    for (const auto& group : layer["shapes"])
+      for (const auto& item : group["it"])
+        if (item["ty"] == "sh") shapes.emplace_back(&item["ks"], at);
+  }
+  return shapes;
+}
+
 std::vector<double> key_times(const nlohmann::json& property) {
   std::vector<double> times;
   for (const auto& key : property["k"]) times.push_back(key["t"]);
@@ -214,14 +275,23 @@ TEST_CASE(
     "alpha IoU at least 0.97") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
-  // Straight lines between slices (keys at the slices) and the curve (keys between them too).
-  for (const int curve : {0, 1}) {
-    INFO("motion_curve " << curve);
-    const World world = big_star_world(curve);
+  // Straight lines between slices (keys at the slices), the curve (keys between them too), and a slide at
+  // uneven speed (eased keys: calcMode spline).
+  for (const int curve : {0, 1, 2}) {
+    INFO("motion_curve " << std::min(curve, 1) << (curve == 2 ? ", sliding" : ""));
+    const World world = curve == 2 ? [] {
+      World w = tiny_star_world(8);
+      w.params.forces.motion_curve = 1;
+      return w;
+    }()
+                                   : big_star_world(curve);
+    const SimState state = curve == 2 ? sliding_state(world) : world.state;
     const animpak::test::TempDir temp("animpak-animation-");
     const auto dir = temp / "chromium";
     const FrameOutput out = animated_output(dir, {FrameFormat::png, FrameFormat::svg_anim});
-    write_frames(world, world.state, out);
+    write_frames(world, state, out);
+    if (curve == 2)
+      CHECK_THAT(text_of(dir / "animation.svg"), Contains("calcMode=\"spline\"") && Contains("keySplines"));
     const std::string svg = text_of(dir / "animation.svg");
     // Frames 1 and 3 lie between two slices.
     for (int i : {0, 1, kFrames / 3, 3, 2 * kFrames / 3}) {
@@ -265,7 +335,7 @@ TEST_CASE(
   const std::string svg = text_of(dir / "animation.svg"), frame0 = text_of(dir / "frames" / "frame_0000.svg");
   auto group_ids = [](const std::string& text) {
     std::vector<std::string> ids;
-    const std::regex group("<g id=\"([^\"]*)\">|<path id=\"([^\"]*)\"");
+    const std::regex group("<g id=\"([^\"]*)\"[^>]*>|<path id=\"([^\"]*)\"");
     for (auto it = std::sregex_iterator(text.begin(), text.end(), group); it != std::sregex_iterator(); ++it)
       ids.push_back((*it)[1].matched ? (*it)[1].str() : (*it)[2].str());
     return ids;
@@ -340,6 +410,42 @@ TEST_CASE("lottie: keyed at each element's own slice times, a fraction of the pe
   CHECK(double(sliced) < 0.2 * double(fs::file_size(dir / "animation.json")));
 }
 
+TEST_CASE(
+    "lottie: each path keyed where its own motion needs it, a slide at uneven speed carried by the keys' easing, and "
+    "the document as a player reads it within 3/4 px of the frames at every frame") {
+  World world = tiny_star_world(8);
+  world.params.forces.motion_curve = 1;
+  const SimState state = sliding_state(world);
+  const animpak::test::TempDir temp("animpak-animation-");
+  FrameOutput out = animated_output(temp / "keyed", {FrameFormat::lottie});
+  out.count = 48;
+  write_frames(world, state, out);
+  const nlohmann::json keyed = nlohmann::json::parse(text_of(temp / "keyed" / "animation.json"));
+  CHECK(lottie_schema::errors(keyed).empty());
+  // The frames' own points: every frame a held key.
+  out.dir = temp / "held", out.interpolation = Interpolation::hold;
+  write_frames(world, state, out);
+  const nlohmann::json held = nlohmann::json::parse(text_of(temp / "held" / "animation.json"));
+  const auto ours = lottie_shapes(keyed), frames = lottie_shapes(held);
+  REQUIRE(ours.size() == frames.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < ours.size(); ++k)
+    for (int i = 0; i < out.count; ++i) {
+      const std::vector<Vec2> player = lottie_points_at(*ours[k].first, ours[k].second, i),
+                              truth = lottie_points_at(*frames[k].first, frames[k].second, i);
+      REQUIRE(player.size() == truth.size());
+      for (std::size_t v = 0; v < player.size(); ++v) worst = std::max(worst, norm(player[v] - truth[v]));
+    }
+  CHECK(worst <= 0.75 + 0.01);  // the key tolerance, and two roundings to 1/100 px
+  // Element 0 (the last layer) slides: straight keys need 23 for its outline here (keyed every one or two
+  // frames where the speed changes), eased ones 6.
+  const nlohmann::json& slide = doc_last_outline(keyed);
+  for (const auto& key : slide["k"]) UNSCOPED_INFO(key["t"] << " " << (key.contains("o") ? key["o"].dump() : ""));
+  CHECK(slide["k"].size() <= 8);
+  CHECK(std::any_of(slide["k"].begin(), slide["k"].end(),
+                    [](const auto& key) { return key.contains("o") && key["o"]["x"] != 0; }));
+}
+
 TEST_CASE("lottie: a world that does not loop holds its last slice from frame N - 1 to N") {
   World world = big_star_world();
   world.loop = false;
@@ -347,10 +453,12 @@ TEST_CASE("lottie: a world that does not loop holds its last slice from frame N 
   out.count = 7;
   const frame_writers::ElementKeys keys = frame_writers::element_keys(world, world.state, 0, out);
   // Frame i at t = i / 6: the slices at frames 0, 2, 4 and 6, then a key at 7 holding the last.
-  CHECK(keys.frames == std::vector<double>{0, 2, 4, 6, 7});
-  CHECK(keys.points[4] == keys.points[3]);
+  for (const frame_writers::PathKeys& path : keys.paths) {
+    CHECK(path.frames == std::vector<double>{0, 2, 4, 6, 7});
+    CHECK(path.lines[4] == path.lines[3]);
+  }
   out.count = 1;
-  CHECK(frame_writers::element_keys(world, world.state, 0, out).frames == std::vector<double>{0});
+  CHECK(frame_writers::element_keys(world, world.state, 0, out).paths[0].frames == std::vector<double>{0});
 }
 
 TEST_CASE(
