@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """Motion and size of a packing's elements, measured on its SVG frames alone (docs/quality.md, "Motion").
 
-    scripts/measure-motion.py DIR [--slices N] [--no-loop]
+    scripts/measure-motion.py DIR [--slices N] [--no-loop] [--loop-to A:B,...]
 
 DIR holds frames/frame_NNNN.svg (animpak pack or render with --format svg). Each element is one <g id=...>
 of straight path segments. Per element and frame: the centroid of its points and the area its paths
 enclose. Printed:
   - acceleration: the centroid's frame-to-frame second difference (cyclic when the scene loops), in
     container widths: its median and 99th percentile over every element and frame, and their ratio (a
-    jolt at every slice shows as a 99th percentile far above the median);
+    jolt at every slice shows as a 99th percentile far above the median). Across the loop's seam an
+    element continues as the element it loops into (--loop-to A:B: A's last frame is followed by B's
+    first), as two guided elements that swap places do;
   - with --slices N (slices evenly spaced in t): the mean acceleration at the frames next to a slice time
     over the mean elsewhere (1 when the slices do not show);
   - size: per element, its largest area over its smallest over the loop; the median and the worst.
@@ -86,6 +88,7 @@ def main():
     parser.add_argument("dir")
     parser.add_argument("--slices", type=int, default=0, help="slices of the scene, evenly spaced in t")
     parser.add_argument("--no-loop", action="store_true", help="the scene does not loop")
+    parser.add_argument("--loop-to", default="", help="A:B,... element A loops into element B at the seam")
     args = parser.parse_args()
     files = sorted(glob.glob(os.path.join(args.dir, "frames", "frame_*.svg")))
     if len(files) < 3:
@@ -95,13 +98,20 @@ def main():
     names = sorted(set.intersection(*[set(e) for _, e in frames]))
     n = len(frames)
     loop = not args.no_loop
+    into = {name: name for name in names}
+    for pair in filter(None, args.loop_to.split(",")):
+        a, b = pair.split(":")
+        into[a] = b
+    came_from = {b: a for a, b in into.items()}
     accel, at_slice, elsewhere, sizes = [], [], [], []
     for name in names:
         c = [(e[name][0], e[name][1]) for _, e in frames]
         areas = [e[name][2] for _, e in frames]
         sizes.append(max(areas) / max(min(areas), 1e-12))
         for i in range(n) if loop else range(1, n - 1):
-            a, b, d = c[i - 1], c[i], c[(i + 1) % n]
+            a = (frames[-1][1][came_from[name]][:2] if i == 0 else c[i - 1])
+            b = c[i]
+            d = (frames[0][1][into[name]][:2] if i == n - 1 else c[i + 1])
             value = math.hypot(a[0] - 2 * b[0] + d[0], a[1] - 2 * b[1] + d[1]) / width
             accel.append(value)
             if args.slices > 1:

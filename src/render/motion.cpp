@@ -27,13 +27,23 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
   MotionMetrics m;
   const Topology& topo = world.topology;
   const std::size_t n = times.size();
+  // Across a looping scene's seam an element continues as the element it loops into (§5.2's loop pairs:
+  // two guided elements that swap places), so frame N − 1's next frame is that element's frame 0, and
+  // frame 0's previous frame is frame N − 1 of the element that loops into this one.
+  std::vector<std::size_t> loops_into(centroids.size()), loops_from(centroids.size());
+  for (std::size_t e = 0; e < centroids.size(); ++e) loops_into[e] = loops_from[e] = e;
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
+    const std::size_t from = std::size_t(topo.element[topo.loop_end[i]]), to = std::size_t(topo.element[topo.loop_start[i]]);
+    if (from < centroids.size() && to < centroids.size()) loops_into[from] = to, loops_from[to] = from;
+  }
   std::vector<double> all, at_slice, elsewhere;
   for (std::size_t e = 0; e < centroids.size() && n >= 3; ++e) {
     const ElementInstance& inst = world.elements[e];
     const int first = inst.slice_begin, slices = topo.element_slice_begin[e + 1] - first;
     const double step = n > 1 ? std::abs(times[1] - times[0]) : 1.0;
     for (std::size_t i = world.loop ? 0 : 1; i < (world.loop ? n : n - 1); ++i) {
-      const Vec2 a = centroids[e][(i + n - 1) % n], b = centroids[e][i], c = centroids[e][(i + 1) % n];
+      const Vec2 a = i == 0 ? centroids[loops_from[e]][n - 1] : centroids[e][i - 1], b = centroids[e][i],
+                 c = i + 1 == n ? centroids[loops_into[e]][0] : centroids[e][i + 1];
       const double value = std::hypot(a.x - 2.0 * b.x + c.x, a.y - 2.0 * b.y + c.y);
       all.push_back(value);
       // Frame i bends at a slice when one of the element's slice times lies within a frame of it.

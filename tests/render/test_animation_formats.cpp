@@ -1,7 +1,7 @@
 // The animated vector formats against the players people use: the Lottie document drawn by rlottie and the
 // SMIL-animated SVG drawn by headless Chromium, paused at a frame's time, must cover what animpak's own PNG
-// frame of that index covers (alpha masks' intersection over union ≥ 0.97, ≥ 0.99 at frames between two
-// slices when keyed at the slices); the Lottie document passes a schema check; the keys sit at each element's
+// frame of that index covers (alpha masks' intersection over union ≥ 0.97 for rlottie at slices, ≥ 0.99
+// for rlottie between slices and for Chromium everywhere, where it measured 0.9947 at worst); the Lottie document passes a schema check; the keys sit at each element's
 // own slice times; the background and container options; the dotLottie zip.
 #include <catch2/catch.hpp>
 
@@ -272,7 +272,7 @@ TEST_CASE("lottie and rlottie: frames 0, N/3 and 2N/3 cover animpak's PNG frames
 
 TEST_CASE(
     "svg-anim and Chromium: paused at five frames' times, at slices and between them, it covers animpak's PNG frames, "
-    "alpha IoU at least 0.97") {
+    "alpha IoU at least 0.99") {
   if (!have_chromium())
     return animpak::test::skip("chromium is not on PATH (Debian package chromium); nothing was compared");
   // Straight lines between slices (keys at the slices), the curve (keys between them too), and a slide at
@@ -319,7 +319,7 @@ TEST_CASE(
       REQUIRE(theirs.height == ours.height);
       const double iou = alpha_iou(ours, theirs);
       INFO("frame " << i << " at " << i / out.fps << " s");
-      CHECK(iou >= kMinIou);
+      CHECK(iou >= 0.99);
     }
   }
 }

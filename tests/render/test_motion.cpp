@@ -6,6 +6,8 @@
 #include <numbers>
 
 #include "animpak/render.hpp"
+#include "animpak/scene.hpp"
+#include "scene/tiny_scenes.hpp"
 #include "tiny_world.hpp"
 
 using namespace animpak;
@@ -31,6 +33,25 @@ TEST_CASE("measure_motion: even circling has no kink, corners at the slices an i
   CHECK(jolting.acceleration_median == Approx(0.0).margin(1e-12));
   CHECK(jolting.kink() > 1e6);
   CHECK(jolting.slice_ratio > 1e3);
+}
+
+TEST_CASE("measure_motion: across the loop's seam an element continues as the element it loops into") {
+  // Two guided stars that swap places and loop into each other: each runs half a circle, together one
+  // circle a loop, so at the seam each one's next frame is the other's first.
+  const World world = make_world(parse_scene(
+      animpak::test::star_scene(0, 5, 3, animpak::test::swapping_pair()), "tiny.json", "/"));
+  REQUIRE(world.elements.size() == 2);
+  const std::vector<double> times = frame_times(60, true);
+  std::vector<std::vector<Vec2>> halves(2);
+  for (std::size_t e = 0; e < 2; ++e)
+    for (const double t : times) {
+      const double a = std::numbers::pi * (t + double(e));
+      halves[e].push_back({0.5 + 0.2 * std::cos(a), 0.5 + 0.2 * std::sin(a)});
+    }
+  // Read element by element, each would jump across the circle at the seam: the four jumps alone would
+  // set the 99th percentile of the 120 element-frames.
+  const MotionMetrics m = measure_motion(world, world.state, halves, times);
+  CHECK(m.kink() == Approx(1.0).epsilon(1e-6));
 }
 
 TEST_CASE("measure_motion: an element's size over its script, largest over smallest over its slices") {
