@@ -32,6 +32,7 @@ struct Params {
     double initial_scale = 0.07;  ///< elements start at 5–10 % of their size
     double seed_spacing = 0.2;    ///< blue-noise distance between unguided seeds when the scene fills
     int seed_spread = 1;  ///< a fixed count's seeds: 1 spread (farthest points, Lloyd), 0 a random blue-noise subset
+    int guide_curve = 1;  ///< a guided element's initial path: 1 a smooth curve through its targets, 0 straight lines
   };
 
   /// §5 forces, integration and the spatial queries (src/solver).
@@ -45,7 +46,7 @@ struct Params {
     double k_edge = 5000.0;    ///< Eq. 2, slice edge springs
     double k_shear = 5000.0;   ///< Eq. 2, shear springs
     double k_negative_space = 50.0;  ///< Eq. 2, negative-space springs
-    double k_time = 5.0;             ///< Eq. 2, time springs
+    double k_time = 50.0;            ///< Eq. 2, time springs
     double k_target = 500.0;         ///< Eq. 2, target-point springs of guided elements (target slices only)
     double k_overlap = 5.0;          ///< Eq. 3
     double k_overlap_depth = 5.0;    ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline

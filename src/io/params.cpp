@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 45> table{{
+const std::array<ParamInfo, 46> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -42,6 +42,10 @@ const std::array<ParamInfo, 45> table{{
      "a fixed count's seeds: 1 spread over the container (farthest points, then Lloyd); 0 a random subset of "
      "blue noise (0.4.0)",
      "blue noise (§4)"},
+    {"guide_curve", "placement", field<&Params::placement, &Params::Placement::guide_curve>(), 0, 1,
+     "a guided element's initial path through its targets: 1 a smooth curve in t (periodic through loop "
+     "partners); 0 straight lines between targets (0.6.0)",
+     "a polygonal extrusion (§4)"},
     {"k_repulsion", "forces", field<&Params::forces, &Params::Forces::k_repulsion>(), 0.0, inf,
      "k_rpl, repulsion strength (Eq. 1)", "k_rpl = 10 (Eq. 1)"},
     {"repulsion_epsilon", "forces", field<&Params::forces, &Params::Forces::repulsion_epsilon>(), 1e-12, inf,

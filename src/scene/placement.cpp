@@ -23,13 +23,63 @@ int library_index(const SceneSpec& scene, const std::string& name) {
                    "\", which the scene does not define");
 }
 
-// Piecewise-linear interpolation of the targets at time t (paper §4: the initial guided path is a
-// polygonal extrusion); missing scale is 1 and missing angle 0.
+// A guided element's initial path (paper §4: a polygonal extrusion through the artist's targets). The
+// targets are its knots, in unit-container coordinates; in a looping scene the path runs on through the
+// seam, so the knots also hold the target before the last of the element that loops into this one (one
+// period earlier) and the target after the first of the element this one loops into (one period later).
+struct GuideKnot {
+  double t;
+  Vec2 position;
+};
+std::vector<GuideKnot> guide_knots(const SceneSpec& scene, std::size_t index, const Container& c) {
+  const GuidedSpec& g = scene.guided[index];
+  auto unit = [&](const TargetSpec& k) { return c.frame.to_unit({k.x, k.y}); };
+  const GuidedSpec *before = nullptr, *after = nullptr;
+  if (scene.loop)
+    for (const GuidedSpec& o : scene.guided) {
+      if (o.name == (g.loop_to.empty() ? g.name : g.loop_to)) after = &o;
+      if ((o.loop_to.empty() ? o.name : o.loop_to) == g.name) before = &o;
+    }
+  std::vector<GuideKnot> knots;
+  if (before != nullptr && before->targets.size() >= 2) {
+    const TargetSpec& k = before->targets[before->targets.size() - 2];
+    knots.push_back({k.t - 1.0, unit(k)});
+  }
+  for (const TargetSpec& k : g.targets) knots.push_back({k.t, unit(k)});
+  if (after != nullptr && after->targets.size() >= 2) knots.push_back({after->targets[1].t + 1.0, unit(after->targets[1])});
+  return knots;
+}
+
+// The path at time t: with `smooth` (guide_curve 1), a cubic Hermite in t through the knots whose tangent
+// at a knot is the slope from the knot before to the knot after (Catmull–Rom for uneven times; the one
+// neighbour's slope at an open end), so the element passes each target on time without turning a corner
+// there; otherwise the straight line between the two targets around t.
+Vec2 guide_position(const std::vector<GuideKnot>& knots, double t, bool smooth) {
+  std::size_t k = 0;
+  while (k + 2 < knots.size() && knots[k + 1].t <= t) ++k;
+  const GuideKnot &a = knots[k], &b = knots[std::min(k + 1, knots.size() - 1)];
+  const double h = b.t - a.t;
+  if (!(h > 0)) return a.position;
+  const double u = std::clamp((t - a.t) / h, 0.0, 1.0);
+  if (!smooth) return a.position + u * (b.position - a.position);
+  auto tangent = [&](std::size_t j) {
+    const std::size_t lo = j > 0 ? j - 1 : j, hi = j + 1 < knots.size() ? j + 1 : j;
+    return (1.0 / (knots[hi].t - knots[lo].t)) * (knots[hi].position - knots[lo].position);
+  };
+  const Vec2 ma = tangent(k), mb = tangent(k + 1);
+  const double u2 = u * u, u3 = u2 * u;
+  return (2 * u3 - 3 * u2 + 1) * a.position + (h * (u3 - 2 * u2 + u)) * ma + (-2 * u3 + 3 * u2) * b.position +
+         (h * (u3 - u2)) * mb;
+}
+
+// The targets' scale and angle at time t, straight between two targets; missing scale is 1 and missing
+// angle 0.
 struct TargetSample {
   Vec2 position;
   double scale, angle;
 };
-TargetSample sample_targets(const std::vector<TargetSpec>& targets, const Container& c, double t) {
+TargetSample sample_targets(const std::vector<TargetSpec>& targets, const std::vector<GuideKnot>& knots, bool smooth,
+                            double t) {
   std::size_t k = 0;
   while (k + 2 < targets.size() && targets[k + 1].t <= t) ++k;
   const TargetSpec& a = targets[k];
@@ -37,9 +87,7 @@ TargetSample sample_targets(const std::vector<TargetSpec>& targets, const Contai
   const double span = b.t - a.t;
   const double w = span > 0 ? std::clamp((t - a.t) / span, 0.0, 1.0) : 0.0;
   auto mix = [&](double u, double v) { return u + w * (v - u); };
-  const Vec2 pa = c.frame.to_unit({a.x, a.y}), pb = c.frame.to_unit({b.x, b.y});
-  return {{mix(pa.x, pb.x), mix(pa.y, pb.y)},
-          mix(a.scale.value_or(1.0), b.scale.value_or(1.0)),
+  return {guide_position(knots, t, smooth), mix(a.scale.value_or(1.0), b.scale.value_or(1.0)),
           mix(a.angle.value_or(0.0), b.angle.value_or(0.0)) * std::numbers::pi / 180.0};
 }
 
@@ -49,10 +97,11 @@ std::string describe_target(const std::vector<TargetSpec>& targets, std::size_t 
   return s.str();
 }
 
-// A target outside the container cannot be reached and is an input error. A straight stretch between
-// two targets that leaves the container only misplaces the initial path: the boundary force (Eq. 4)
-// pushes the slices back in, so it is a warning with the fix.
-void check_target_path(const SceneSpec& scene, std::size_t index, const Container& c, std::vector<std::string>& notes) {
+// A target outside the container cannot be reached and is an input error. A stretch of the initial path
+// between two targets that leaves the container only misplaces it: the boundary force (Eq. 4) pushes
+// the slices back in, so it is a warning with the fix.
+void check_target_path(const SceneSpec& scene, std::size_t index, const Container& c,
+                       const std::vector<GuideKnot>& knots, bool smooth, std::vector<std::string>& notes) {
   const GuidedSpec& g = scene.guided[index];
   const std::string who = "guided[" + std::to_string(index) + "] \"" + g.name + "\"";
   auto where = [&](Vec2 p) {
@@ -65,19 +114,20 @@ void check_target_path(const SceneSpec& scene, std::size_t index, const Containe
                        "]: " + describe_target(g.targets, k) + " lies " + where(p) +
                        "; the anchor cannot reach it, move it into the container");
   }
-  // Samples each stretch every path_step of the unit container (1 unit of a 500-unit artboard): only a
-  // hole or bay narrower than that can slip between two samples.
+  // Samples each stretch every path_step of the unit container (1 unit of a 500-unit artboard) along its
+  // chord: only a hole or bay narrower than that can slip between two samples.
   constexpr double path_step = 0.002;
   for (std::size_t k = 0; k + 1 < g.targets.size(); ++k) {
     const Vec2 a = c.frame.to_unit({g.targets[k].x, g.targets[k].y});
     const Vec2 b = c.frame.to_unit({g.targets[k + 1].x, g.targets[k + 1].y});
-    const int steps = std::max(1, static_cast<int>(std::ceil(norm(b - a) / path_step)));
+    const int steps = std::max(1, static_cast<int>(std::ceil(2.0 * norm(b - a) / path_step)));
     for (int i = 1; i < steps; ++i) {
-      const Vec2 q = a + (static_cast<double>(i) / steps) * (b - a);
+      const double t = g.targets[k].t + (g.targets[k + 1].t - g.targets[k].t) * i / steps;
+      const Vec2 q = guide_position(knots, t, smooth);
       if (c.contains(q)) continue;
       const bool hole = ring_contains(c.outline, q);
-      notes.push_back("warning: guided \"" + g.name + "\": the straight path from " + describe_target(g.targets, k) +
-                      " to target " + std::to_string(k + 1) + " runs " +
+      notes.push_back("warning: guided \"" + g.name + "\": the " + (smooth ? "path" : "straight path") + " from " +
+                      describe_target(g.targets, k) + " to target " + std::to_string(k + 1) + " runs " +
                       (hole ? "through a hole of the container" : "outside the container") +
                       "; the simulation will push it " + (hole ? "out" : "back in") +
                       ", add a target in between to steer it");
@@ -122,7 +172,9 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
     p.pivot = rest_centroid(e);
     // The anchor is the slice vertex closest to the centroid (paper §4).
     p.anchor = nearest_index(e.slice.vertices, p.pivot);
-    check_target_path(scene, gi, container, notes);
+    const bool smooth = scene.params.placement.guide_curve != 0;
+    const std::vector<GuideKnot> knots = guide_knots(scene, gi, container);
+    check_target_path(scene, gi, container, knots, smooth, notes);
     // Paper §4: the anchor is sprung to the artist's target points only; the slices in between start
     // on the interpolated path and are free to smooth it out. Each target acts on the slice nearest
     // its t, and that slice is placed at the target itself, so its rest scale and angle are the
@@ -141,7 +193,7 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
     for (int s = 0; s < e.slice_count; ++s) {
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
       const int key = key_of_slice[s];
-      const TargetSample target = sample_targets(g.targets, container, key >= 0 ? g.targets[key].t : t);
+      const TargetSample target = sample_targets(g.targets, knots, smooth, key >= 0 ? g.targets[key].t : t);
       const double scale = scene.params.placement.initial_scale * target.scale;
       const Vec2 anchor = e.position(s, p.anchor);
       p.scale.push_back(scale);

@@ -42,36 +42,88 @@ constexpr int kSlices = 5;
 
 }  // namespace
 
-TEST_CASE("build_world: a guided anchor starts on the interpolated path, only keyed slices get target points") {
-  const World w = world_of(star_scene(1, kSlices, 3, kSwap));
-  const Topology& topo = w.topology;
+TEST_CASE(
+    "build_world: a guided anchor starts on its path, smooth through the targets and its partner's or straight "
+    "between them, only keyed slices get target points") {
   // Targets of "up" in art units at t = 0, 0.5, 1; slice s lies at t = s / (n − 1), halfway between
-  // targets for odd s, so slices 0, 2 and 4 carry the targets (paper §4).
-  const Vec2 art[kSlices] = {{220, 250}, {235, 225}, {250, 200}, {265, 225}, {280, 250}};
-  const ElementInstance& up = w.elements[0];
-  REQUIRE(up.name == "up");
-  const SpacetimeElement& e = w.library[up.library];
-  std::int32_t anchor = -1;
-  for (std::int32_t v = topo.slice_begin[up.slice_begin]; v < topo.slice_begin[up.slice_begin + 1]; ++v)
-    if (topo.flags[v] & vertex_anchor) anchor = v - up.vertex_begin;
-  REQUIRE(anchor >= 0);
-  for (int s = 0; s < kSlices; ++s) {
-    INFO("slice " << s);
-    const std::int32_t v = up.vertex_begin + e.id(s, anchor);
-    const Vec2 expected = w.container.frame.to_unit(art[s]);
-    CHECK(w.state.x[v] == Approx(expected.x).margin(1e-6));
-    CHECK(w.state.y[v] == Approx(expected.y).margin(1e-6));
-    const bool keyed = s % 2 == 0;
-    CHECK(((topo.flags[v] & vertex_anchor) != 0) == keyed);
-    if (!keyed) {
-      CHECK(topo.target[v] == -1);
-      continue;
+  // targets for odd s, so slices 0, 2 and 4 carry the targets (paper §4). "down" loops into "up" and back,
+  // so up's path runs on from down's middle target one period before (250, 320 at t = −0.5) to its
+  // middle target one period after (t = 1.5). Smooth: the tangent at a target is the slope from the
+  // knot before to the knot after, (0, −120) at t = 0, (60, 0) at 0.5 and (0, 120) at 1 per unit of t,
+  // and halfway through an interval of 0.5 the cubic Hermite gives ½a + ½b + (0.5/8)(m_a − m_b).
+  struct Case {
+    const char* params;
+    Vec2 odd[2];
+  };
+  for (const Case& c : {Case{"", {{231.25, 217.5}, {268.75, 217.5}}},
+                        Case{R"("guide_curve": 0)", {{235, 225}, {265, 225}}}}) {
+    INFO("params {" << c.params << "}");
+    const World w = world_of(star_scene(1, kSlices, 3, animpak::test::swapping_pair(c.params)));
+    const Topology& topo = w.topology;
+    const Vec2 art[kSlices] = {{220, 250}, c.odd[0], {250, 200}, c.odd[1], {280, 250}};
+    const ElementInstance& up = w.elements[0];
+    REQUIRE(up.name == "up");
+    const SpacetimeElement& e = w.library[up.library];
+    std::int32_t anchor = -1;
+    for (std::int32_t v = topo.slice_begin[up.slice_begin]; v < topo.slice_begin[up.slice_begin + 1]; ++v)
+      if (topo.flags[v] & vertex_anchor) anchor = v - up.vertex_begin;
+    REQUIRE(anchor >= 0);
+    for (int s = 0; s < kSlices; ++s) {
+      INFO("slice " << s);
+      const std::int32_t v = up.vertex_begin + e.id(s, anchor);
+      const Vec2 expected = w.container.frame.to_unit(art[s]);
+      CHECK(w.state.x[v] == Approx(expected.x).margin(1e-6));
+      CHECK(w.state.y[v] == Approx(expected.y).margin(1e-6));
+      const bool keyed = s % 2 == 0;
+      CHECK(((topo.flags[v] & vertex_anchor) != 0) == keyed);
+      if (!keyed) {
+        CHECK(topo.target[v] == -1);
+        continue;
+      }
+      REQUIRE(topo.target[v] >= 0);
+      CHECK(topo.target_x[topo.target[v]] == Approx(expected.x).margin(1e-6));
+      CHECK(topo.target_y[topo.target[v]] == Approx(expected.y).margin(1e-6));
+      CHECK(topo.target_t[topo.target[v]] == static_cast<float>(s) / (kSlices - 1));
     }
-    REQUIRE(topo.target[v] >= 0);
-    CHECK(topo.target_x[topo.target[v]] == Approx(expected.x).margin(1e-6));
-    CHECK(topo.target_y[topo.target[v]] == Approx(expected.y).margin(1e-6));
-    CHECK(topo.target_t[topo.target[v]] == static_cast<float>(s) / (kSlices - 1));
   }
+}
+
+TEST_CASE("build_world: a smooth guided path turns no corner at a target, where the straight one turns 90 degrees") {
+  // As the aquarium's two penguins, on a smaller diamond inside the heart: up goes (250, 320) → (310, 260)
+  // → (250, 200) and loops into down, which comes back the other side. On 21 slices, the largest turn of
+  // the anchor from one slice step to the next (the angle between successive steps).
+  const SceneExtras pair{R"(, "guided": [
+    {"name": "up", "element": "star", "loop_to": "down",
+     "targets": [{"x": 250, "y": 320, "t": 0}, {"x": 310, "y": 260, "t": 0.5}, {"x": 250, "y": 200, "t": 1}]},
+    {"name": "down", "element": "star", "loop_to": "up",
+     "targets": [{"x": 250, "y": 200, "t": 0}, {"x": 190, "y": 260, "t": 0.5}, {"x": 250, "y": 320, "t": 1}]}])",
+                         ""};
+  auto largest_turn = [&](const std::string& params) {
+    SceneExtras extras = pair;
+    extras.params = params;
+    const World w = world_of(star_scene(0, 21, 3, extras));
+    const Topology& topo = w.topology;
+    const ElementInstance& up = w.elements[0];
+    const SpacetimeElement& e = w.library[up.library];
+    std::int32_t anchor = -1;
+    for (std::int32_t v = topo.slice_begin[up.slice_begin]; v < topo.slice_begin[up.slice_begin + 1]; ++v)
+      if (topo.flags[v] & vertex_anchor) anchor = v - up.vertex_begin;
+    REQUIRE(anchor >= 0);
+    double worst = 0.0;
+    for (int s = 1; s + 1 < 21; ++s) {
+      auto at = [&](int k) {
+        const std::int32_t v = up.vertex_begin + e.id(k, anchor);
+        return Vec2{w.state.x[v], w.state.y[v]};
+      };
+      const Vec2 a = at(s) - at(s - 1), b = at(s + 1) - at(s);
+      worst = std::max(worst, std::acos(std::clamp(dot(a, b) / (norm(a) * norm(b)), -1.0, 1.0)) * 180 / std::numbers::pi);
+    }
+    return worst;
+  };
+  CHECK(largest_turn(R"("guide_curve": 0)") == Approx(90).margin(0.5));
+  // A circle through the four targets would turn 9° a step (360° over 40); the cubic through them bends
+  // most at the targets, 20° a step, and turns no corner.
+  CHECK(largest_turn("") < 25);
 }
 
 TEST_CASE("build_world: 3 targets on 9 slices give 3 target points, on the slices nearest the targets' t") {
@@ -116,7 +168,7 @@ TEST_CASE("build_world: a target path through a hole warns, a target outside or 
       world_of(ring(R"({"x": 420, "y": 250, "t": 0}, {"x": 80, "y": 250, "t": 0.5}, {"x": 250, "y": 80, "t": 1})"));
   std::string notes;
   for (const std::string& n : across.notes) notes += n + "\n";
-  CHECK_THAT(notes, Contains("guided \"crosser\": the straight path from target 0 (x 420, y 250, t 0) to target 1 runs "
+  CHECK_THAT(notes, Contains("guided \"crosser\": the path from target 0 (x 420, y 250, t 0) to target 1 runs "
                              "through a hole of the container; the simulation will push it out, add a target in "
                              "between to steer it"));
   CHECK_THAT(notes, !Contains("from target 1"));  // (80, 250) to (250, 80) passes the hole at r 120
