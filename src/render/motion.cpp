@@ -33,7 +33,8 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
   std::vector<std::size_t> loops_into(centroids.size()), loops_from(centroids.size());
   for (std::size_t e = 0; e < centroids.size(); ++e) loops_into[e] = loops_from[e] = e;
   for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
-    const std::size_t from = std::size_t(topo.element[topo.loop_end[i]]), to = std::size_t(topo.element[topo.loop_start[i]]);
+    const std::size_t from = std::size_t(topo.element[topo.loop_end[i]]),
+                      to = std::size_t(topo.element[topo.loop_start[i]]);
     if (from < centroids.size() && to < centroids.size()) loops_into[from] = to, loops_from[to] = from;
   }
   std::vector<double> all, at_slice, elsewhere;

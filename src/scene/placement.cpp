@@ -46,7 +46,8 @@ std::vector<GuideKnot> guide_knots(const SceneSpec& scene, std::size_t index, co
     knots.push_back({k.t - 1.0, unit(k)});
   }
   for (const TargetSpec& k : g.targets) knots.push_back({k.t, unit(k)});
-  if (after != nullptr && after->targets.size() >= 2) knots.push_back({after->targets[1].t + 1.0, unit(after->targets[1])});
+  if (after != nullptr && after->targets.size() >= 2)
+    knots.push_back({after->targets[1].t + 1.0, unit(after->targets[1])});
   return knots;
 }
 

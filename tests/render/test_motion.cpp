@@ -38,8 +38,8 @@ TEST_CASE("measure_motion: even circling has no kink, corners at the slices an i
 TEST_CASE("measure_motion: across the loop's seam an element continues as the element it loops into") {
   // Two guided stars that swap places and loop into each other: each runs half a circle, together one
   // circle a loop, so at the seam each one's next frame is the other's first.
-  const World world = make_world(parse_scene(
-      animpak::test::star_scene(0, 5, 3, animpak::test::swapping_pair()), "tiny.json", "/"));
+  const World world =
+      make_world(parse_scene(animpak::test::star_scene(0, 5, 3, animpak::test::swapping_pair()), "tiny.json", "/"));
   REQUIRE(world.elements.size() == 2);
   const std::vector<double> times = frame_times(60, true);
   std::vector<std::vector<Vec2>> halves(2);

@@ -55,8 +55,8 @@ TEST_CASE(
     const char* params;
     Vec2 odd[2];
   };
-  for (const Case& c : {Case{"", {{231.25, 217.5}, {268.75, 217.5}}},
-                        Case{R"("guide_curve": 0)", {{235, 225}, {265, 225}}}}) {
+  for (const Case& c :
+       {Case{"", {{231.25, 217.5}, {268.75, 217.5}}}, Case{R"("guide_curve": 0)", {{235, 225}, {265, 225}}}}) {
     INFO("params {" << c.params << "}");
     const World w = world_of(star_scene(1, kSlices, 3, animpak::test::swapping_pair(c.params)));
     const Topology& topo = w.topology;
@@ -116,7 +116,8 @@ TEST_CASE("build_world: a smooth guided path turns no corner at a target, where 
         return Vec2{w.state.x[v], w.state.y[v]};
       };
       const Vec2 a = at(s) - at(s - 1), b = at(s + 1) - at(s);
-      worst = std::max(worst, std::acos(std::clamp(dot(a, b) / (norm(a) * norm(b)), -1.0, 1.0)) * 180 / std::numbers::pi);
+      worst =
+          std::max(worst, std::acos(std::clamp(dot(a, b) / (norm(a) * norm(b)), -1.0, 1.0)) * 180 / std::numbers::pi);
     }
     return worst;
   };

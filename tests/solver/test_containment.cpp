@@ -142,7 +142,8 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
   const RunResult r = run_simulation(*backend, w.params, control);
-  INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, g " << r.last.max_growth << " to " << r.last.min_growth << " gap " << r.last.max_slice_gap);
+  INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, g "
+                   << r.last.max_growth << " to " << r.last.min_growth << " gap " << r.last.max_slice_gap);
   REQUIRE(r.reason == StopReason::gap);
   CHECK(r.last.max_growth < 0.75f * static_cast<float>(w.params.growth.max_growth));
   CHECK(r.last.max_growth > 3.0f);  // it did grow to the wall: a tenth of the heart's width at least
