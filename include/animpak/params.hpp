@@ -46,7 +46,7 @@ struct Params {
     double k_edge = 5000.0;    ///< Eq. 2, slice edge springs
     double k_shear = 5000.0;   ///< Eq. 2, shear springs
     double k_negative_space = 50.0;  ///< Eq. 2, negative-space springs
-    double k_time = 50.0;            ///< Eq. 2, time springs
+    double k_time = 5.0;             ///< Eq. 2, time springs
     double k_target = 500.0;         ///< Eq. 2, target-point springs of guided elements (target slices only)
     double k_overlap = 5.0;          ///< Eq. 3
     double k_overlap_depth = 5.0;    ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
