@@ -86,7 +86,9 @@ TEST_CASE("guided: the slices between targets leave the hole, the targets' slice
 TEST_CASE("guided: a target's slice turned 20 degrees off the target's angle turns back, faster than with k_tor") {
   for (const bool hold : {true, false}) {
     INFO((hold ? "k_target_angle default" : "k_target_angle = k_torsion"));
-    const World w = ring_world(hold ? "" : R"("k_target_angle": 2e-4)");
+    // On the straight path between targets (guide_curve 0), as this comparison was calibrated: on the
+    // smooth path the neighbouring slices start turned along the curve and help the plain k_tor back too.
+    const World w = ring_world(hold ? R"("guide_curve": 0)" : R"("k_target_angle": 2e-4, "guide_curve": 0)");
     const std::int32_t keyed = 4;  // target 1, angle 90
     REQUIRE((w.topology.flags[w.topology.slice_begin[keyed]] & vertex_hold_angle));
     SimState start = w.state;
