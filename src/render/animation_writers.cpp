@@ -1,6 +1,7 @@
-// The animated vector formats: a Lottie document and an SVG animated with SMIL, both keyed per element from
-// the packed state (element_keys): at the element's own slice times, between which the motion is linear, or
-// at the frames when held. docs/animation-formats.md describes both documents.
+// The animated vector formats: a Lottie document and an SVG animated with SMIL, both keyed per art path from
+// the packed state (element_keys): at the element's own slice times with straight motion between slices,
+// where the curve between slices needs it (each interval eased or straight) on the curve, or at the frames
+// when held. docs/animation-formats.md describes both documents.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
