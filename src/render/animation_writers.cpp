@@ -49,6 +49,24 @@ void check_written(const std::ostream& out, const std::filesystem::path& file) {
 // Polylines with no point draw nothing (Picture::draw_art skips them); the formats leave them out too.
 bool drawn(const Polyline& line) { return !line.points.empty(); }
 
+// The least corner of all of an element's keyed points, each mapped by `to` (into pixels or art units),
+// rounded down to `decimals`: where the animated formats place the element's layer or group, so that its
+// points are written as short numbers from there. (0, 0) when there is no point.
+template <class Map>
+Vec2 least_corner(const ElementKeys& keys, Map to, int decimals) {
+  Vec2 least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (const PathKeys& path : keys.paths)
+    for (const auto& lines : path.lines)
+      for (const auto& line : lines)
+        for (Vec2 v : line) {
+          const Vec2 p = to(v);
+          least = {std::min(least.x, p.x), std::min(least.y, p.y)};
+        }
+  if (!std::isfinite(least.x)) return {0, 0};
+  const double steps = std::pow(10.0, decimals);
+  return {std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps};
+}
+
 // Key times are kept to a ten-thousandth of a frame, and keys closer than that are one key.
 constexpr int key_decimals = 4;
 
@@ -419,17 +437,7 @@ class LottieLayers {
   // animation, rounded to the decimals kept, and the points are written from there: shorter numbers, the
   // same pixels.
   void art_layer(const std::string& name, const ArtShape& art, const ElementKeys& keys) {
-    Vec2 least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    for (const PathKeys& path : keys.paths)
-      for (const auto& lines : path.lines)
-        for (const auto& line : lines)
-          for (Vec2 v : line) {
-            const Vec2 pixel = fit_.to_pixel(v);
-            least = {std::min(least.x, pixel.x), std::min(least.y, pixel.y)};
-          }
-    const double steps = std::pow(10.0, decimals_);
-    origin_ = std::isfinite(least.x) ? Vec2{std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps}
-                                     : Vec2{0, 0};
+    origin_ = least_corner(keys, [&](Vec2 v) { return fit_.to_pixel(v); }, decimals_);
     head(4, name, origin_);
     json_ << ",\"shapes\":[";
     for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
@@ -677,22 +685,6 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
   svg << "</path>\n";
 }
 
-// The least corner of an element's art over all its keys, in the art's coordinates, rounded down to the
-// decimals written: the element's group is moved there and its points written from it.
-Vec2 svg_origin(const SvgView& view, const ElementKeys& keys) {
-  Vec2 least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  for (const PathKeys& path : keys.paths)
-    for (const auto& lines : path.lines)
-      for (const auto& line : lines)
-        for (Vec2 v : line) {
-          const Vec2 a = view.frame.to_art(v);
-          least = {std::min(least.x, a.x), std::min(least.y, a.y)};
-        }
-  if (!std::isfinite(least.x)) return {0, 0};
-  const double steps = std::pow(10.0, view.decimals);
-  return {std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps};
-}
-
 }  // namespace
 
 void write_svg_animation(const World& world, const SimState& state, const FrameOutput& out,
@@ -705,7 +697,7 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
     const ArtShape& art = world.library[world.elements[e].library].art.art;
     const ElementKeys keys = element_keys(world, state, e, out);
     const std::string stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
-    const Vec2 origin = svg_origin(view, keys);
+    const Vec2 origin = least_corner(keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);
     svg << "<g id=\"" << xml_escaped(ids[e]) << "\" transform=\"translate(" << view.n(origin.x) << ' '
         << view.n(origin.y) << ")\">\n";
     for (int p = 0; p < int(art.paths.size()); ++p) {
