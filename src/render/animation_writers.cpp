@@ -437,7 +437,8 @@ class LottieLayers {
   // animation, rounded to the decimals kept, and the points are written from there: shorter numbers, the
   // same pixels.
   void art_layer(const std::string& name, const ArtShape& art, const ElementKeys& keys) {
-    origin_ = least_corner(keys, [&](Vec2 v) { return fit_.to_pixel(v); }, decimals_);
+    origin_ = least_corner(
+        keys, [&](Vec2 v) { return fit_.to_pixel(v); }, decimals_);
     head(4, name, origin_);
     json_ << ",\"shapes\":[";
     for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
@@ -697,7 +698,8 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
     const ArtShape& art = world.library[world.elements[e].library].art.art;
     const ElementKeys keys = element_keys(world, state, e, out);
     const std::string stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
-    const Vec2 origin = least_corner(keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);
+    const Vec2 origin = least_corner(
+        keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);
     svg << "<g id=\"" << xml_escaped(ids[e]) << "\" transform=\"translate(" << view.n(origin.x) << ' '
         << view.n(origin.y) << ")\">\n";
     for (int p = 0; p < int(art.paths.size()); ++p) {
