@@ -1,5 +1,5 @@
-// What the frame writers share (writers.cpp: PNG and SVG frames; animation_writers.cpp: Lottie and animated
-// SVG). Private to the render library.
+// What the frame writers share (writers.cpp: PNG and SVG frames; animation_keys.cpp: the animated formats'
+// keys; animation_writers.cpp: Lottie and animated SVG). Private to the render library.
 #pragma once
 
 #include <filesystem>
@@ -20,6 +20,9 @@ std::vector<std::string> element_ids(const World& world);
 /// The paint attributes of one art path in an SVG, starting with a space: fill, its opacity and rule, the
 /// stroke (`stroke_width` wide, round joins and caps as draw_art strokes) and paint order.
 std::string svg_paint(const ArtPath& path, const std::string& stroke_width);
+
+/// Key times are kept to a ten-thousandth of a frame, and keys closer than that are one key.
+inline constexpr int key_decimals = 4;
 
 /// How a player moves a path between two keys: from the first key's points towards the next's along the
 /// straight line between them, the share e(s) of the way at the share s of the interval, with
