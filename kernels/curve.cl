@@ -1,7 +1,8 @@
 /* The curve every vertex follows between its slices, twin of include/animpak/curve.hpp and
- * src/solver/reference/curve.cpp (docs/parameters.md, "Motion between slices"): a monotone cubic
- * through the slices with Steffen's tangents, kept within its two slice values per coordinate, or the
- * paper's straight line. Every operation in the reference's order. */
+ * src/solver/reference/curve.cpp (docs/parameters.md, "Motion between slices"): the C2 spline through the
+ * slices, kept within each interval's four Bézier control points; the monotone cubic with Steffen's
+ * tangents, kept within its two slice values per coordinate; or the paper's straight line. Every
+ * operation in the reference's order. */
 
 /** Slope of a chord over a time step h; none over a flat or reversed step (reference curve_slope). */
 float curve_slope(float a, float b, float h) { return h > 0.0f ? (b - a) / h : 0.0f; }
@@ -21,14 +22,17 @@ float curve_tangent(float sp, float sn, float hp, float hn, bool has_prev, bool 
 }
 
 /** The weights of the point at fraction u of an interval of length h (reference curve_basis):
- * x0 + (x1 - x0) c01 + m0 c10 + m1 c11. */
+ * x0 + (x1 - x0) c01 + m0 c10 + m1 c11, with h and whether the value may swing to the Bézier handles. */
 typedef struct {
-  float c01, c10, c11;
+  float c01, c10, c11, h;
+  bool spline;
 } CurveBasis;
 
-CurveBasis curve_basis(float u, float h, bool cubic) {
+CurveBasis curve_basis(float u, float h, int mode) {
   CurveBasis b;
-  if (!cubic) {
+  b.h = h;
+  b.spline = false;
+  if (mode == AP_CURVE_LINEAR) {
     b.c01 = u, b.c10 = 0.0f, b.c11 = 0.0f;
     return b;
   }
@@ -36,13 +40,25 @@ CurveBasis curve_basis(float u, float h, bool cubic) {
   b.c01 = u * u * (3.0f - 2.0f * u);
   b.c10 = h * u * v * v;
   b.c11 = -(h * u * u * v);
+  b.spline = mode == AP_CURVE_SPLINE;
   return b;
 }
 
-/** The curve's value between slice values x0 and x1, within [x0, x1] (reference curve_value). */
+/** The Bézier handle of slice value x with tangent m over a step h (reference curve_handle). */
+float curve_handle(float x, float m, float h) { return x + (h * m) / 3.0f; }
+
+/** The curve's value between slice values x0 and x1: within [x0, x1], or on the spline within the
+ * interval's four control points (reference curve_value). */
 float curve_value(float x0, float x1, float m0, float m1, const CurveBasis b) {
   float x = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
-  const float lo = x1 < x0 ? x1 : x0, hi = x0 < x1 ? x1 : x0;
+  float lo = x1 < x0 ? x1 : x0, hi = x0 < x1 ? x1 : x0;
+  if (b.spline) {
+    const float p = curve_handle(x0, m0, b.h), q = curve_handle(x1, m1, -b.h);
+    lo = p < lo ? p : lo;
+    lo = q < lo ? q : lo;
+    hi = hi < p ? p : hi;
+    hi = hi < q ? q : hi;
+  }
   x = x < lo ? lo : x;
   x = hi < x ? hi : x;
   return x;
@@ -83,4 +99,146 @@ __kernel void curve_tangents(const WorldInfo world,
   const float x0 = x[v], y0 = y[v];
   tangent_x[v] = curve_tangent(curve_slope(xp, x0, hp), curve_slope(x0, xn, hn), hp, hn, p >= 0, q >= 0);
   tangent_y[v] = curve_tangent(curve_slope(yp, y0, hp), curve_slope(y0, yn, hn), hp, hn, p >= 0, q >= 0);
+}
+
+/** Entry i's time on its chain: its slice's t plus the loops the chain has crossed (reference
+ * spline_tangents' tau). */
+float spline_tau(__global const int* slice_begin,
+                 __global const int* chain_slice,
+                 __global const float* chain_offset,
+                 __global const float* t,
+                 int b,
+                 int i) {
+  return t[slice_begin[chain_slice[b + i]]] + chain_offset[b + i];
+}
+
+/** Row i of a track's system (reference spline_row): a m[i-1] + rb m[i] + c m[i+1] = (dx, dy). */
+void spline_row(int i,
+                int n,
+                float period,
+                int b,
+                int k,
+                __global const int* slice_begin,
+                __global const int* chain_slice,
+                __global const float* chain_offset,
+                __global const float* x,
+                __global const float* y,
+                __global const float* t,
+                float* ra,
+                float* rb,
+                float* rc,
+                float* rdx,
+                float* rdy) {
+  const bool closed = period > 0.0f;
+  const bool has_prev = i > 0 || closed, has_next = i + 1 < n || closed;
+  const int ip = i > 0 ? i - 1 : n - 1, in = i + 1 < n ? i + 1 : 0;
+  const float ti = spline_tau(slice_begin, chain_slice, chain_offset, t, b, i);
+  const float tp = spline_tau(slice_begin, chain_slice, chain_offset, t, b, ip);
+  const float tn = spline_tau(slice_begin, chain_slice, chain_offset, t, b, in);
+  const float hp = !has_prev ? 0.0f : (i > 0 ? ti - tp : ti + period - tp);
+  const float hn = !has_next ? 0.0f : (i + 1 < n ? tn - ti : tn + period - ti);
+  const int vi = slice_begin[chain_slice[b + i]] + k, vp = slice_begin[chain_slice[b + ip]] + k,
+            vn = slice_begin[chain_slice[b + in]] + k;
+  const float spx = has_prev ? curve_slope(x[vp], x[vi], hp) : 0.0f;
+  const float snx = has_next ? curve_slope(x[vi], x[vn], hn) : 0.0f;
+  const float spy = has_prev ? curve_slope(y[vp], y[vi], hp) : 0.0f;
+  const float sny = has_next ? curve_slope(y[vi], y[vn], hn) : 0.0f;
+  float a = 0.0f, bb = 1.0f, c = 0.0f, dx = 0.0f, dy = 0.0f;
+  if (has_prev && has_next) {
+    a = hn, bb = 2.0f * (hp + hn), c = hp, dx = 3.0f * (hn * spx + hp * snx), dy = 3.0f * (hn * spy + hp * sny);
+  } else if (has_next) {
+    a = 0.0f, bb = 2.0f, c = 1.0f, dx = 3.0f * snx, dy = 3.0f * sny;
+  } else if (has_prev) {
+    a = 1.0f, bb = 2.0f, c = 0.0f, dx = 3.0f * spx, dy = 3.0f * spy;
+  }
+  if (!(bb > 0.0f)) a = 0.0f, bb = 1.0f, c = 0.0f, dx = 0.0f, dy = 0.0f;
+  *ra = a, *rb = bb, *rc = c, *rdx = dx, *rdy = dy;
+}
+
+/** The C2 spline's tangents, one work-item per track (vertex k of every slice on one chain; reference
+ * curve_tangents with spline_tangents): Thomas' algorithm, and on a closed chain the Sherman–Morrison
+ * correction for its corners. The eliminated right-hand sides live in the tangents themselves, the sweep's
+ * ratios in cp and the correction's column in z (per vertex). A chain's entry with an alias (a looping
+ * element's first slice) hands its tangents on. */
+__kernel void curve_spline_tangents(const int tracks,
+                                    __global const int* track_vertex,   /* input: per track */
+                                    __global const int* track_chain,    /* input: per track */
+                                    __global const int* chain_begin,    /* input: chains + 1 */
+                                    __global const int* chain_slice,    /* input: per entry */
+                                    __global const float* chain_offset, /* input: per entry */
+                                    __global const int* chain_alias,    /* input: per entry, -1 for none */
+                                    __global const float* chain_period, /* input: per chain */
+                                    __global const int* slice_begin,    /* input: slices + 1 */
+                                    __global const float* x,
+                                    __global const float* y,
+                                    __global const float* t, /* input: positions */
+                                    __global float* cp,
+                                    __global float* z,           /* scratch: per vertex */
+                                    __global float* tangent_x,   /* output: per vertex */
+                                    __global float* tangent_y) { /* output: per vertex */
+  const int track = get_global_id(0);
+  if (track >= tracks) return;
+  const int c = track_chain[track], b = chain_begin[c], n = chain_begin[c + 1] - b;
+  const int k = track_vertex[track] - slice_begin[chain_slice[b]];
+  const float period = chain_period[c];
+  if (n < 2) {
+    for (int i = 0; i < n; ++i) {
+      const int v = slice_begin[chain_slice[b + i]] + k;
+      tangent_x[v] = 0.0f, tangent_y[v] = 0.0f;
+      if (chain_alias[b + i] >= 0) {
+        const int a = slice_begin[chain_alias[b + i]] + k;
+        tangent_x[a] = 0.0f, tangent_y[a] = 0.0f;
+      }
+    }
+    return;
+  }
+  const bool closed = period > 0.0f;
+  float gamma = 0.0f, alpha = 0.0f, beta = 0.0f;
+  float ra, rb, rc, rdx, rdy;
+  if (closed) {
+    spline_row(0, n, period, b, k, slice_begin, chain_slice, chain_offset, x, y, t, &ra, &rb, &rc, &rdx, &rdy);
+    gamma = -rb, beta = ra;
+    spline_row(n - 1, n, period, b, k, slice_begin, chain_slice, chain_offset, x, y, t, &ra, &rb, &rc, &rdx, &rdy);
+    alpha = rc;
+  }
+  int prev = -1;
+  for (int i = 0; i < n; ++i) {
+    const int v = slice_begin[chain_slice[b + i]] + k;
+    spline_row(i, n, period, b, k, slice_begin, chain_slice, chain_offset, x, y, t, &ra, &rb, &rc, &rdx, &rdy);
+    float u = 0.0f;
+    if (closed) {
+      if (i == 0) rb = rb - gamma, ra = 0.0f, u = gamma;
+      if (i == n - 1) rb = rb - alpha * beta / gamma, rc = 0.0f, u = alpha;
+    }
+    if (i == 0) {
+      cp[v] = rc / rb;
+      tangent_x[v] = rdx / rb, tangent_y[v] = rdy / rb, z[v] = u / rb;
+    } else {
+      const float den = rb - ra * cp[prev];
+      cp[v] = rc / den;
+      tangent_x[v] = (rdx - ra * tangent_x[prev]) / den, tangent_y[v] = (rdy - ra * tangent_y[prev]) / den;
+      z[v] = (u - ra * z[prev]) / den;
+    }
+    prev = v;
+  }
+  for (int i = n - 2; i >= 0; --i) {
+    const int v = slice_begin[chain_slice[b + i]] + k, w = slice_begin[chain_slice[b + i + 1]] + k;
+    tangent_x[v] = tangent_x[v] - cp[v] * tangent_x[w], tangent_y[v] = tangent_y[v] - cp[v] * tangent_y[w];
+    z[v] = z[v] - cp[v] * z[w];
+  }
+  if (closed) {
+    const int v0 = slice_begin[chain_slice[b]] + k, vl = slice_begin[chain_slice[b + n - 1]] + k;
+    const float den = 1.0f + z[v0] + beta * z[vl] / gamma;
+    const float fx = (tangent_x[v0] + beta * tangent_x[vl] / gamma) / den;
+    const float fy = (tangent_y[v0] + beta * tangent_y[vl] / gamma) / den;
+    for (int i = 0; i < n; ++i) {
+      const int v = slice_begin[chain_slice[b + i]] + k;
+      tangent_x[v] = tangent_x[v] - fx * z[v], tangent_y[v] = tangent_y[v] - fy * z[v];
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (chain_alias[b + i] >= 0) {
+      const int v = slice_begin[chain_slice[b + i]] + k, a = slice_begin[chain_alias[b + i]] + k;
+      tangent_x[a] = tangent_x[v], tangent_y[a] = tangent_y[v];
+    }
 }

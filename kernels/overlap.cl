@@ -55,7 +55,14 @@ ap_floatv curve_value_lanes(const ap_floatv x0,
                             const ap_floatv m1,
                             const CurveBasis b) {
   ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
-  const ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
+  ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
+  if (b.spline) {
+    const ap_floatv p = x0 + (b.h * m0) / 3.0f, q = x1 + ((-b.h) * m1) / 3.0f;
+    lo = select(lo, p, p < lo);
+    lo = select(lo, q, q < lo);
+    hi = select(hi, p, hi < p);
+    hi = select(hi, q, hi < q);
+  }
   v = select(v, lo, v < lo);
   v = select(v, hi, hi < v);
   return v;
@@ -63,13 +70,20 @@ ap_floatv curve_value_lanes(const ap_floatv x0,
 #endif
 
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
- * slice. */
+ * slice. On the spline (mode AP_CURVE_SPLINE) it also holds each boundary vertex's Bézier handles towards
+ * its element's neighbouring slices, so that two slices' boxes hold the curve between them (reference
+ * slice_boxes). */
 __kernel void slice_boxes(const WorldInfo world,
-                          __global const int* slice_begin,    /* input: slices + 1 */
-                          __global const int* slice_boundary, /* input: boundary vertices per slice */
+                          __global const int* slice_begin,         /* input: slices + 1 */
+                          __global const int* slice_boundary,      /* input: boundary vertices per slice */
+                          __global const int* slice_element,       /* input: per slice */
+                          __global const int* element_slice_begin, /* input: elements + 1 */
                           __global const float* x,
-                          __global const float* y, /* input: positions */
-                          __global const float* t, /* input */
+                          __global const float* y,         /* input: positions */
+                          __global const float* t,         /* input */
+                          __global const float* tangent_x, /* input: curve_tangents, per vertex */
+                          __global const float* tangent_y, /* input */
+                          const int mode,                  /* input: ForceParams.motion_curve */
                           __global float* box_x0,
                           __global float* box_y0, /* output: per slice */
                           __global float* box_x1,
@@ -87,6 +101,21 @@ __kernel void slice_boxes(const WorldInfo world,
       x1 = x[v] > x1 ? x[v] : x1;
       y0 = y[v] < y0 ? y[v] : y0;
       y1 = y[v] > y1 ? y[v] : y1;
+    }
+    if (mode == AP_CURVE_SPLINE) {
+      const int e = slice_element[s];
+      for (int side = 0; side < 2; ++side) {
+        const int q = side == 0 ? s - 1 : s + 1;
+        if (q < element_slice_begin[e] || q >= element_slice_begin[e + 1]) continue;
+        const float h = q > s ? t[slice_begin[q]] - t[lo] : -(t[lo] - t[slice_begin[q]]);
+        for (int v = lo; v < lo + count; ++v) {
+          const float hx = curve_handle(x[v], tangent_x[v], h), hy = curve_handle(y[v], tangent_y[v], h);
+          x0 = hx < x0 ? hx : x0;
+          x1 = hx > x1 ? hx : x1;
+          y0 = hy < y0 ? hy : y0;
+          y1 = hy > y1 ? hy : y1;
+        }
+      }
     }
   }
   box_x0[s] = x0, box_y0[s] = y0, box_x1[s] = x1, box_y1[s] = y1;
@@ -294,7 +323,7 @@ uchar overlap_point(int own,
                     __global const float* t,
                     __global const float* mx,
                     __global const float* my,
-                    bool cubic,
+                    int mode,
                     __global const float* growth,
                     __global const uchar* element_secondary,
                     const OverlapGridInfo grid,
@@ -320,7 +349,7 @@ uchar overlap_point(int own,
                                      box_y0, box_x1, box_y1, &w);
     if (s < 0) continue;
     const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
-    const CurveBasis b = curve_basis(w, t[hi] - t[lo], cubic);
+    const CurveBasis b = curve_basis(w, t[hi] - t[lo], mode);
     bool inside, crosses;
     overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
     /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
@@ -389,7 +418,7 @@ uchar overlap_test(int v,
                    __global const float* t,
                    __global const float* mx,
                    __global const float* my,
-                   bool cubic,
+                   int mode,
                    __global const float* growth,
                    __global const uchar* element_secondary,
                    const OverlapGridInfo grid,
@@ -409,7 +438,7 @@ uchar overlap_test(int v,
   *out_y = 0.0f;
   const float own_g = growth[own_slice];
   uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
-                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx, my, cubic,
+                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx, my, mode,
                               growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   const float denominator = (float)(interval_points + 1);
@@ -423,14 +452,13 @@ uchar overlap_test(int v,
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
       const float f = (float)j / denominator;
       const float mt = t[v] + (t[w] - t[v]) * f;
-      const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, t[hi] - t[lo], cubic);
+      const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, t[hi] - t[lo], mode);
       float px, py, nx, ny;
       curve_point(x, y, mx, my, lo, hi, k, b, &px, &py);
       curve_point(x, y, mx, my, lo, hi, kn, b, &nx, &ny);
-      found =
-          overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, px, py, mt, nx, ny, elements,
-                        element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx,
-                        my, cubic, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
+      found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, px, py, mt, nx, ny, elements,
+                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
+                            mx, my, mode, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
       overlap_fold(found, near2, qx, qy, px, py, &bits, &depth2, out_x, out_y);
     }
   }

@@ -260,7 +260,7 @@ __kernel void repulsion_force(const GridInfo grid,
   float way_out_x, way_out_y;
   const uchar bits =
       overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                   box_x0, box_y0, box_x1, box_y1, x, y, t, tangent_x, tangent_y, p.motion_curve != 0, growth,
+                   box_x0, box_y0, box_x1, box_y1, x, y, t, tangent_x, tangent_y, p.motion_curve, growth,
                    element_secondary, overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;

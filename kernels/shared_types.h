@@ -38,6 +38,11 @@ typedef float ap_float;
 /* SpringClass values (element.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
 #define AP_SPRING_CLASSES 5
 
+/* ForceParams.motion_curve: the curve between slices (include/animpak/curve.hpp, CurveMode). */
+#define AP_CURVE_LINEAR 0
+#define AP_CURVE_MONOTONE 1
+#define AP_CURVE_SPLINE 2
+
 /* Work-group size of every kernel: PoCL compiles one kernel per local size, so it never varies. */
 #define AP_LOCAL_SIZE 64
 
@@ -100,7 +105,8 @@ typedef struct {
   ap_float wall_range2;        /* wall_range * wall_range */
   ap_float settle_shrink_step; /* settle_shrink_rate * dt */
   ap_int interval_points;      /* times the overlap test checks inside each slice interval */
-  ap_int motion_curve;         /* 1: the monotone cubic between slices (kernels/curve.cl); 0: straight lines */
+  ap_int motion_curve;         /* AP_CURVE_SPLINE (2): the C2 spline between slices (kernels/curve.cl); 1: the
+                                * monotone cubic; 0: straight lines */
   ap_float k_mirror;           /* wall_mirror * k_repulsion: the wall as the element's mirror image; 0 off */
 } ForceParams;
 

@@ -58,13 +58,13 @@ inline constexpr double slice_advice_tolerance = 0.01;
 /// How many slices the scripted motion in `spec` needs (docs/parameters.md, "How many slices a motion
 /// needs"): `slices`, about the fewest with which the curve between slices keeps every vertex within
 /// slice_advice_tolerance of the script (0: it barely moves, any count will do); `error`, the largest
-/// distance at `slices_now` slices, in the same units.
+/// distance at `slices_now` slices, in the same units; `mode` is the curve (`motion_curve`, CurveMode).
 struct SliceAdvice {
   int slices = 0;
   double error = 0.0;
 };
 SliceAdvice slice_advice(const SliceMesh& mesh, const Outline& outline, const ArtFrame& frame,
-                         const AnimationSpec& spec, int slices_now);
+                         const AnimationSpec& spec, int slices_now, int mode = 2);
 
 /// The warning for an element whose scripted motion needs more slices than it was built with (its
 /// slices_needed above its slice_count), naming it, the error and the advised count; empty otherwise.

@@ -60,10 +60,11 @@ struct Params {
     int grid_rebuild_interval = 1;   ///< rebuild the collision grid every k steps
     int far_cells = 1;               ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
                                      ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
-    int interval_points = 3;         ///< the overlap test also checks this many evenly spaced times inside
+    int interval_points = 7;         ///< the overlap test also checks this many evenly spaced times inside
                                      ///< every slice interval (1: the middle only; docs/parameters.md)
-    int motion_curve = 1;            ///< between slices every vertex follows 1: a monotone C1 cubic through
-                                     ///< its slices, 0: straight lines (§6); include/animpak/curve.hpp
+    int motion_curve = 2;            ///< between slices every vertex follows 2: the C2 spline through its
+                                     ///< slices, 1: a monotone C1 cubic, 0: straight lines (§6);
+                                     ///< include/animpak/curve.hpp
   };
 
   /// §5.3 growth (src/solver).

@@ -122,11 +122,13 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
                                 const std::vector<std::int32_t>& far, bool overlapping);
 
 /// Per global slice, the box of its boundary polygon (x0 ≤ x ≤ x1, y0 ≤ y ≤ y1) and its t (its first
-/// vertex's), from one snapshot of positions. overlap.cpp.
+/// vertex's), from one snapshot of positions. On the spline (`tangents` with mode curve_spline) the box
+/// also holds each boundary vertex's Bézier handles towards its element's neighbouring slices
+/// (curve_handle), so that the union of two slices' boxes holds the curve between them. overlap.cpp.
 struct SliceBoxes {
   std::vector<float> x0, y0, x1, y1, t;
 };
-void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out);
+void slice_boxes(const Topology& topo, const SimState& state, const CurveTangents& tangents, SliceBoxes& out);
 
 /// The overlap test's broadphase (docs/architecture.md, "The overlap test"): a uniform (x, y, t) cell
 /// grid over every slice pair's box (the union of its two slices' boxes, from t of one slice to t of
@@ -166,10 +168,10 @@ struct OverlapResult {
                                      ///< except a secondary one when v's element is primary
 };
 
-/// Every vertex's tangent at its slice (include/animpak/curve.hpp: Steffen's, across the loop seam by
-/// `links`), from one snapshot; `cubic` false weighs them by nothing (straight lines). curve.cpp.
-void curve_tangents(const Topology& topo, const CurveLinks& links, const SimState& state, bool cubic,
-                    CurveTangents& out);
+/// Every vertex's tangent at its slice (include/animpak/curve.hpp), across the loop seam by `links`, from
+/// one snapshot: the C2 spline's (`mode` curve_spline), Steffen's (curve_monotone), or Steffen's weighed by
+/// nothing (curve_linear: straight lines). curve.cpp.
+void curve_tangents(const Topology& topo, const CurveLinks& links, const SimState& state, int mode, CurveTangents& out);
 
 /// The overlap test of Eq. 3, at any depth: boundary vertex v (and its boundary edge to the next boundary
 /// vertex of its slice) against every other element's boundary polygon on its curve at v's t (`tangents`),

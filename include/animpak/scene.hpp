@@ -80,8 +80,9 @@ struct World {
   std::vector<SpacetimeElement> library;  ///< built once per library entry, full size, animated
   std::vector<ElementInstance> elements;
   Topology topology;
-  CurveLinks curve;  ///< curve_links(topology): where each slice's curve continues, for the frames
-  SimState state;    ///< the initial state: shrunken elements at rest, g = 1
+  CurveLinks curve;    ///< curve_links(topology): where each slice's curve continues, for the frames
+  CurveChains chains;  ///< curve_chains(topology, curve): the spline's tracks, for the frames
+  SimState state;      ///< the initial state: shrunken elements at rest, g = 1
   Params params;
   std::uint64_t seed = 1;
   bool loop = true;

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "animpak/curve.hpp"
 #include "animpak/error.hpp"
 #include "animpak/version.hpp"
 #include "evenness_output.hpp"
@@ -327,6 +328,22 @@ std::string add_still_reference(const std::filesystem::path& file, const StillRe
        << 100.0 * still.coverage << " %; the lowest frame here covers " << std::setprecision(2) << lowest
        << " of that, the mean " << mean << "\n";
   return line.str();
+}
+
+std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, const std::string& scene_text) {
+  const nlohmann::json scene = nlohmann::json::parse(scene_text, nullptr, false);
+  if (scene.is_object() && scene.contains("params") && scene["params"].is_object() &&
+      scene["params"].contains("motion_curve"))
+    return std::nullopt;  // the scene names its curve: that is the one it was packed on
+  std::ifstream in(stats_file);
+  if (!in) return std::nullopt;
+  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  if (stats.is_discarded() || !stats.is_object() || !stats.contains("animpak") || !stats["animpak"].is_string())
+    return std::nullopt;
+  int major = 0, minor = 0;
+  if (std::sscanf(stats["animpak"].get<std::string>().c_str(), "%d.%d", &major, &minor) != 2) return std::nullopt;
+  if (major > 0 || minor >= 8) return std::nullopt;
+  return minor >= 4 ? curve_monotone : curve_linear;
 }
 
 std::optional<StillReference> stored_still_reference(const std::filesystem::path& file) {

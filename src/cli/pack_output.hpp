@@ -69,6 +69,12 @@ std::string add_still_reference(const std::filesystem::path& file, const StillRe
 /// keeps the comparison, its ratios taken anew for the frames it draws.
 std::optional<StillReference> stored_still_reference(const std::filesystem::path& file);
 
+/// The curve between slices a folder was packed on when it is not today's default: a folder whose
+/// stats.json says 0.4.0 to 0.7.0 packed it was packed on the monotone cubic (`motion_curve` 1), one
+/// before 0.4.0 on straight lines (0), unless its scene names `motion_curve`. Nothing for a folder packed
+/// by 0.8.0 or later, without stats.json, or whose scene names the curve.
+std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, const std::string& scene_text);
+
 /// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
 struct QualitySummary {
   int times = 0;

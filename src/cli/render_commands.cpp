@@ -244,11 +244,18 @@ int render(const RenderOptions& options) {
   std::optional<StillReference> still;
   if (options.still_reference) still = read_still_reference(*options.still_reference);
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
-  LoadedWorld loaded =
-      world_from_checkpoint(checkpoint, true, packed_scene(options.dir, checkpoint, options.scene, options.force));
+  const PackedScene packed = packed_scene(options.dir, checkpoint, options.scene, options.force);
+  LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed);
+  const std::filesystem::path stats = options.dir / "stats.json";
+  // The frames show the curve the solver kept the elements apart on: an older folder's own.
+  if (const std::optional<int> curve = packed_motion_curve(stats, packed.text)) {
+    loaded.world.params.forces.motion_curve = *curve;
+    std::cerr << "animpak: " << stats.string() << " says an older animpak packed this folder, on "
+              << (*curve == 1 ? "the monotone cubic" : "straight lines") << " between slices; rendering on it ("
+              << "\"motion_curve\": " << *curve << "; the scene's params can name another)\n";
+  }
   const PackingQuality quality = render_frames(loaded.world, options.dir, options.frames);
   std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
-  const std::filesystem::path stats = options.dir / "stats.json";
   if (!quality.frames.empty() && !update_stats_quality(stats, checkpoint, loaded.world, quality))
     std::cerr << "animpak: warning: " << stats.string()
               << " is not a JSON object; left as it is, without these frames' metrics (delete it to have a new "

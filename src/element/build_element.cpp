@@ -19,7 +19,8 @@ SpacetimeElement build_element(const std::string& name, const ArtShape& art, con
     // The animation's messages name the field; the element and its art file say which scene entry.
     throw InputError("element '" + name + "' (" + art.source.string() + "): " + e.what());
   }
-  const SliceAdvice advice = slice_advice(slice, outline, normalized.frame, spec, params.element.slices);
+  const SliceAdvice advice =
+      slice_advice(slice, outline, normalized.frame, spec, params.element.slices, params.forces.motion_curve);
   SpacetimeElement element = extrude(name, std::move(normalized), std::move(binding), std::move(slice), per_slice);
   element.notes = std::move(outline.notes);
   element.slices_needed = advice.slices;

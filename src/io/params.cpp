@@ -92,10 +92,10 @@ const std::array<ParamInfo, 46> table{{
     {"interval_points", "forces", field<&Params::forces, &Params::Forces::interval_points>(), 1, 15,
      "times the overlap test checks inside each slice interval, evenly spaced (paper §8)",
      "none: slices only (§8: future work)"},
-    {"motion_curve", "forces", field<&Params::forces, &Params::Forces::motion_curve>(), 0, 1,
-     "between slices every vertex follows 1: a monotone cubic through its slices (C1, no jolt at a slice); "
-     "0: straight lines. The frames, the animated files' keys, the quality measures and the overlap test "
-     "all use it",
+    {"motion_curve", "forces", field<&Params::forces, &Params::Forces::motion_curve>(), 0, 2,
+     "between slices every vertex follows 2: the C2 cubic spline through its slices (no jump of speed or "
+     "acceleration at a slice); 1: a monotone cubic (C1, 0.4.0 to 0.7.0); 0: straight lines. The frames, the "
+     "animated files' keys, the quality measures and the overlap test all use it",
      "straight lines (§6)"},
     {"growth_rate", "growth", field<&Params::growth, &Params::Growth::growth_rate>(), 0.0, inf,
      "g += growth_rate · Δt_sim per free step (§5.3)", "g += 0.001 Δt_sim per free step (§5.3)"},

@@ -60,15 +60,16 @@ constexpr double key_tolerance_share = 0.003;
 // The number of equal parts of the interval [ta, tb] between two slices in which the curve at the middle
 // of every part lies within `tolerance` of the straight line between the part's ends, for every vertex of
 // the element: the fewest power of two, at most 64.
-int key_parts(const World& world, const SimState& state, int element, double ta, double tb, double tolerance) {
+int key_parts(const World& world, const SimState& state, int element, const std::vector<Vec2>& tangents, double ta,
+              double tb, double tolerance) {
   constexpr int most = 64;
   for (int parts = 1; parts < most; parts *= 2) {
     double worst = 0.0;
-    std::vector<Vec2> a = element_at(world, state, element, ta);
+    std::vector<Vec2> a = element_at(world, state, element, ta, tangents);
     for (int j = 0; j < parts && worst <= tolerance; ++j) {
       const double t0 = ta + (tb - ta) * j / parts, t1 = ta + (tb - ta) * (j + 1) / parts;
-      const std::vector<Vec2> b = element_at(world, state, element, t1);
-      const std::vector<Vec2> m = element_at(world, state, element, 0.5 * (t0 + t1));
+      const std::vector<Vec2> b = element_at(world, state, element, t1, tangents);
+      const std::vector<Vec2> m = element_at(world, state, element, 0.5 * (t0 + t1), tangents);
       for (std::size_t v = 0; v < m.size(); ++v)
         worst = std::max(worst, std::hypot(m[v].x - 0.5 * (a[v].x + b[v].x), m[v].y - 0.5 * (a[v].y + b[v].y)));
       a = b;
@@ -206,10 +207,11 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   const Box box = world.container.bounds();
   const double pixels =
       fit_to_picture(raster_width(box, out.style.size), out.style.size, box, 0.02 * out.style.size).scale;
-  const bool cubic = world.params.forces.motion_curve != 0;
+  const bool cubic = world.params.forces.motion_curve != curve_linear;
+  const std::vector<Vec2> tangents = element_tangents(world, state, element);
   double tolerance = key_tolerance_px / pixels;
   if (cubic) {
-    const std::vector<Vec2> start = element_at(world, state, element, 0.0);
+    const std::vector<Vec2> start = element_at(world, state, element, 0.0, tangents);
     double x0 = start.front().x, x1 = x0, y0 = start.front().y, y1 = y0;
     for (const Vec2& p : start)
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
@@ -229,12 +231,12 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
     if (!times.empty() && frame_of(t) <= frame_of(times.back())) continue;
     if (cubic && !times.empty()) {
       const double before = times.back();
-      const int candidates = std::max(8, 2 * key_parts(world, state, element, before, t, tolerance));
+      const int candidates = std::max(8, 2 * key_parts(world, state, element, tangents, before, t, tolerance));
       for (int j = 1; j < candidates; ++j) {
         const double tj = before + (t - before) * j / candidates;
         if (frame_of(tj) > frame_of(times.back()) && frame_of(tj) < frame_of(t)) {
           times.push_back(tj), slice.push_back(0);
-          art.push_back(element_art(world, element, element_at(world, state, element, tj)));
+          art.push_back(element_art(world, element, element_at(world, state, element, tj, tangents)));
         }
       }
     }

@@ -12,7 +12,55 @@ std::vector<double> frame_times(int count, bool loop) {
   return t;
 }
 
+std::vector<Vec2> element_tangents(const World& world, const SimState& state, int element) {
+  const ElementInstance& inst = world.elements[element];
+  const SpacetimeElement& lib = world.library[inst.library];
+  const int P = lib.vertices_per_slice(), n = lib.slice_count;
+  std::vector<Vec2> out(static_cast<std::size_t>(P) * n);
+  const int mode = world.params.forces.motion_curve;
+  if (mode == curve_linear || n < 2) return out;
+  const Topology& topo = world.topology;
+  // build_world fills world.curve; a World put together by hand gets its links here.
+  CurveLinks own;
+  if (world.curve.prev.size() != std::size_t(topo.slice_count())) own = curve_links(topo);
+  const CurveLinks& links = own.prev.empty() ? world.curve : own;
+  if (mode == curve_monotone) {
+    for (int s = 0; s < n; ++s)
+      for (int v = 0; v < P; ++v) {
+        Vec2& m = out[static_cast<std::size_t>(s) * P + v];
+        curve_vertex_tangent(topo, links, state, inst.slice_begin + s, v, m.x, m.y);
+      }
+    return out;
+  }
+  // The spline: every track of the chain this element's slices lie on, solved in double as the solver
+  // solves it in float (include/animpak/curve.hpp, spline_tangents).
+  CurveChains own_chains;
+  if (world.chains.chain.size() != std::size_t(topo.slice_count())) own_chains = curve_chains(topo, links);
+  const CurveChains& chains = own_chains.chain.empty() ? world.chains : own_chains;
+  const std::int32_t c = chains.chain[inst.slice_begin], b = chains.begin[c], len = chains.begin[c + 1] - b;
+  std::vector<double> mx(len), my(len), cp(len), z(len);
+  for (int v = 0; v < P; ++v) {
+    const auto vertex = [&](std::int32_t i) { return topo.slice_begin[chains.slice[b + i]] + v; };
+    const auto tau = [&](std::int32_t i) {
+      return double(state.t[topo.slice_begin[chains.slice[b + i]]]) + double(chains.offset[b + i]);
+    };
+    const auto x = [&](std::int32_t i) { return double(state.x[vertex(i)]); };
+    const auto y = [&](std::int32_t i) { return double(state.y[vertex(i)]); };
+    spline_tangents<double>(len, double(chains.period[c]), tau, x, y, mx, my, cp, z);
+    for (int s = 0; s < n; ++s) {
+      const std::int32_t i = chains.entry[inst.slice_begin + s] - b;
+      out[static_cast<std::size_t>(s) * P + v] = {mx[i], my[i]};
+    }
+  }
+  return out;
+}
+
 std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf) {
+  return element_at(world, state, element, tf, element_tangents(world, state, element));
+}
+
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
+                             const std::vector<Vec2>& tangents) {
   const ElementInstance& inst = world.elements[element];
   const SpacetimeElement& lib = world.library[inst.library];
   const int P = lib.vertices_per_slice(), n = lib.slice_count;
@@ -27,25 +75,13 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   }
   const double t0 = slice_t(s), t1 = slice_t(s + 1);
   const double w = t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
-  // The curve the overlap test walks (include/animpak/curve.hpp), in double: the slices of this interval
-  // and, for the tangents, the ones before and after it, across the loop seam.
-  const Topology& topo = world.topology;
-  // build_world fills world.curve; a World put together by hand gets its links here.
-  CurveLinks own;
-  if (world.curve.prev.size() != std::size_t(topo.slice_count())) own = curve_links(topo);
-  const CurveLinks& links = own.prev.empty() ? world.curve : own;
-  const int g0 = inst.slice_begin + s, g1 = g0 + 1;
-  const bool cubic = world.params.forces.motion_curve != 0;
-  const CurveBasis<double> basis = curve_basis(w, t1 - t0, cubic);
-  // The tangent of vertex k of global slice g, in double.
-  const auto tangent = [&](int g, int k) {
-    Vec2 m;
-    curve_vertex_tangent(topo, links, state, g, k, m.x, m.y);
-    return m;
-  };
+  // The curve the overlap test walks (include/animpak/curve.hpp), in double, with the tangents at this
+  // interval's two slices.
+  const CurveBasis<double> basis = curve_basis(w, t1 - t0, world.params.forces.motion_curve);
   for (int v = 0; v < P; ++v) {
     const int a = inst.vertex_begin + s * P + v, b = a + P;
-    const Vec2 ma = cubic ? tangent(g0, v) : Vec2{}, mb = cubic ? tangent(g1, v) : Vec2{};
+    const Vec2 ma = tangents[static_cast<std::size_t>(s) * P + v],
+               mb = tangents[static_cast<std::size_t>(s + 1) * P + v];
     out[v] = {curve_value<double>(state.x[a], state.x[b], ma.x, mb.x, basis),
               curve_value<double>(state.y[a], state.y[b], ma.y, mb.y, basis)};
   }

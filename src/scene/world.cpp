@@ -198,6 +198,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   }
 
   world.curve = curve_links(topo);
+  world.chains = curve_chains(topo, world.curve);
 
   SimState& state = world.state;
   const std::size_t n = state.x.size();

@@ -11,6 +11,7 @@
 #include <iterator>
 #include <string>
 
+#include "pack_output.hpp"
 #include "packed_folder.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"
@@ -247,4 +248,47 @@ TEST_CASE("animpak render: a manifest naming a file outside input/art is refused
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Contains("not a manifest this animpak reads"));
   }
+}
+
+TEST_CASE(
+    "packed_motion_curve: a folder packed by 0.4.0 to 0.7.0 renders on its monotone cubic, an older one on "
+    "straight lines, unless its scene names the curve") {
+  const animpak::test::TempDir dir("animpak-folder-curve-");
+  const fs::path stats = dir / "stats.json";
+  const auto packed_by = [&](const std::string& version) {
+    std::ofstream(stats) << R"({"animpak": ")" << version << R"("})";
+  };
+  const std::string plain = R"({"elements": [], "params": {"offset": 0.02}})";
+  CHECK_FALSE(animpak::cli::packed_motion_curve(stats, plain).has_value());  // no stats.json
+  packed_by("0.7.0");
+  CHECK(animpak::cli::packed_motion_curve(stats, plain) == 1);
+  packed_by("0.4.0");
+  CHECK(animpak::cli::packed_motion_curve(stats, plain) == 1);
+  packed_by("0.3.0");
+  CHECK(animpak::cli::packed_motion_curve(stats, plain) == 0);
+  packed_by("0.8.0");
+  CHECK_FALSE(animpak::cli::packed_motion_curve(stats, plain).has_value());
+  packed_by("1.0.0");
+  CHECK_FALSE(animpak::cli::packed_motion_curve(stats, plain).has_value());
+  packed_by("0.7.0");
+  CHECK_FALSE(animpak::cli::packed_motion_curve(stats, R"({"params": {"motion_curve": 2}})").has_value());
+}
+
+TEST_CASE("animpak render: says when it renders an older folder on the curve it was packed on") {
+  const ArtBox box("older");
+  const std::string out = box.path("out");
+  REQUIRE(run_animpak("pack " + box.scene() + " --out " + out +
+                      " --device reference --max-iterations 5 --frames 2"
+                      " --size 16 --format png")
+              .code == 0);
+  const CommandResult today = run_animpak("render " + out + " --frames 2 --size 16 --format png");
+  REQUIRE(today.code == 0);
+  CHECK_FALSE(today.err.find("older animpak") != std::string::npos);
+  nlohmann::json stats = nlohmann::json::parse(file_bytes(out + "/stats.json"));
+  stats["animpak"] = "0.7.0";
+  std::ofstream(out + "/stats.json") << stats.dump();
+  const CommandResult older = run_animpak("render " + out + " --frames 2 --size 16 --format png");
+  REQUIRE(older.code == 0);
+  CHECK_THAT(older.err, Contains("older animpak packed this folder, on the monotone cubic"));
+  CHECK_THAT(older.err, Contains("\"motion_curve\": 1"));
 }

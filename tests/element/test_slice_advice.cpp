@@ -35,15 +35,23 @@ TEST_CASE("slice_advice: a turn needs about as many slices as its corners' chord
   const SliceAdvice one = slice_advice(square(), square_outline(), ArtFrame{}, rotate(1), 6);
   const SliceAdvice two = slice_advice(square(), square_outline(), ArtFrame{}, rotate(2), 6);
   INFO("one turn: " << one.slices << " slices, two: " << two.slices);
-  // A corner 0.28 from the pivot: a coordinate held flat over an interval of angle a misses the circle by
-  // up to 0.28 (1 − cos(a / 2)), which is 1 % at a = 0.54 rad, about 12 intervals a turn. The curve does
-  // better where no coordinate turns, so fewer may do; never more than twice that.
-  CHECK(one.slices >= 5);
-  CHECK(one.slices <= 26);
+  // A corner 0.28 from the pivot. The periodic spline through n equally spaced points of a circle misses it
+  // by about r·(2π/n)⁴/... : 1 % of the size takes 5 slices a turn (4 intervals), where the monotone cubic,
+  // which holds a turning coordinate flat, needs about 12 intervals (0.28 (1 − cos(a / 2)) = 1 % at a =
+  // 0.54 rad), and the chord more.
+  CHECK(one.slices >= 4);
+  CHECK(one.slices <= 8);
   CHECK(two.slices >= one.slices + (one.slices - 1) / 2);
   CHECK(two.slices <= 2 * one.slices + 1);
-  // At 6 slices a turn is far off; at the advised count it holds.
-  CHECK(one.error > slice_advice_tolerance);
+  // At 4 slices a turn is far off; at the advised count it holds.
+  const SliceAdvice few = slice_advice(square(), square_outline(), ArtFrame{}, rotate(1), 4);
+  CHECK(few.error > slice_advice_tolerance);
   CHECK(slice_advice(square(), square_outline(), ArtFrame{}, rotate(1), one.slices).error <= slice_advice_tolerance);
   CHECK(slice_advice(square(), square_outline(), ArtFrame{}, rotate(2), two.slices).error <= slice_advice_tolerance);
+  // The monotone cubic (motion_curve 1) needs more for the same turn.
+  const SliceAdvice monotone = slice_advice(square(), square_outline(), ArtFrame{}, rotate(1), 6, 1);
+  INFO("monotone: " << monotone.slices << " slices");
+  CHECK(monotone.slices > one.slices + 3);
+  CHECK(monotone.slices <= 26);
+  CHECK(monotone.error > slice_advice_tolerance);
 }

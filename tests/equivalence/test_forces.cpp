@@ -70,7 +70,9 @@ struct BroadphaseUse {
 
 BroadphaseUse broadphase_use(const TinyWorld& w) {
   reference::SliceBoxes boxes;
-  reference::slice_boxes(w.topo, w.state, boxes);
+  CurveTangents tangents;
+  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, Params{}.forces.motion_curve, tangents);
+  reference::slice_boxes(w.topo, w.state, tangents, boxes);
   reference::OverlapGrid g;
   reference::build_overlap_grid(w.topo, boxes, g);
   BroadphaseUse u;

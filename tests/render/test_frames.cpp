@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "animpak/curve.hpp"
 #include "animpak/render.hpp"
 #include "tiny_world.hpp"
 
@@ -43,9 +44,45 @@ TEST_CASE("element_at: linear between the slices whose t bracket the frame time,
   CHECK(element_at(world, state, 0, 0.45).size() == world.library[world.elements[0].library].slice.vertices.size());
 }
 
-TEST_CASE("element_at: on the curve, through the slices, between their values, a straight track kept straight") {
+TEST_CASE("element_at: on the spline, through the slices, with no jump of speed or acceleration at them") {
   World world = tiny_star_world();
-  REQUIRE(world.params.forces.motion_curve == 1);
+  REQUIRE(world.params.forces.motion_curve == curve_spline);
+  SimState& state = world.state;
+  const ElementInstance& inst = world.elements[1];
+  const int P = world.library[inst.library].vertices_per_slice();
+  // The world loops: the last slice is the first (the loop constraint), x and y go round a triangle.
+  const float xs[] = {0.2f, 0.1f, 0.3f, 0.2f}, ys[] = {0.2f, 0.3f, 0.25f, 0.2f};
+  for (int s = 0; s < 4; ++s)
+    for (int v = 0; v < P; ++v) {
+      const int id = inst.vertex_begin + s * P + v;
+      state.t[id] = float(s) / 3.0f;
+      state.x[id] = xs[s];
+      state.y[id] = ys[s];
+    }
+  for (int s = 0; s < 4; ++s)
+    for (const Vec2& p : element_at(world, state, 1, s / 3.0)) {
+      CHECK(p.x == Approx(xs[s]).margin(1e-6));
+      CHECK(p.y == Approx(ys[s]).margin(1e-6));
+    }
+  // At the inner slices, the first and second differences just before and just after agree (the
+  // straight lines' speed jumps there by 0.3 and 0.9 per unit t).
+  const double d = 1e-3;
+  const auto x = [&](double t) { return element_at(world, state, 1, t).front().x; };
+  for (const double ts : {1.0 / 3.0, 2.0 / 3.0}) {
+    INFO("slice at t " << ts);
+    const double before = (x(ts) - x(ts - d)) / d, after = (x(ts + d) - x(ts)) / d;
+    CHECK(std::abs(after - before) < 0.02);
+    const double acc_before = (x(ts) - 2 * x(ts - d) + x(ts - 2 * d)) / (d * d);
+    const double acc_after = (x(ts + 2 * d) - 2 * x(ts + d) + x(ts)) / (d * d);
+    CHECK(std::abs(acc_after - acc_before) < 0.05 * (1.0 + std::abs(acc_before)));
+  }
+}
+
+TEST_CASE(
+    "element_at: on the monotone curve, through the slices, between their values, a straight track kept "
+    "straight") {
+  World world = tiny_star_world();
+  world.params.forces.motion_curve = curve_monotone;
   SimState& state = world.state;
   const ElementInstance& inst = world.elements[1];
   const int P = world.library[inst.library].vertices_per_slice();

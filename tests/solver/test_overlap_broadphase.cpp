@@ -90,7 +90,7 @@ TEST_CASE("overlap broadphase: every element the box test accepts is a candidate
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
     const test::TinyWorld w = spread_world(seed, 120, 5, 0.01f, 0.06f);
     SliceBoxes boxes;
-    slice_boxes(w.topo, w.state, boxes);
+    slice_boxes(w.topo, w.state, test::tangents(w), boxes);
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
     REQUIRE(grid.nx > 0);
@@ -128,7 +128,7 @@ TEST_CASE("overlap broadphase: the overlap test gives the same bits as a walk ov
   for (std::uint32_t seed = 5; seed <= 8; ++seed) {
     const test::TinyWorld w = spread_world(seed, 80, 6, 0.03f, 0.09f);
     SliceBoxes boxes;
-    slice_boxes(w.topo, w.state, boxes);
+    slice_boxes(w.topo, w.state, test::tangents(w), boxes);
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
     const OverlapGrid every;  // no cells: every query tries every element
@@ -153,7 +153,7 @@ TEST_CASE("overlap broadphase: a NaN box leaves the grid without cells") {
   test::TinyWorld w = spread_world(9, 10, 3, 0.02f, 0.05f);
   w.state.x[6] = std::numeric_limits<float>::quiet_NaN();  // the first vertex of slice 1: its box
   SliceBoxes boxes;
-  slice_boxes(w.topo, w.state, boxes);
+  slice_boxes(w.topo, w.state, test::tangents(w), boxes);
   OverlapGrid grid;
   build_overlap_grid(w.topo, boxes, grid);
   CHECK(grid.nx == 0);

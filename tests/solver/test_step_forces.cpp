@@ -104,7 +104,7 @@ TEST_CASE("step_forces: a vertex inside another element gets overlap instead of 
     ++inside;
     CHECK(same(parts.repulsion.at(v), Vec3f{}));
     SliceBoxes boxes;
-    slice_boxes(w.topo, w.state, boxes);
+    slice_boxes(w.topo, w.state, test::tangents(w), boxes);
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
     CHECK(same(parts.overlap.at(v), overlap_force(w.topo, w.state, p, v,

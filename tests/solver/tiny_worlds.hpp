@@ -224,10 +224,10 @@ inline std::vector<TinySlice> square_tube(float cx, float cy, float h, const std
   return slices;
 }
 
-/// The curve tangents of a world's state as the step computes them (default Params: the cubic).
-inline CurveTangents tangents(const TinyWorld& w, bool cubic = Params{}.forces.motion_curve != 0) {
+/// The curve tangents of a world's state as the step computes them (default Params: the spline).
+inline CurveTangents tangents(const TinyWorld& w, int mode = Params{}.forces.motion_curve) {
   CurveTangents m;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, cubic, m);
+  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, mode, m);
   return m;
 }
 

@@ -35,6 +35,12 @@ TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQue
   b.loop_end = in(topo.loop_end, "loop_end"), b.loop_start = in(topo.loop_start, "loop_start");
   const CurveLinks links = curve_links(topo);
   b.curve_prev = in(links.prev, "curve_prev"), b.curve_next = in(links.next, "curve_next");
+  const CurveChains chains = curve_chains(topo, links);
+  b.chain_begin = in(chains.begin, "chain_begin"), b.chain_slice = in(chains.slice, "chain_slice");
+  b.chain_offset = in(chains.offset, "chain_offset"), b.chain_alias = in(chains.alias, "chain_alias");
+  b.chain_period = in(chains.period, "chain_period");
+  b.track_vertex = in(chains.track_vertex, "track_vertex"), b.track_chain = in(chains.track_chain, "track_chain");
+  b.tracks = static_cast<std::int32_t>(chains.track_vertex.size());
   b.rest_copy_x = in(topo.rest_copy_x, "rest_copy_x"), b.rest_copy_y = in(topo.rest_copy_y, "rest_copy_y");
   b.rest_copy_t = in(topo.rest_copy_t, "rest_copy_t");
   b.rest_copy_cx = in(topo.slice_rest_copy_cx, "slice_rest_copy_cx");
@@ -71,6 +77,7 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
   w.box_t = scratch(fs, "slice_t");
   w.tangent_x = scratch(fn, "curve_tangent_x"), w.tangent_y = scratch(fn, "curve_tangent_y");
+  w.spline_cp = scratch(fn, "spline_cp"), w.spline_z = scratch(fn, "spline_z");
   w.proposed = scratch(fs, "proposed_growth");
   return w;
 }

@@ -35,6 +35,9 @@ struct TopologyBuffers {
   cl::Buffer seg_ax, seg_ay, seg_bx, seg_by, container_index;
   cl::Buffer loop_end, loop_start;
   cl::Buffer curve_prev, curve_next;  // curve_links: the slices before and after each slice
+  cl::Buffer chain_begin, chain_slice, chain_offset, chain_alias, chain_period;  // curve_chains: the spline's
+  cl::Buffer track_vertex, track_chain;                                          // tracks
+  std::int32_t tracks = 0;
   cl::Buffer rest_copy_x, rest_copy_y, rest_copy_t, rest_copy_cx, rest_copy_cy;
 };
 
@@ -49,7 +52,7 @@ struct ScratchBuffers {
   cl::Buffer run_next, run_cx, run_cy, run_ct;                                 // far-field cell aggregates
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;  // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;        // per-slice geometry
-  cl::Buffer tangent_x, tangent_y;                                             // the curve between slices
+  cl::Buffer tangent_x, tangent_y, spline_cp, spline_z;                        // the curve between slices
   cl::Buffer mirror_x, mirror_y, mirror_t;                                     // the wall's mirror image
   cl::Buffer overlap_start, overlap_elements;  // overlap broadphase: sized by the backend as it grows
   cl::Buffer proposed;                         // growth proposals

@@ -2,6 +2,7 @@
 // here at compile time, and Params is converted to the kernels' floats in exactly one place.
 #include <cstddef>
 
+#include "animpak/curve.hpp"
 #include "animpak/spring_class.hpp"
 #include "cl_host.hpp"
 
@@ -23,6 +24,8 @@ static_assert(sizeof(ForceParams) == 28 * 4 && offsetof(ForceParams, k_spring) =
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
+static_assert(AP_CURVE_LINEAR == curve_linear && AP_CURVE_MONOTONE == curve_monotone &&
+              AP_CURVE_SPLINE == curve_spline);
 static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
               AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside &&
               AP_CONTACT_YIELD == contact_yield && AP_CONTACT_BLOCK == contact_block);
@@ -57,7 +60,7 @@ ForceParams force_params(const Params& params) {
   p.k_target_angle = static_cast<float>(params.forces.k_target_angle);
   p.wall_range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
   p.interval_points = params.forces.interval_points;
-  p.motion_curve = params.forces.motion_curve != 0 ? 1 : 0;
+  p.motion_curve = params.forces.motion_curve;
   p.k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
   return p;
 }

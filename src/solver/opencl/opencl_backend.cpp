@@ -112,8 +112,8 @@ class DeviceBackend final : public OpenclBackend {
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
     timed(times_.grid, slot_positions_.run(queue_, grid_.triangles));
     timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
+    timed(times_.forces, run_curve_tangents());
     timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
-    timed(times_.forces, curve_tangents_.run(queue_, world_.vertices));
     build_overlap_grid();
     timed(times_.forces, repulsion_force_.run(queue_, boundary_count_));
     if (mirror_) timed(times_.forces, wall_mirror_.run(queue_, boundary_count_));
@@ -184,8 +184,8 @@ class DeviceBackend final : public OpenclBackend {
     forces_.set(0, world);
     slot_positions_.run(queue_, grid_.triangles);
     slice_centroids_.run(queue_, world_.slices);
+    run_curve_tangents();
     slice_boxes_.run(queue_, world_.slices);
-    curve_tangents_.run(queue_, world_.vertices);
     build_overlap_grid();
     repulsion_force_.run(queue_, boundary_count_);
     if (mirror_) wall_mirror_.run(queue_, boundary_count_);
@@ -324,14 +324,24 @@ class DeviceBackend final : public OpenclBackend {
                     w.run_cy, w.run_ct);
   }
 
+  // Every vertex's tangent for the curve between slices: the spline's, a solve per track, or Steffen's,
+  // one work-item per vertex (reference::curve_tangents).
+  cl::Event run_curve_tangents() {
+    if (curve_mode_ == AP_CURVE_SPLINE) return curve_spline_tangents_.run(queue_, topo_buf_.tracks);
+    return curve_tangents_.run(queue_, world_.vertices);
+  }
+
   // Every other phase of a step, in step order: forces (§5), integration, constraints (§5.2),
   // containment, growth (§5.3), then the statistics read on demand.
   void bind_step_kernels(const cl::Program& program, const ForceParams& p) {
     const TopologyBuffers& b = topo_buf_;
     const ScratchBuffers& w = scratch_;
+    // The tangents first: on the spline the slice boxes hold the curve's handles (curve_tangents, then
+    // slice_boxes, as reference::step_forces does).
+    curve_mode_ = p.motion_curve;
     slice_boxes_ = Kernel(program, "slice_boxes");
-    slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, x_, y_, t_, w.box_x0, w.box_y0, w.box_x1, w.box_y1,
-                      w.box_t);
+    slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, b.slice_element, b.element_slice_begin, x_, y_, t_,
+                      w.tangent_x, w.tangent_y, curve_mode_, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t);
     repulsion_force_ = Kernel(program, "repulsion_force");
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ = repulsion_force_.bind(
@@ -350,6 +360,10 @@ class DeviceBackend final : public OpenclBackend {
     curve_tangents_ = Kernel(program, "curve_tangents");
     curve_tangents_.bind(world_, b.slice, b.slice_begin, b.slice_element, b.element_slice_begin, b.curve_prev,
                          b.curve_next, x_, y_, t_, w.tangent_x, w.tangent_y);
+    curve_spline_tangents_ = Kernel(program, "curve_spline_tangents");
+    curve_spline_tangents_.bind(b.tracks, b.track_vertex, b.track_chain, b.chain_begin, b.chain_slice, b.chain_offset,
+                                b.chain_alias, b.chain_period, b.slice_begin, x_, y_, t_, w.spline_cp, w.spline_z,
+                                w.tangent_x, w.tangent_y);
     slice_centroids_ = Kernel(program, "slice_centroids");
     slice_centroids_.bind(world_, b.slice_begin, x_, y_, w.slice_cx, w.slice_cy);
     forces_ = Kernel(program, "step_forces");
@@ -542,11 +556,12 @@ class DeviceBackend final : public OpenclBackend {
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
       grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
-      repulsion_force_, wall_mirror_, slice_centroids_, forces_, integrate_, constraints_, loop_, apply_containment_,
-      propose_growth_, grow_, rest_lengths_, statistics_;
+      curve_spline_tangents_, repulsion_force_, wall_mirror_, slice_centroids_, forces_, integrate_, constraints_,
+      loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
-  bool mirror_ = false;  ///< wall_mirror is on: wall_mirror_force runs before step_forces
+  bool mirror_ = false;    ///< wall_mirror is on: wall_mirror_force runs before step_forces
+  cl_int curve_mode_ = 0;  ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
   reference::SliceBoxes boxes_;
   reference::OverlapGrid overlap_grid_;
   std::size_t overlap_start_capacity_ = 0, overlap_elements_capacity_ = 0;

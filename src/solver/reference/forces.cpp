@@ -34,13 +34,13 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   // boxes of the boundary polygons with the overlap test's broadphase over them.
   std::vector<float> cx, cy;
   slice_centroids(topo, state, cx, cy);
+  // The curve between slices that the overlap test walks, as the frames show it; the boxes hold it.
+  CurveTangents tangents;
+  curve_tangents(topo, curve_links(topo), state, params.forces.motion_curve, tangents);
   SliceBoxes boxes;
-  slice_boxes(topo, state, boxes);
+  slice_boxes(topo, state, tangents, boxes);
   OverlapGrid overlap_grid;
   build_overlap_grid(topo, boxes, overlap_grid);
-  // The curve between slices that the overlap test walks, as the frames show it.
-  CurveTangents tangents;
-  curve_tangents(topo, curve_links(topo), state, params.forces.motion_curve != 0, tangents);
   const float stop_gap = static_cast<float>(params.stop.stop_gap);
   const float k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
 

@@ -28,13 +28,14 @@ float slice_t(const Topology& topo, const SimState& state, std::int32_t s) { ret
 
 }  // namespace
 
-void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
+void slice_boxes(const Topology& topo, const SimState& state, const CurveTangents& tangents, SliceBoxes& out) {
   const std::int32_t slices = topo.slice_count();
   out.x0.assign(slices, 0.0f);
   out.y0.assign(slices, 0.0f);
   out.x1.assign(slices, 0.0f);
   out.y1.assign(slices, 0.0f);
   out.t.assign(slices, 0.0f);
+  const bool spline = tangents.mode == curve_spline;
   for (std::int32_t s = 0; s < slices; ++s) {
     out.t[s] = slice_t(topo, state, s);
     const std::int32_t lo = topo.slice_begin[s], count = topo.slice_boundary[s];
@@ -45,6 +46,22 @@ void slice_boxes(const Topology& topo, const SimState& state, SliceBoxes& out) {
       x1 = state.x[v] > x1 ? state.x[v] : x1;
       y0 = state.y[v] < y0 ? state.y[v] : y0;
       y1 = state.y[v] > y1 ? state.y[v] : y1;
+    }
+    if (spline) {
+      // The handles towards the slice before and after within the element: the steps as the overlap
+      // test's curve_basis takes them (t of the upper slice minus t of the lower).
+      const std::int32_t e = topo.slice_element[s];
+      for (const std::int32_t q : {s - 1, s + 1}) {
+        if (q < topo.element_slice_begin[e] || q >= topo.element_slice_begin[e + 1]) continue;
+        const float h = q > s ? slice_t(topo, state, q) - out.t[s] : -(out.t[s] - slice_t(topo, state, q));
+        for (std::int32_t v = lo; v < lo + count; ++v) {
+          const float hx = curve_handle(state.x[v], tangents.x[v], h), hy = curve_handle(state.y[v], tangents.y[v], h);
+          x0 = hx < x0 ? hx : x0;
+          x1 = hx > x1 ? hx : x1;
+          y0 = hy < y0 ? hy : y0;
+          y1 = hy > y1 ? hy : y1;
+        }
+      }
     }
     out.x0[s] = x0, out.y0[s] = y0, out.x1[s] = x1, out.y1[s] = y1;
   }
@@ -289,7 +306,7 @@ PointOverlap overlap_point(const Topology& topo, const SimState& state, const Sl
     const std::int32_t s = overlap_slice_pair(topo, state, boxes, e, start, pt, ex0, ex1, ey0, ey1, w);
     if (s < 0) continue;
     const std::int32_t lo = topo.slice_begin[s], hi = topo.slice_begin[s + 1], edges = topo.slice_boundary[s];
-    const CurveBasis<float> b = curve_basis(w, state.t[hi] - state.t[lo], m.cubic);
+    const CurveBasis<float> b = curve_basis(w, state.t[hi] - state.t[lo], m.mode);
     bool inside, crosses;
     overlap_polygon_walk(state, m, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, inside, crosses);
     // Only a point inside needs its way out: a second walk, since most elements tried are near and not
@@ -365,7 +382,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
     for (std::int32_t j = 1; 2 * j <= interval_points + 1; ++j) {
       const float f = static_cast<float>(j) / denominator;
       const float mt = state.t[v] + (state.t[w] - state.t[v]) * f;
-      const CurveBasis<float> b = curve_basis(step > 0 ? f : 1.0f - f, state.t[hi] - state.t[lo], tangents.cubic);
+      const CurveBasis<float> b = curve_basis(step > 0 ? f : 1.0f - f, state.t[hi] - state.t[lo], tangents.mode);
       float mx, my, nx, ny;
       curve_point(state, tangents, lo, hi, k, b, mx, my);
       curve_point(state, tangents, lo, hi, kn, b, nx, ny);
