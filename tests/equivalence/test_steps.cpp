@@ -107,8 +107,8 @@ TEST_CASE("steps: 100 steps of a small real scene give identical states", "[equi
 }
 
 TEST_CASE(
-    "steps: two guided stars that swap places (one spline chain over both), on the spline and on the "
-    "monotone cubic",
+    "steps: a small real scene with two guided stars that swap places (one spline chain over both), on the "
+    "spline and on the monotone cubic",
     "[equivalence][opencl]") {
   const std::string text = R"({
     "container": {"art": "../shapes/heart-container.path"},
