@@ -128,6 +128,24 @@ TEST_CASE("curve_links and curve_tangents (monotone): within an element, across 
   CHECK(m.y[20] == 0.0f);
 }
 
+namespace {
+
+// Whether the overlap test with three points per interval finds an overlap at any of vertices [first, last)
+// on curve `mode`, with the slice boxes and broadphase built as a step builds them.
+bool overlap_found(const test::TinyWorld& w, int mode, std::int32_t first, std::int32_t last) {
+  const CurveTangents m = test::tangents(w, mode);
+  reference::SliceBoxes boxes;
+  reference::slice_boxes(w.topo, w.state, m, boxes);
+  reference::OverlapGrid grid;
+  reference::build_overlap_grid(w.topo, boxes, grid);
+  bool found = false;
+  for (std::int32_t v = first; v < last; ++v)
+    found = found || reference::overlap_test(w.topo, w.state, boxes, grid, m, v, 3).overlap;
+  return found;
+}
+
+}  // namespace
+
 TEST_CASE("overlap test between slices: on the monotone curve it finds an overlap that straight lines do not have") {
   // Element 0 comes up, turns the corner diagonally between slices 1 and 2, and leaves to the right: on the
   // curve it bulges to the upper left of the straight chord between those slices (x lags, y leads, by
@@ -145,15 +163,7 @@ TEST_CASE("overlap test between slices: on the monotone curve it finds an overla
   const test::TinyWorld w = b.build();
   for (const int mode : {curve_monotone, curve_linear}) {
     INFO("motion_curve " << mode);
-    const CurveTangents m = test::tangents(w, mode);
-    reference::SliceBoxes boxes;
-    reference::slice_boxes(w.topo, w.state, m, boxes);
-    reference::OverlapGrid grid;
-    reference::build_overlap_grid(w.topo, boxes, grid);
-    bool found = false;
-    for (std::int32_t v = 16; v < 32; ++v)  // element 1's vertices
-      found = found || reference::overlap_test(w.topo, w.state, boxes, grid, m, v, 3).overlap;
-    CHECK(found == (mode == curve_monotone));
+    CHECK(overlap_found(w, mode, 16, 32) == (mode == curve_monotone));  // element 1's vertices
   }
 }
 
@@ -175,15 +185,7 @@ TEST_CASE(
   const test::TinyWorld w = b.build();
   for (const int mode : {curve_spline, curve_monotone, curve_linear}) {
     INFO("motion_curve " << mode);
-    const CurveTangents m = test::tangents(w, mode);
-    reference::SliceBoxes boxes;
-    reference::slice_boxes(w.topo, w.state, m, boxes);
-    reference::OverlapGrid grid;
-    reference::build_overlap_grid(w.topo, boxes, grid);
-    bool found = false;
-    for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v)
-      found = found || reference::overlap_test(w.topo, w.state, boxes, grid, m, v, 3).overlap;
-    CHECK(found == (mode == curve_spline));
+    CHECK(overlap_found(w, mode, 0, w.topo.vertex_count()) == (mode == curve_spline));
   }
 }
 
