@@ -145,7 +145,11 @@ TEST_CASE("forces: many small elements spread out, the overlap broadphase leavin
     const TinyWorld w = random_world(seed, shape);
     const BroadphaseUse u = broadphase_use(w);
     CHECK(u.candidates * 10 < u.queries * shape.elements);  // fewer than a tenth of the elements tried
-    for (const Params& params : {Params{}, paper_params()}) {
+    // Under a seed stride (Oclgrind, scripts/oclgrind-check.sh) the default constants only: this is the
+    // suite's largest world, and the paper's constants run the same kernel code.
+    std::vector<Params> constants{Params{}};
+    if (seed_stride() == 1) constants.push_back(paper_params());
+    for (const Params& params : constants) {
       const Coverage c = check_forces(w, params, "spread, seed " + std::to_string(seed));
       total.inside += c.inside, total.crossing += c.crossing;
     }
