@@ -2,7 +2,8 @@
  * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), the container
  * query, then every other force, summed left to right in this order:
  *   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
- * Zero forces are still added, so a −0 sum turns into +0 exactly as in the reference. */
+ * with F_edg the springs' sum plus the fold guard. Zero forces are still added, so a −0 sum turns into +0
+ * exactly as in the reference. */
 
 /** Eq. 7 for vertex i from one snapshot of positions; writes only vertex i's outputs. */
 __kernel void step_forces(const WorldInfo world,
@@ -27,6 +28,9 @@ __kernel void step_forces(const WorldInfo world,
                           __global const int* tri_c,     /* input: slice triangles */
                           __global const int* tri_begin, /* input: incident-triangle rows, vertices + 1 */
                           __global const int* tri_list,  /* input */
+                          __global const float* rest_copy_x,
+                          __global const float* rest_copy_y, /* input: the rest copy, per vertex (fold_force) */
+                          __global const float* growth,      /* input: g per slice (fold_force) */
                           __global const float* rpl_x_in,
                           __global const float* rpl_y_in,    /* input: Eq. 1 */
                           __global const float* rpl_t_in,    /* input: Eq. 1 */
@@ -68,6 +72,13 @@ __kernel void step_forces(const WorldInfo world,
                                             seg_ay, seg_bx, seg_by, &wall2, &wall_qx, &wall_qy);
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
+  { /* F_edg = springs + the fold guard (reference step_forces) */
+    float fold_x, fold_y;
+    fold_force(p, v, slice, tri_begin, tri_list, tri_a, tri_b, tri_c, rest_copy_x, rest_copy_y, growth, x, y, &fold_x,
+               &fold_y);
+    edg_x = edg_x + fold_x;
+    edg_y = edg_y + fold_y;
+  }
   float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;
   if (target[v] >= 0 && (flags[v] & AP_VERTEX_ANCHOR) != 0)
     target_force(p, target[v], px, py, pt, target_x, target_y, target_t, &tgt_x, &tgt_y, &tgt_t);

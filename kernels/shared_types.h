@@ -108,6 +108,8 @@ typedef struct {
   ap_int motion_curve;         /* AP_CURVE_SPLINE (2): the C2 spline between slices (kernels/curve.cl); 1: the
                                 * monotone cubic; 0: straight lines */
   ap_float k_mirror;           /* wall_mirror * k_repulsion: the wall as the element's mirror image; 0 off */
+  ap_float k_fold;             /* the fold guard's stiffness (kernels/springs.cl, fold_force); 0 off */
+  ap_float fold_area;          /* the share of a slice triangle's rest area where the fold guard starts */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

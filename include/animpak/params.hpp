@@ -48,6 +48,8 @@ struct Params {
     double k_negative_space = 50.0;  ///< Eq. 2, negative-space springs
     double k_time = 5.0;             ///< Eq. 2, time springs
     double k_target = 500.0;         ///< Eq. 2, target-point springs of guided elements (target slices only)
+    double k_fold = 200.0;           ///< a slice triangle squeezed below fold_area of its rest area is pushed back
+    double fold_area = 0.2;          ///< (docs/parameters.md, "Folds"): the share of its rest area where that starts
     double k_overlap = 5.0;          ///< Eq. 3
     double k_overlap_depth = 5.0;    ///< Eq. 3 extended: pull of an inside vertex towards the other element's outline
     double k_boundary = 5.0;         ///< Eq. 4

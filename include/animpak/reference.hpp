@@ -198,6 +198,11 @@ float spring_stiffness(const Params& params, SpringClass c);
 /// Eq. 2 summed over v's CSR slots in slot order. springs.cpp.
 Vec3f spring_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
 
+/// The fold guard (docs/parameters.md, "Folds"): for every slice triangle of v whose signed area (oriented
+/// as its rest copy's) is below fold_area · g² · its rest copy's, k_fold · the height it misses, along the
+/// normal of the edge opposite v; summed in v's incident-triangle order. Zero with k_fold 0. springs.cpp.
+Vec3f fold_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+
 /// Eq. 2 for the target-point spring of an anchor vertex (rest length 0, class target); zero for
 /// vertices without a target. target.cpp.
 Vec3f target_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);

@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 46> table{{
+const std::array<ParamInfo, 48> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -66,6 +66,12 @@ const std::array<ParamInfo, 46> table{{
      "0.01 (Eq. 2)"},
     {"k_target", "forces", field<&Params::forces, &Params::Forces::k_target>(), 0.0, inf,
      "k_edg of target-point springs (Eq. 2, §4)", "10 (Eq. 2)"},
+    {"k_fold", "forces", field<&Params::forces, &Params::Forces::k_fold>(), 0.0, 800.0,
+     "pushes a slice triangle squeezed below fold_area of its rest area back open, so that it never folds over "
+     "and its art stays inside the element's outline (0: off)",
+     "not in the paper"},
+    {"fold_area", "forces", field<&Params::forces, &Params::Forces::fold_area>(), 0.0, 1.0,
+     "share of a slice triangle's rest area (times g squared) below which k_fold pushes it back", "not in the paper"},
     {"k_overlap", "forces", field<&Params::forces, &Params::Forces::k_overlap>(), 0.0, inf,
      "k_ovr, overlap strength (Eq. 3)", "k_ovr = 5 (Eq. 3)"},
     {"k_overlap_depth", "forces", field<&Params::forces, &Params::Forces::k_overlap_depth>(), 0.0, inf,

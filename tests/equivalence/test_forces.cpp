@@ -49,6 +49,14 @@ Coverage check_forces(const TinyWorld& w, const Params& params, const std::strin
 
 bool have_devices() { return !skip_without_devices(devices_under_test()); }
 
+// The default constants and the paper's; under a seed stride (Oclgrind, scripts/oclgrind-check.sh) the
+// defaults only, for the suite's two largest worlds: the paper's constants run the same kernel code.
+std::vector<Params> constants_under_test() {
+  std::vector<Params> out{Params{}};
+  if (seed_stride() == 1) out.push_back(paper_params());
+  return out;
+}
+
 // A ring of `count` vertices at the given points, repeated on every slice time.
 std::vector<TinySlice> tube(const Ring& ring, const std::vector<float>& times) {
   std::vector<TinySlice> slices;
@@ -145,11 +153,7 @@ TEST_CASE("forces: many small elements spread out, the overlap broadphase leavin
     const TinyWorld w = random_world(seed, shape);
     const BroadphaseUse u = broadphase_use(w);
     CHECK(u.candidates * 10 < u.queries * shape.elements);  // fewer than a tenth of the elements tried
-    // Under a seed stride (Oclgrind, scripts/oclgrind-check.sh) the default constants only: this is the
-    // suite's largest world, and the paper's constants run the same kernel code.
-    std::vector<Params> constants{Params{}};
-    if (seed_stride() == 1) constants.push_back(paper_params());
-    for (const Params& params : constants) {
+    for (const Params& params : constants_under_test()) {
       const Coverage c = check_forces(w, params, "spread, seed " + std::to_string(seed));
       total.inside += c.inside, total.crossing += c.crossing;
     }
@@ -177,7 +181,7 @@ TEST_CASE("forces: slice-pair boxes across the overlap broadphase's cell borders
   const BroadphaseUse u = broadphase_use(w);
   CHECK(u.two_cells > 0);
   CHECK(u.four_cells > 0);
-  for (const Params& params : {Params{}, paper_params()}) {
+  for (const Params& params : constants_under_test()) {
     const Coverage c = check_forces(w, params, "cell borders of the overlap broadphase");
     CHECK(c.inside > 0);
   }
@@ -378,6 +382,40 @@ TEST_CASE("forces: sparse targets and keyed slices holding their angle, turned o
   for (const Params& params : {Params{}, paper_params()}) {
     const Coverage c = check_forces(w, params, "keyed slices");
     CHECK(c.target == 2);
+  }
+}
+
+TEST_CASE("forces: folded and squeezed slice triangles, the fold guard", "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  for (std::uint64_t seed = 11; seed <= 12; seed += seed_stride()) {
+    RandomWorldShape shape;
+    shape.elements = 3;
+    TinyWorld w = random_world(seed, shape);  // its rest copy: the rings as built
+    // Fold: every third boundary vertex mirrored through its slice's centroid side (across the fan's
+    // opposite edges); squeeze: every second slice shrunk to 0.6 of its size about its centroid.
+    std::vector<float> cx, cy;
+    reference::slice_centroids(w.topo, w.state, cx, cy);
+    for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+      const std::int32_t s = w.topo.slice[v];
+      if (v % 3 == 0) {
+        w.state.x[v] = cx[s] - 0.5f * (w.state.x[v] - cx[s]);
+        w.state.y[v] = cy[s] - 0.5f * (w.state.y[v] - cy[s]);
+      } else if (s % 2 == 1) {
+        w.state.x[v] = cx[s] + 0.6f * (w.state.x[v] - cx[s]);
+        w.state.y[v] = cy[s] + 0.6f * (w.state.y[v] - cy[s]);
+      }
+    }
+    for (const Params& params : {Params{}, paper_params()}) {
+      Params p = params;
+      p.forces.k_fold = 200.0;
+      int folded = 0;
+      for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
+        const Vec3f f = reference::fold_force(w.topo, w.state, p, v);
+        folded += f.x != 0.0f || f.y != 0.0f;
+      }
+      CHECK(folded > w.topo.vertex_count() / 4);  // the guard acts on many vertices, or this says little
+      check_forces(w, p, "folded, seed " + std::to_string(seed));
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 // A tiny real scene packs to the paper's stop criterion (§5.3: every slice's gap to its nearest
 // neighbour below stop_gap), and the packed slices show no overlapping art, no art outside the container
-// (both measured exactly, docs/quality.md) and far more coverage than the shrunken start.
+// (both measured exactly, docs/quality.md) and far more coverage than the shrunken start; no slice
+// triangle folded over and no art outside its own element's outline (docs/parameters.md, "Folds").
 #include <catch2/catch.hpp>
 
 #include "animpak/render.hpp"
@@ -9,6 +10,41 @@
 #include "scene/tiny_scenes.hpp"
 
 using namespace animpak;
+
+namespace {
+
+// Slice triangles of the state whose signed area has the opposite sign of their rest copy's.
+int folded_triangles(const World& w, const SimState& state) {
+  const Topology& topo = w.topology;
+  int folded = 0;
+  for (std::size_t i = 0; i < topo.tri_a.size(); ++i) {
+    const int a = topo.tri_a[i], b = topo.tri_b[i], c = topo.tri_c[i];
+    const double rest =
+        (double(topo.rest_copy_x[b]) - topo.rest_copy_x[a]) * (double(topo.rest_copy_y[c]) - topo.rest_copy_y[a]) -
+        (double(topo.rest_copy_y[b]) - topo.rest_copy_y[a]) * (double(topo.rest_copy_x[c]) - topo.rest_copy_x[a]);
+    const double now = (double(state.x[b]) - state.x[a]) * (double(state.y[c]) - state.y[a]) -
+                       (double(state.y[b]) - state.y[a]) * (double(state.x[c]) - state.x[a]);
+    folded += rest * now <= 0.0;
+  }
+  return folded;
+}
+
+// The largest share of an element's art outside its own boundary polygon at frame time tf.
+double art_outside_own_outline(const World& w, const SimState& state, double tf) {
+  double worst = 0.0;
+  for (int e = 0; e < static_cast<int>(w.elements.size()); ++e) {
+    const std::vector<Vec2> p = element_at(w, state, e, tf);
+    const ElementArt art = element_art(w, e, p);
+    const Region drawn = art_region(w.library[w.elements[e].library].art.art, art.points, art.stroke_scale);
+    const int boundary = w.topology.slice_boundary[w.topology.element_slice_begin[e]];
+    Region outline;
+    outline.rings.push_back(std::vector<Vec2>(p.begin(), p.begin() + boundary));
+    worst = std::max(worst, measure_regions({drawn}, outline, Measures::no_evenness).outside_share[0]);
+  }
+  return worst;
+}
+
+}  // namespace
 
 TEST_CASE("run_simulation: three stars in the heart pack to the gap criterion without overlapping or spilled art") {
   // Three still stars over five slices. The collision grid finds neighbours only within one cell, and

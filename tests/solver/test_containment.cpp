@@ -129,7 +129,9 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
 TEST_CASE("containment: a lone element in a large container stops at the wall, inside it") {
   // One star in the heart. Without the wall as a neighbour its slice gap stays infinite, the stop test
   // never passes and it grows to max_growth, far past the heart. Seeded in the heart's middle (a count's
-  // seeds are spread, docs/parameters.md "Seeds for a fixed count"), it stops at g ≈ 7.5.
+  // seeds are spread, docs/parameters.md "Seeds for a fixed count"), it stops at g ≈ 6 by the stall test,
+  // its slices within 1.5 stop_gap of the wall (before the fold guard it reached g ≈ 7.5 by the gap test,
+  // with its tips folded over against the wall: docs/parameters.md, "Folds").
   const World w = make_world(parse_scene(
       test::star_scene(1, 5, 2, {"", R"("cell_size": 0.2, "interior_spacing": 0.5, "max_iterations": 60000)"}),
       "tiny.json", "/"));
@@ -138,8 +140,10 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
   const RunResult r = run_simulation(*backend, w.params, control);
-  INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations");
-  REQUIRE(r.reason == StopReason::gap);
+  INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, gap "
+                   << r.last.max_slice_gap << ", g " << r.last.min_growth << " to " << r.last.max_growth);
+  REQUIRE((r.reason == StopReason::gap || r.reason == StopReason::stalled));
+  CHECK(r.last.max_slice_gap < 2.0f * static_cast<float>(w.params.stop.stop_gap));
   CHECK(r.last.max_growth < 0.75f * static_cast<float>(w.params.growth.max_growth));
   CHECK(r.last.max_growth > 3.0f);  // it did grow to the wall: a tenth of the heart's width at least
   int outside = 0;

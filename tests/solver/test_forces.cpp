@@ -336,3 +336,48 @@ TEST_CASE("overlap force: Eq. 3 pulls a vertex towards its incident slice-triang
   CHECK(d.x == Approx(5.0 + p.forces.k_overlap_depth * 0.25).epsilon(1e-6));
   CHECK(d.y == Approx(5.0 + p.forces.k_overlap_depth * -0.5).epsilon(1e-6));
 }
+
+TEST_CASE(
+    "fold guard: a slice triangle folded over its opposite edge pushes the vertex back by k_fold times the "
+    "height it misses, and nothing above fold_area of its rest area") {
+  Params p = test::paper_params();
+  p.forces.k_fold = 2.0;
+  p.forces.fold_area = 0.5;
+  WorldBuilder b;
+  b.add_element({{test::square(0.5f, 0.5f, 0.5f), 0.5f}});  // fan (0,1,2), (0,2,3) over (0,0)..(1,1)
+  test::TinyWorld w = b.build();
+  for (std::int32_t v = 0; v < 4; ++v) {  // at rest: every triangle at its full area
+    const Vec3f f = fold_force(w.topo, w.state, p, v);
+    CHECK((f.x == 0.0f && f.y == 0.0f && f.t == 0.0f));
+  }
+  // Vertex 1, (1, 0), mirrored across the diagonal 0-2 to (0.2, 0.8): triangle (0,1,2) is folded over.
+  w.state.x[1] = 0.2f;
+  w.state.y[1] = 0.8f;
+  const Vec3f f = fold_force(w.topo, w.state, p, 1);
+  // Twice its signed area is -0.6 where fold_area asks for 0.5; the missing height is 1.1 / sqrt(2),
+  // pushed along (1, -1) / sqrt(2), back over the diagonal.
+  CHECK(f.x == Approx(2.0 * 0.55).epsilon(1e-5));
+  CHECK(f.y == Approx(-2.0 * 0.55).epsilon(1e-5));
+  CHECK(f.t == 0.0f);
+  // Squeezed to 0.6 of its rest area it is above fold_area: no push; at 0.4, a push of the 0.1 missing.
+  w.state.x[1] = 1.0f - 0.2f;
+  w.state.y[1] = 0.2f;  // twice the area: 1 - 0.2 - 0.2 = 0.6
+  const Vec3f above = fold_force(w.topo, w.state, p, 1);
+  CHECK((above.x == 0.0f && above.y == 0.0f));
+  w.state.x[1] = 0.7f;
+  w.state.y[1] = 0.3f;  // 0.4
+  const Vec3f below = fold_force(w.topo, w.state, p, 1);
+  CHECK(below.x == Approx(2.0 * 0.05).epsilon(1e-4));
+  CHECK(below.y == Approx(-2.0 * 0.05).epsilon(1e-4));
+  // The rest area grows with g: at g = 2 the untouched square is a quarter of its grown rest area.
+  w.state.x[1] = 1.0f;
+  w.state.y[1] = 0.0f;
+  w.state.growth[0] = 2.0f;
+  const Vec3f grown = fold_force(w.topo, w.state, p, 1);
+  CHECK(grown.x == Approx(2.0 * 0.5).epsilon(1e-5));  // deficit 0.5 * 4 - 1 = 1 over |grad|^2 = 2
+  CHECK(grown.y == Approx(-2.0 * 0.5).epsilon(1e-5));
+  // k_fold 0 turns it off.
+  p.forces.k_fold = 0.0;
+  const Vec3f off = fold_force(w.topo, w.state, p, 1);
+  CHECK((off.x == 0.0f && off.y == 0.0f));
+}

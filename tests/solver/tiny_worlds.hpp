@@ -181,6 +181,11 @@ class WorldBuilder {
     w.state.vy.assign(n, 0.0f);
     w.state.vt.assign(n, 0.0f);
     w.state.growth.assign(topo_.slice_count(), 1.0f);
+    // The rest copy (growth's reference, and the fold guard's rest areas): the shape as placed.
+    w.topo.rest_copy_x = w.state.x;
+    w.topo.rest_copy_y = w.state.y;
+    w.topo.rest_copy_t = w.state.t;
+    reference::slice_centroids(w.topo, w.state, w.topo.slice_rest_copy_cx, w.topo.slice_rest_copy_cy);
     return w;
   }
 

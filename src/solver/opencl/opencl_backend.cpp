@@ -370,10 +370,11 @@ class DeviceBackend final : public OpenclBackend {
     breakdown_arg_ =
         forces_.bind(world_, p, x_, y_, t_, b.slice, b.slice_begin, b.slice_boundary, b.flags, b.rest_t, b.rest_dir_x,
                      b.rest_dir_y, b.target, b.spring_begin, b.spring_other, b.spring_class, rest_, b.tri_a, b.tri_b,
-                     b.tri_c, b.tri_begin, b.tri_list, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
-                     w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
-                     opencl::container_index_info(topo_.container.index), b.container_index, w.slice_cx, w.slice_cy,
-                     w.mirror_x, w.mirror_y, w.mirror_t, fx_, fy_, ft_, closest_, contact_, breakdown_) -
+                     b.tri_c, b.tri_begin, b.tri_list, b.rest_copy_x, b.rest_copy_y, growth_, w.rpl_x, w.rpl_y, w.rpl_t,
+                     w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax,
+                     b.seg_ay, b.seg_bx, b.seg_by, opencl::container_index_info(topo_.container.index),
+                     b.container_index, w.slice_cx, w.slice_cy, w.mirror_x, w.mirror_y, w.mirror_t, fx_, fy_, ft_,
+                     closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);

@@ -2,7 +2,7 @@
 // what we add to the paper). Per vertex, in this order: the grid queries, the overlap test (Eq. 3
 // replaces Eq. 1 for a vertex that overlaps another element), the container query, then each force.
 // The sum is formed left to right in Eq. 7's order, with the target-point spring (an Eq. 2 spring)
-// right after the edge springs:
+// right after the edge springs, and the fold guard added to the springs' sum (F_edg = springs + fold):
 //   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
 // The kernels add in exactly this order.
 #include <cmath>
@@ -59,7 +59,9 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
         overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.forces.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
-    const Vec3f edg = spring_force(topo, state, params, v);
+    const Vec3f springs = spring_force(topo, state, params, v);
+    const Vec3f fold = fold_force(topo, state, params, v);
+    const Vec3f edg{springs.x + fold.x, springs.y + fold.y, springs.t};
     const Vec3f tgt = target_force(topo, state, params, v);
     Vec3f bdr = boundary_force(params, wall, px, py, boundary);
     if (boundary && k_mirror != 0.0f && !overlap.overlap) {
