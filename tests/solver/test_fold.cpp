@@ -9,25 +9,12 @@
 #include "animpak/scene.hpp"
 #include "animpak/simulation.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "solver/folded_triangles.hpp"
 
 using namespace animpak;
+using animpak::test::folded_triangles;
 
 namespace {
-
-// Twice the signed area of triangle (a, b, c) in the state, and in the rest copy.
-double area2(const std::vector<float>& x, const std::vector<float>& y, int a, int b, int c) {
-  return (double(x[b]) - x[a]) * (double(y[c]) - y[a]) - (double(y[b]) - y[a]) * (double(x[c]) - x[a]);
-}
-
-// Slice triangles whose signed area has the opposite sign of their rest copy's.
-int folded_triangles(const Topology& topo, const SimState& state) {
-  int folded = 0;
-  for (std::size_t i = 0; i < topo.tri_a.size(); ++i) {
-    const int a = topo.tri_a[i], b = topo.tri_b[i], c = topo.tri_c[i];
-    folded += area2(topo.rest_copy_x, topo.rest_copy_y, a, b, c) * area2(state.x, state.y, a, b, c) <= 0.0;
-  }
-  return folded;
-}
 
 // The ears of slice s: outline positions k (local) whose triangle is (k - 1, k, k + 1) in some order.
 std::vector<std::int32_t> ears(const Topology& topo, std::int32_t s) {
@@ -47,8 +34,9 @@ std::vector<std::int32_t> ears(const Topology& topo, std::int32_t s) {
 
 }  // namespace
 
-TEST_CASE("fold guard: a real butterfly's outline vertices pressed across their ears' chords fold the ears over "
-          "without the guard, and stay open with it") {
+TEST_CASE(
+    "fold guard: a real butterfly's outline vertices pressed across their ears' chords fold the ears over "
+    "without the guard, and stay open with it") {
   const std::string scene = R"({"container": {"art": ")" + test::example_file("shapes/heart-container.path") +
                             R"("}, "elements": [{"name": "butterfly", "art": ")" +
                             test::example_file("clipart/butterfly.svg") +
