@@ -131,6 +131,11 @@ ElementArt element_art(const World& world, int element, const std::vector<Vec2>&
 /// Every element's art at frame time tf, in element order: the one geometry every frame writer (PNG,
 /// SVG frames, Lottie, animated SVG) and the frame metrics use.
 std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf);
+/// The same with every element's tangents (frame_tangents) computed once, for many times of one state.
+std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf,
+                                  const std::vector<std::vector<Vec2>>& tangents);
+/// element_tangents of every element, in element order.
+std::vector<std::vector<Vec2>> frame_tangents(const World& world, const SimState& state);
 
 /// The picture of one frame's art, elements in order, then the container when the style asks for it.
 Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style);

@@ -26,8 +26,8 @@ double stroke_tolerance(const World& world, int element, const FrameOutput& out)
 // The stroke scale is the square root of the element's area ratio (element_scale), and the area is quadratic
 // between two slices: where straight keys between two slices would miss a frame's stroke width by more than
 // the precision kept, that interval's frames are keyed too, so every frame's width is the PNG frame's.
-void add_stroke_keys(const World& world, const SimState& state, int element, const FrameOutput& out,
-                     double frames_per_unit, ElementKeys& keys) {
+void add_stroke_keys(const World& world, const SimState& state, int element, const std::vector<Vec2>& tangents,
+                     const FrameOutput& out, double frames_per_unit, ElementKeys& keys) {
   const double tolerance = stroke_tolerance(world, element, out);
   if (tolerance == 0) return;
   std::vector<double> frames, scales;
@@ -38,7 +38,8 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
     std::vector<double> inner_frames, inner_scales;
     bool straight = true;
     for (int i = int(std::floor(a)) + 1; i < b && i < out.count; ++i) {
-      const double scale = element_scale(world, element, element_at(world, state, element, i / frames_per_unit));
+      const double scale =
+          element_scale(world, element, element_at(world, state, element, i / frames_per_unit, tangents));
       straight = straight && std::abs(scale - (sa + (sb - sa) * (i - a) / (b - a))) <= tolerance;
       inner_frames.push_back(i), inner_scales.push_back(scale);
     }
@@ -196,7 +197,9 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   const int frames = out.count;
   if (out.interpolation == Interpolation::hold || frames == 1) {
     const std::vector<double> times = frame_times(frames, world.loop);
-    for (int i = 0; i < frames; ++i) add(i, element_art(world, element, element_at(world, state, element, times[i])));
+    const std::vector<Vec2> tangents = element_tangents(world, state, element);
+    for (int i = 0; i < frames; ++i)
+      add(i, element_art(world, element, element_at(world, state, element, times[i], tangents)));
     return keys;
   }
   const ElementInstance& inst = world.elements[element];
@@ -262,7 +265,7 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   }
   // A document that does not loop shows its last slice through its last frame, up to op = N.
   if (keys.stroke_frames.back() < frames) add(frames, art.back());
-  add_stroke_keys(world, state, element, out, frames_per_unit, keys);
+  add_stroke_keys(world, state, element, tangents, out, frames_per_unit, keys);
   return keys;
 }
 

@@ -105,11 +105,22 @@ ElementArt element_art(const World& world, int element, const std::vector<Vec2>&
   return {replay_art(lib.binding, lib.slice, positions), element_scale(world, element, positions)};
 }
 
-std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf) {
+std::vector<std::vector<Vec2>> frame_tangents(const World& world, const SimState& state) {
+  std::vector<std::vector<Vec2>> tangents(world.elements.size());
+  for (std::size_t i = 0; i < world.elements.size(); ++i) tangents[i] = element_tangents(world, state, int(i));
+  return tangents;
+}
+
+std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf,
+                                  const std::vector<std::vector<Vec2>>& tangents) {
   std::vector<ElementArt> art(world.elements.size());
   for (std::size_t i = 0; i < world.elements.size(); ++i)
-    art[i] = element_art(world, int(i), element_at(world, state, int(i), tf));
+    art[i] = element_art(world, int(i), element_at(world, state, int(i), tf, tangents[i]));
   return art;
+}
+
+std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf) {
+  return frame_art(world, state, tf, frame_tangents(world, state));
 }
 
 ArtPoints own_points(const ArtShape& art) {

@@ -260,9 +260,11 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   PackingQuality quality;
   const std::vector<double> times = frame_times(out.count, world.loop);
   std::vector<std::vector<Vec2>> centroids(world.elements.size());
+  // The curve's tangents depend on the state alone: solved once for every frame and time between slices.
+  const std::vector<std::vector<Vec2>> tangents = frame_tangents(world, state);
   for (int i = 0; i < out.count; ++i) {
     // One replay per frame, drawn, written and measured by every format alike.
-    const std::vector<ElementArt> art = frame_art(world, state, times[i]);
+    const std::vector<ElementArt> art = frame_art(world, state, times[i], tangents);
     for (std::size_t e = 0; e < art.size(); ++e) {
       Vec2 sum;
       std::size_t n = 0;
@@ -280,7 +282,8 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   write_animations(world, state, out, ids, wants);
   report(out, "between slices");
   for (double t : between_slice_times(world.params.element.slices))
-    quality.between_slices.push_back(measure_frame(world, state, t, Measures::no_evenness));
+    quality.between_slices.push_back(
+        measure_frame(world, frame_art(world, state, t, tangents), t, Measures::no_evenness));
   std::ostringstream rate;
   rate << out.fps;
   const std::string input = "-framerate " + rate.str() + " -i " + quoted(frames / "frame_%04d.png");

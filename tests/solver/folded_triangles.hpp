@@ -18,7 +18,8 @@ inline int folded_triangles(const Topology& topo, const SimState& state) {
   int folded = 0;
   for (std::size_t i = 0; i < topo.tri_a.size(); ++i) {
     const int a = topo.tri_a[i], b = topo.tri_b[i], c = topo.tri_c[i];
-    folded += signed_area2(topo.rest_copy_x, topo.rest_copy_y, a, b, c) * signed_area2(state.x, state.y, a, b, c) <= 0.0;
+    folded +=
+        signed_area2(topo.rest_copy_x, topo.rest_copy_y, a, b, c) * signed_area2(state.x, state.y, a, b, c) <= 0.0;
   }
   return folded;
 }
