@@ -6,6 +6,14 @@
  * then every slice is limited to growth_ratio × the smallest proposal of its element, and the springs
  * touching a changed slice take their rest length from the scaled rest copy. */
 
+/** growth_multiplier of src/solver/reference/growth.cpp: a free slice grows growth_step × clamp(its gap /
+ * boost_gap, 1, growth_boost). */
+float growth_multiplier(const float gap, const float boost_gap, const float boost) {
+  const float m = gap / boost_gap;
+  if (m > boost) return boost;
+  return m > 1.0f ? m : 1.0f;
+}
+
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world,
                              const ForceParams p,
@@ -15,12 +23,17 @@ __kernel void propose_growth(const WorldInfo world,
                              __global const int* slice_element,       /* input: per slice */
                              __global const uchar* element_secondary, /* input: per element */
                              __global const uchar* contact, /* input: AP_CONTACT_* per vertex, from step_forces */
+                             __global const float* closest, /* input: per vertex, from step_forces */
                              __global const float* growth,  /* input: g per slice */
                              __global float* proposed) {    /* output: proposed g per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   uchar bits = 0;
-  for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) bits |= contact[v];
+  float gap = INFINITY;
+  for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) {
+    bits |= contact[v];
+    gap = closest[v] < gap ? closest[v] : gap;
+  }
   const float g = growth[s];
   float next = g;
   const bool yields = (bits & AP_CONTACT_BLOCK) != 0 && (growing == 0 || (bits & AP_CONTACT_YIELD) != 0);
@@ -29,7 +42,7 @@ __kernel void propose_growth(const WorldInfo world,
     next = g - (growing != 0 ? p.shrink_step : p.settle_shrink_step);
     if (next < 1.0f) next = 1.0f;
   } else if (growing != 0 && !held && (bits & (AP_CONTACT_WALL | AP_CONTACT_BLOCK)) == 0 && g < p.max_growth) {
-    next = g + p.growth_step;
+    next = g + p.growth_step * growth_multiplier(gap, p.boost_gap, p.growth_boost);
     if (next > p.max_growth) next = p.max_growth;
   }
   proposed[s] = next;

@@ -110,6 +110,8 @@ typedef struct {
   ap_float k_mirror;           /* wall_mirror * k_repulsion: the wall as the element's mirror image; 0 off */
   ap_float k_fold;             /* the fold guard's stiffness (kernels/springs.cl, fold_force); 0 off */
   ap_float fold_area;          /* the share of a slice triangle's rest area where the fold guard starts */
+  ap_float growth_boost;       /* a free slice's growth step is at most growth_boost × growth_step */
+  ap_float boost_gap;          /* ... and growth_step × slice gap / boost_gap below that */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

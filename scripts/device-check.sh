@@ -2,12 +2,17 @@
 # The OpenCL portability check for one machine, run from the repository root with a bundle made by
 # scripts/solver-bundle.sh: registers the NVIDIA OpenCL driver beside the listed vendors when it is
 # installed, lists the devices, runs the equivalence suite on every device, validates the default
-# example on every device, benchmarks each GPU against the reference, and packs the default example
-# on the GPU and on the reference and compares the state bytes. DEVICE picks the device (default
-# nvidia); GRID_SORT the bench's --grid-sort (default both).
+# example on every device, benchmarks each GPU against the reference, packs the default example
+# on the GPU and on the reference and compares the state bytes, packs the aquatic-loop example (the
+# paper's Fig. 1 scale) to its stop on the GPU with --profile (its time and where it goes), and
+# validates 1,000 steps of that scene bit for bit against the reference. DEVICE picks the device
+# (default nvidia); GRID_SORT the bench's --grid-sort (default both); SKIP_AQUATIC=1 leaves out the
+# two aquatic-loop checks.
 # Usage: scripts/device-check.sh BUNDLE_DIR OUT_DIR [BENCH_SIZES]
 # Writes to OUT_DIR: devices.txt, equivalence.txt, validate.txt, bench.json, bench.txt, pack-gpu/ (the
-# reference pack goes to a scratch folder; only the comparison is reported).
+# reference pack goes to a scratch folder; only the comparison is reported), aquatic-gpu/ (its
+# stats.json and state.bin; render it on a machine with the full build), aquatic-gpu.txt (the pack's
+# last lines and its profile) and validate-aquatic.txt.
 set -uo pipefail
 bundle="$(cd "$1" && pwd)"
 out="$(mkdir -p "$2" && cd "$2" && pwd)"
@@ -20,6 +25,7 @@ temporary=()
 scratch_dir() { local d; d="$(mktemp -d)"; temporary+=("$d"); printf -v "$1" '%s' "$d"; }
 cleanup() {
   if [ -n "${reference_pack:-}" ]; then kill "$reference_pack" 2>/dev/null; wait "$reference_pack" 2>/dev/null; fi
+  if [ -n "${aquatic_validate:-}" ]; then kill "$aquatic_validate" 2>/dev/null; wait "$aquatic_validate" 2>/dev/null; fi
   if [ ${#temporary[@]} -gt 0 ]; then rm -rf "${temporary[@]}"; fi
 }
 trap cleanup EXIT
@@ -43,6 +49,12 @@ note "OpenCL vendors ($OCL_ICD_VENDORS)"; head -n1 "$vendors"/*.icd
 "$solve" pack examples/default/scene.json --device reference --out "$scratch/pack-reference" \
   >"$scratch/pack-reference.log" 2>&1 &
 reference_pack=$!
+# The 1,000-step validation of the aquatic-loop steps the reference on one core too: beside the rest.
+device="${DEVICE:-nvidia}"
+if [ "${SKIP_AQUATIC:-0}" != 1 ]; then
+  "$solve" validate examples/aquatic-loop/scene.json --device "$device" --steps 1000 >"$out/validate-aquatic.txt" 2>&1 &
+  aquatic_validate=$!
+fi
 
 note "animpak-solve devices --verbose"
 "$solve" devices --verbose 2>&1 | tee "$out/devices.txt" || status=1
@@ -55,7 +67,6 @@ note "validate examples/default --all-devices --steps 50"
 "$solve" validate examples/default/scene.json --all-devices --steps 50 2>&1 | tee "$out/validate.txt"
 [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 
-device="${DEVICE:-nvidia}"
 note "bench --device $device --sizes $sizes --grid-sort ${GRID_SORT:-both}"
 "$solve" bench --device "$device" --sizes "$sizes" --steps 20 --warmup 3 --grid-sort "${GRID_SORT:-both}" --json "$out/bench.json" 2>&1 |
   tee "$out/bench.txt"
@@ -69,5 +80,16 @@ if cmp "$out/pack-gpu/state.bin" "$scratch/pack-reference/state.bin"; then
   echo "state.bin: identical ($(stat -c %s "$out/pack-gpu/state.bin") bytes)"
 else
   echo "state.bin: DIFFERENT"; status=1
+fi
+
+if [ "${SKIP_AQUATIC:-0}" != 1 ]; then
+  note "pack examples/aquatic-loop on $device to its stop, --profile"
+  "$solve" pack examples/aquatic-loop/scene.json --device "$device" --out "$out/aquatic-gpu" --profile 2>&1 |
+    grep -v '^animpak: iter ' | tee "$out/aquatic-gpu.txt"
+  [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+  note "validate examples/aquatic-loop --device $device --steps 1000 (started at the beginning)"
+  wait "$aquatic_validate" || status=1
+  aquatic_validate=
+  tail -n 8 "$out/validate-aquatic.txt"
 fi
 exit "$status"

@@ -37,8 +37,10 @@ struct StopEstimate {
 class StopModel {
  public:
   /// `unit_density`: unit_mesh_density of the world (0 when unknown: no estimate during free growth).
-  StopModel(const Params::Stop& stop, bool has_secondary, double unit_density)
-      : stop_(stop), has_secondary_(has_secondary), unit_density_(unit_density) {}
+  /// `base_rate`: growth_rate · Δt_sim, the g a free slice gains per step without the room's boost
+  /// (docs/parameters.md, "Growth that follows the room"); 0 when unknown.
+  StopModel(const Params::Stop& stop, bool has_secondary, double unit_density, double base_rate = 0.0)
+      : stop_(stop), has_secondary_(has_secondary), unit_density_(unit_density), base_rate_(base_rate) {}
   void observe(const ProgressSample& sample);
   std::optional<StopEstimate> estimate() const;
   const std::vector<ProgressSample>& samples() const { return samples_; }
@@ -47,6 +49,7 @@ class StopModel {
   Params::Stop stop_;
   bool has_secondary_;
   double unit_density_;
+  double base_rate_;
   std::vector<ProgressSample> samples_;
 };
 

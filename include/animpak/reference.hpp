@@ -311,14 +311,19 @@ void apply_containment(const Topology& topo, SimState& state);
 /// test counts it as touching).
 enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
+/// How many times growth_rate a free slice grows (docs/parameters.md, "Growth"): its gap (the least
+/// `closest` over its vertices: the nearest other element or the wall) over boost_gap, clamped to
+/// [1, boost]. Not in the paper, which grows every free slice at one rate.
+float growth_multiplier(float gap, float boost_gap, float boost);
+
 /// Each slice's own next g from its contacts (docs/parameters.md, "Growth"), into `proposed`: a slice
 /// with a vertex outside the container, or one that overlaps an element no larger there (contact_yield),
 /// shrinks by shrink_rate · Δt_sim (not below 1); one that overlaps only larger elements, has a boundary
 /// vertex nearer the wall than stop_gap, or is at max_growth keeps its g; any other grows by growth_rate ·
-/// Δt_sim. Without `growing` (the settling phase) no slice grows, and every overlapping or spilling slice
+/// Δt_sim × growth_multiplier of its gap. Without `growing` (the settling phase) no slice grows, and every overlapping or spilling slice
 /// shrinks by settle_shrink_rate · Δt_sim.
-void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params, bool growing,
-                    const SimState& state, std::vector<float>& proposed);
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const std::vector<float>& closest,
+                    const Params& params, bool growing, const SimState& state, std::vector<float>& proposed);
 
 /// Every slice's new g: its proposal, limited to growth_ratio × the smallest proposal of its element and
 /// to neighbour_growth_ratio × the proposal of each time neighbour. `changed` marks what moved; returns

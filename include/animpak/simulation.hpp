@@ -56,6 +56,14 @@ struct PhaseTimes {
   double grid = 0, forces = 0, integrate = 0, constraints = 0, loop = 0, growth = 0, statistics = 0, transfer = 0;
 };
 
+/// One kernel's share of a run: its device time and launches (profiling events), and the phase it belongs to.
+struct KernelTime {
+  std::string name;
+  const char* phase;
+  double seconds = 0;
+  std::uint64_t launches = 0;
+};
+
 /// Every phase of PhaseTimes with its name, in step order: one list for every report and sum.
 struct NamedPhase {
   const char* name;
@@ -104,6 +112,9 @@ class Backend {
   /// Phase times so far. A device backend adds a launch's time once it has completed: call finish()
   /// before reading them (statistics() and state() finish too).
   virtual const PhaseTimes& times() const = 0;
+  /// Device time per kernel so far (pack --profile), in step order; empty for a backend without kernels.
+  /// Read after finish(), as times().
+  virtual std::vector<KernelTime> kernel_times() const { return {}; }
   /// Waits until every step enqueued so far has completed (a no-op for backends that step in place).
   virtual void finish() {}
 };

@@ -70,6 +70,7 @@ struct PackOptions {
   /// a folder `pack --still` wrote: stats.json carries its coverage beside this packing's
   std::optional<std::filesystem::path> still_reference;
   bool verbose = false;             ///< the progress line with overlaps, outside and the g range
+  bool profile = false;             ///< print the time per phase and per kernel at the end (profile_text)
   std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
 };
 

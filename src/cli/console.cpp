@@ -63,6 +63,38 @@ std::string pack_progress_text(const StepStatistics& st, double elapsed, const s
   return line.str();
 }
 
+std::string profile_text(const PhaseTimes& times, const std::vector<KernelTime>& kernels, std::uint64_t iterations,
+                         double simulation_seconds) {
+  std::ostringstream out;
+  const auto row = [&](const std::string& name, double seconds, const std::string& extra) {
+    char line[128];
+    const double share = simulation_seconds > 0 ? 100.0 * seconds / simulation_seconds : 0.0;
+    const double per_iteration = iterations > 0 ? 1000.0 * seconds / static_cast<double>(iterations) : 0.0;
+    std::snprintf(line, sizeof line, "  %-34.34s %9.2f s %5.1f %% %9.3f ms%s\n", name.c_str(), seconds, share,
+                  per_iteration, extra.c_str());
+    out << line;
+  };
+  out << "profile: " << iterations << " iterations, " << clock_text(simulation_seconds) << " of simulation\n";
+  out << "  phase                                     time    share   per iter\n";
+  double phases = 0.0;
+  for (const NamedPhase& phase : phase_fields) {
+    row(phase.name, times.*phase.seconds, "");
+    phases += times.*phase.seconds;
+  }
+  // The rest: what the phases do not time (the host waiting on the device, the run loop, the checks).
+  row("(not in a phase)", simulation_seconds > phases ? simulation_seconds - phases : 0.0, "");
+  if (kernels.empty()) return out.str();
+  std::vector<KernelTime> sorted = kernels;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const KernelTime& a, const KernelTime& b) { return a.seconds > b.seconds; });
+  out << "  kernel (phase)                            time    share   per iter  launches\n";
+  for (const KernelTime& k : sorted) {
+    if (k.launches == 0) continue;
+    row(k.name + " (" + k.phase + ")", k.seconds, " " + std::to_string(k.launches));
+  }
+  return out.str();
+}
+
 std::string progress_bar(double done) {
   const int width = 8;
   const int filled = static_cast<int>(width * std::clamp(done, 0.0, 1.0));

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "animpak/progress.hpp"
 #include "animpak/simulation.hpp"
@@ -23,6 +24,12 @@ std::string size_text(std::uintmax_t bytes);
 /// count up to 10^8; `verbose` adds the overlapping and outside vertex counts and the range of g.
 std::string pack_progress_text(const StepStatistics& st, double elapsed, const std::optional<StopEstimate>& estimate,
                                bool verbose);
+
+/// pack --profile's table: each phase's time, share and ms per iteration, then each kernel's (device time
+/// from profiling events; "host:" rows are the host's work inside a step), the largest first. Every line
+/// within 80 columns; `iterations` 0 leaves out the per-iteration column.
+std::string profile_text(const PhaseTimes& times, const std::vector<KernelTime>& kernels, std::uint64_t iterations,
+                         double simulation_seconds);
 
 /// "[###.....]": `done` (0..1) of a bar of 8, the pack's progress line on a terminal.
 std::string progress_bar(double done);

@@ -30,11 +30,11 @@ extern "C" void on_sigint(int) { interrupted.store(true); }
 // resumed run starts at the iteration and the clock where the runs before it stopped, with their samples.
 class Progress {
  public:
-  Progress(const Params::Stop& stop, bool has_secondary, double unit_density, std::vector<ProgressSample> previous,
+  Progress(const Params& params, bool has_secondary, double unit_density, std::vector<ProgressSample> previous,
            bool verbose)
       : tty_(::isatty(STDERR_FILENO)),
         verbose_(verbose),
-        model_(stop, has_secondary, unit_density),
+        model_(params.stop, has_secondary, unit_density, params.growth.growth_rate * params.forces.dt),
         start_(now() - (previous.empty() ? 0.0 : previous.back().seconds)) {
     for (const ProgressSample& s : previous) model_.observe(s);
   }
@@ -186,6 +186,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
             << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
             << " envelope triangles\n";
 
+  const std::uint64_t checkpoint_start = checkpoint.state.iteration;
   std::string driver;
   std::unique_ptr<Backend> backend =
       make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
@@ -193,7 +194,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
       options.resume ? read_progress(out / "stats.json") : std::vector<ProgressSample>{};
   if (previous_samples.empty() && previous_seconds > 0)  // a stats.json from before the samples were kept
     previous_samples.push_back({checkpoint.state.iteration, previous_seconds});
-  Progress progress(world.params.stop, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
+  Progress progress(world.params, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
                     options.verbose);
   RunControl control;
   control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
@@ -214,8 +215,16 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // Frames of an earlier state must not stay beside this one, not even while the render below runs.
   if (replaces_packing) remove_rendered(out);
 
-  PackReport report{world,           result, backend->times(),  checkpoint, {}, loaded.setup_seconds,
-                    backend->name(), driver, progress.samples()};
+  PackReport report{world,
+                    result,
+                    backend->times(),
+                    checkpoint,
+                    {},
+                    loaded.setup_seconds,
+                    backend->name(),
+                    driver,
+                    progress.samples(),
+                    backend->kernel_times()};
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;
@@ -228,6 +237,10 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "\n";
+  // This run's own share (a resumed run's earlier time is in result.seconds, not in the phase times).
+  if (options.profile)
+    std::cerr << profile_text(report.times, report.kernels, result.last_good.iteration - checkpoint_start,
+                              result.seconds - previous_seconds);
   if (world.topology.has_secondary()) {
     if (result.last_good.secondary_since != 0)
       std::cerr << "animpak: the secondary elements grew from iteration " << result.last_good.secondary_since

@@ -260,6 +260,12 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
                     std::isfinite(p.max_gap) ? json(p.max_gap) : json(nullptr),  // no neighbour yet: JSON has no inf
                     p.overlapping, p.outside});
   stats["progress"] = {{"columns", kProgressColumns}, {"rows", rows}};
+  if (!r.kernels.empty()) {
+    json kernels = json::array();
+    for (const KernelTime& k : r.kernels)
+      kernels.push_back({{"name", k.name}, {"phase", k.phase}, {"seconds", k.seconds}, {"launches", k.launches}});
+    stats["kernels"] = kernels;
+  }
   set_quality(stats, w, r.quality);
   write_json(file, stats);
 }

@@ -30,6 +30,7 @@ struct PackReport {
   std::string device;                           ///< the backend's name
   std::string driver;                           ///< the device's driver and platform version
   const std::vector<ProgressSample>& progress;  ///< every statistics check of the packing, resumes included
+  std::vector<KernelTime> kernels;              ///< device time per kernel (this run's; empty for the reference)
 };
 
 /// stats.json's `format_version` (docs/quality.md, "stats.json"): raised when a field is renamed, moved or

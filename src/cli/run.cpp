@@ -47,6 +47,9 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
                           "beside this packing's, and a `still:` line compares them");
   cl.pack_cmd->add_flag("--verbose", cl.pack.verbose,
                         "progress with the overlapping and outside vertex counts and the range of g");
+  cl.pack_cmd->add_flag("--profile", cl.pack.profile,
+                        "at the end, the time of each phase of a step and of each OpenCL kernel (also in "
+                        "stats.json, \"kernels\")");
   cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");
   cl.pack_cmd->add_option("--max-iterations", cl.pack.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));

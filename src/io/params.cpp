@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 48> table{{
+const std::array<ParamInfo, 50> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -105,6 +105,14 @@ const std::array<ParamInfo, 48> table{{
      "straight lines (§6)"},
     {"growth_rate", "growth", field<&Params::growth, &Params::Growth::growth_rate>(), 0.0, inf,
      "g += growth_rate · Δt_sim per free step (§5.3)", "g += 0.001 Δt_sim per free step (§5.3)"},
+    {"growth_boost", "growth", field<&Params::growth, &Params::Growth::growth_boost>(), 1.0, 100.0,
+     "a free slice grows growth_rate × clamp(gap / boost_gap, 1, growth_boost) per step: faster while "
+     "nothing is near it (1: off, the paper's one rate)",
+     "one rate for every free slice (§5.3)"},
+    {"boost_gap", "growth", field<&Params::growth, &Params::Growth::boost_gap>(), 1e-4, 1.0,
+     "the slice gap (nearest other element or the wall) above which a free slice grows faster than "
+     "growth_rate, in proportion to the gap",
+     "not in the paper"},
     {"shrink_rate", "growth", field<&Params::growth, &Params::Growth::shrink_rate>(), 0.0, inf,
      "g -= shrink_rate · Δt_sim per step while overlapping", "not in the paper (growth pauses)"},
     {"growth_ratio", "growth", field<&Params::growth, &Params::Growth::growth_ratio>(), 1.0, inf,

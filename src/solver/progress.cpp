@@ -17,6 +17,14 @@ constexpr double kSettleShare = 0.04;
 // - a stall window's rise, relative to the one before, never taken closer to 1 than this (a rise that
 //   decays no faster would never stall); 0.5 when the windows do not tell.
 constexpr double kMaxWindowDecay = 0.95, kDefaultWindowDecay = 0.5;
+// - the steps of the largest gap's fit: two stall windows of 0.9.0's 1,000 steps (with 0.10.0's windows
+//   of 400, a line over 800 steps ended the default example's trace 0.37 of its real end);
+constexpr std::uint64_t kGapFitSteps = 2000;
+// - the largest gap the fit of the gap test takes: above it, the largest gap is a lone element's distance
+//   to the wall before any neighbour is within the repulsion's reach, which drops at once when one comes
+//   (the default example's from 0.39 to 0.09 within 100 steps with the room's boost); with those
+//   samples the line put the end at 0.37 of the real one.
+constexpr double kMeasuredGap = 0.3;
 
 struct Line {
   double a = 0, b = 0;
@@ -95,10 +103,13 @@ std::optional<StopEstimate> StopModel::estimate() const {
     stop = double(secondary_since) * 1.5;
   } else if (!secondary_started && (last.growing_share >= kFreeGrowingShare || marks.size() < 2)) {
     // Free growth: the meshes grow until they fill the container to about kDensityAtStop, the rate
-    // falling to nothing on the way (linearly in the steps: twice the steps at today's rate).
+    // falling to nothing on the way (linearly in the steps: twice the steps at today's rate). A rate
+    // above base_rate is the room's boost, which ends as the elements near each other: the rest is taken
+    // at base_rate.
     const double final_growth = unit_density_ > 0 ? std::sqrt(kDensityAtStop / unit_density_) : 0.0;
-    if (rate > 0 && final_growth > last.mean_growth) {
-      stop = now + 2.0 * (final_growth - last.mean_growth) / rate;
+    const double expected = base_rate_ > 0 && rate > base_rate_ ? base_rate_ : rate;
+    if (expected > 0 && final_growth > last.mean_growth) {
+      stop = now + 2.0 * (final_growth - last.mean_growth) / expected;
       growth_at_stop = final_growth;
     }
   }
@@ -121,13 +132,14 @@ std::optional<StopEstimate> StopModel::estimate() const {
     growth_at_stop = std::exp(ln_growth);
   }
   if (stop < 0) return std::nullopt;
-  // §5.3's gap test: the largest gap falls exponentially; where its line over the last two windows reaches
-  // stop_gap, growth stops if the stall test has not stopped it first. Two windows, because the largest gap
-  // also falls in steps (a gap between two slices closing), which a line over one window takes for a
-  // trend: the aquarium's trace gave 0.49 of its real end over one window, 0.68 over two.
+  // §5.3's gap test: the largest gap falls exponentially; where its line over the last kGapFitSteps reaches
+  // stop_gap, growth stops if the stall test has not stopped it first. That long, because the largest gap
+  // also falls in steps (a gap between two slices closing), which a shorter line takes for a trend: the
+  // aquarium's trace gave 0.49 of its real end over 1,000 steps, 0.68 over 2,000. Samples whose largest
+  // gap is kMeasuredGap or more are left out (see there).
   std::vector<double> gx, gy;
-  for (std::size_t k = samples_back(samples_, 2 * window); k < samples_.size(); ++k)
-    if (std::isfinite(samples_[k].max_gap) && samples_[k].max_gap > 0.0)
+  for (std::size_t k = samples_back(samples_, kGapFitSteps); k < samples_.size(); ++k)
+    if (std::isfinite(samples_[k].max_gap) && samples_[k].max_gap > 0.0 && samples_[k].max_gap < kMeasuredGap)
       gx.push_back(double(samples_[k].iteration)), gy.push_back(std::log(samples_[k].max_gap));
   if (const std::optional<Line> gap = fit_line(gx, gy); gap && gap->b < 0.0)
     stop = std::min(stop, std::max(now, (std::log(stop_.stop_gap) - gap->a) / gap->b));

@@ -102,3 +102,30 @@ TEST_CASE("animpak render: says what it renders and lists every file it wrote wi
   CHECK(longest_line(packed.err, out) <= 80);
   CHECK(longest_line(rendered.err, out) <= 80);
 }
+
+TEST_CASE("console: pack --profile's table, each phase and each kernel, the largest kernel first, within 80 columns") {
+  animpak::PhaseTimes times;
+  times.grid = 1.0, times.forces = 6.0, times.integrate = 0.5, times.growth = 0.25;
+  const std::vector<animpak::KernelTime> kernels = {
+      {"slot_positions", "grid", 1.0, 400},
+      {"repulsion_force", "forces", 5.0, 400},
+      {"a_kernel_with_a_name_far_longer_than_any_column_of_the_table", "forces", 0.5, 400},
+      {"never_launched", "growth", 0.0, 0},
+      {"host: overlap broadphase", "forces", 0.5, 400},
+  };
+  const std::string text = profile_text(times, kernels, 400, 10.0);
+  INFO(text);
+  CHECK(longest_line(text) <= 80);
+  CHECK_THAT(text, Contains("profile: 400 iterations, 00:00:10 of simulation"));
+  // forces: 6 s of 10 is 60 %, 15 ms per iteration; the 2.25 s no phase timed are listed as such.
+  CHECK_THAT(text, Contains("forces                                  6.00 s  60.0 %    15.000 ms"));
+  CHECK_THAT(text, Contains("(not in a phase)                        2.25 s  22.5 %     5.625 ms"));
+  CHECK_THAT(text, Contains("repulsion_force (forces)                5.00 s  50.0 %    12.500 ms 400"));
+  CHECK(text.find("repulsion_force") < text.find("slot_positions (grid)"));
+  CHECK(text.find("slot_positions (grid)") < text.find("host: overlap broadphase (forces)"));
+  CHECK(text.find("never_launched") == std::string::npos);
+  // The reference backend has no kernels: the phases alone.
+  const std::string phases = profile_text(times, {}, 400, 10.0);
+  CHECK(phases.find("kernel") == std::string::npos);
+  CHECK_THAT(phases, Contains("growth"));
+}

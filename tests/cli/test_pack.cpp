@@ -461,3 +461,33 @@ TEST_CASE("animpak pack/render --still-reference: stats.json carries the still p
         Approx(rendered["quality"]["frames"]["coverage"]["min"].get<double>() / still_mean));
   CHECK(rendered["quality"]["frames"]["times"] == 3);
 }
+
+TEST_CASE("animpak pack --profile: the time of every phase and kernel at the end, and stats.json lists the kernels") {
+  const Sandbox box("profile");
+  const CommandResult r = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
+                                      " --max-iterations 30 --no-render --profile"
+                                      " --device pocl");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Contains("profile: 30 iterations"));
+  for (const char* row : {"forces ", "grid ", "growth ", "repulsion_force (forces)", "integrate (integrate)",
+                          "propose_growth (growth)", "host: overlap broadphase (forces)"})
+    CHECK_THAT(r.err, Contains(row));
+  std::ifstream in(box.path("out") + "/stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(in);
+  REQUIRE(stats.contains("kernels"));
+  bool repulsion = false;
+  for (const nlohmann::json& k : stats["kernels"]) {
+    CHECK(k["seconds"].get<double>() >= 0.0);
+    if (k["name"] == "repulsion_force") {
+      repulsion = true;
+      CHECK(k["launches"] == 30);  // one launch per step
+      CHECK(k["phase"] == "forces");
+    }
+  }
+  CHECK(repulsion);
+  // Without --profile the table is not printed; stats.json still lists the kernels.
+  const CommandResult quiet = run_animpak("pack " + box.scene() + " --out " + box.path("quiet") +
+                                          " --max-iterations 10 --no-render --device pocl");
+  CHECK(quiet.err.find("profile:") == std::string::npos);
+}

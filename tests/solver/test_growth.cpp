@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "animpak/reference.hpp"
 #include "animpak/scene.hpp"
@@ -259,4 +260,54 @@ TEST_CASE("growth: no slice outgrows either time neighbour by more than neighbou
   CHECK(state.growth[0] > 1.05f);
   // Element 1 is free: its slices grew alike, 2000 steps of growth_rate · dt.
   CHECK(state.growth[5] == Approx(1.0 + 2000 * step).epsilon(1e-3));
+}
+
+TEST_CASE(
+    "growth: a free slice grows growth_rate × its gap / boost_gap, at least once and at most growth_boost times") {
+  // The multiplier alone: 1 up to boost_gap, then in proportion to the gap, then capped.
+  CHECK(reference::growth_multiplier(0.0f, 0.02f, 4.0f) == 1.0f);
+  CHECK(reference::growth_multiplier(0.01f, 0.02f, 4.0f) == 1.0f);
+  CHECK(reference::growth_multiplier(0.02f, 0.02f, 4.0f) == 1.0f);
+  CHECK(reference::growth_multiplier(0.05f, 0.02f, 4.0f) == 0.05f / 0.02f);
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 4.0f) == 4.0f);
+  CHECK(reference::growth_multiplier(std::numeric_limits<float>::infinity(), 0.02f, 4.0f) == 4.0f);
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 1.0f) == 1.0f);  // growth_boost 1: the paper's one rate
+
+  // In a growth step: each slice takes the least gap of its vertices; a slice that touches (contact)
+  // does not grow whatever its gap; growth_boost 1 gives every free slice growth_rate exactly.
+  const World w = growth_world();
+  const Topology& topo = w.topology;
+  Params params = w.params;
+  params.growth.growth_ratio = 100.0;
+  params.growth.neighbour_growth_ratio = 100.0;
+  params.growth.growth_boost = 4.0;
+  params.growth.boost_gap = 0.02;
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  SimState state = w.state;
+  std::fill(state.growth.begin(), state.growth.end(), 1.5f);
+  std::vector<float> closest(topo.vertex_count(), 1.0f);  // far from everything: 4×
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  const std::int32_t near = 1, middle = 3, touching = 6;
+  closest[topo.slice_begin[near] + 1] = 0.01f;  // one vertex near something: the slice grows at 1×
+  closest[topo.slice_begin[middle]] = 0.05f;    // 2.5×
+  closest[topo.slice_begin[middle] + 2] = 0.06f;
+  contact[topo.slice_begin[touching]] = contact_wall;
+  const SimState start = state;
+  std::vector<std::uint8_t> changed;
+  test::grow_step(topo, contact, closest, params, true, state, changed);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    const float expected = s == near       ? 1.5f + step
+                           : s == middle   ? 1.5f + step * (0.05f / 0.02f)
+                           : s == touching ? 1.5f
+                                           : 1.5f + step * 4.0f;
+    CHECK(same_bits(state.growth[s], expected));
+  }
+  state = start;
+  params.growth.growth_boost = 1.0;
+  test::grow_step(topo, contact, closest, params, true, state, changed);
+  for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+    INFO("slice " << s);
+    CHECK(same_bits(state.growth[s], s == touching ? 1.5f : 1.5f + step));
+  }
 }

@@ -22,15 +22,28 @@ namespace {
 struct Trace {
   double unit_density = 0;
   bool secondary = false;
+  Params::Stop stop;  // the stop test the run had: its stall window and growth
   std::vector<ProgressSample> rows;
 };
 
-// A trace: comment lines (the command, and "# unit_mesh_density: D" of its world), the columns of
-// stats.json's "progress" rows, then the rows.
+// The stop test with this stall window and growth. Before 0.10.0 the stall test compared windows of
+// 1,000 steps against a 1 % rise: the traces recorded then carry no "# stall:" line, and the model's
+// arithmetic below is worked out by hand for those windows.
+Params::Stop stall_test(int window, double growth) {
+  Params::Stop stop;
+  stop.stall_window = window;
+  stop.stall_growth = growth;
+  return stop;
+}
+
+// A trace: comment lines (the command, "# unit_mesh_density: D" of its world, and "# stall: WINDOW
+// GROWTH", the run's stall_window and stall_growth), the columns of stats.json's "progress" rows, then
+// the rows.
 Trace read_trace(const std::filesystem::path& file) {
   std::ifstream in(file);
   REQUIRE(in);
   Trace trace;
+  trace.stop = stall_test(1000, 0.01);
   std::vector<ProgressSample>& rows = trace.rows;
   std::string line;
   bool header = false;
@@ -38,6 +51,13 @@ Trace read_trace(const std::filesystem::path& file) {
   while (std::getline(in, line)) {
     if (line.rfind(density, 0) == 0) trace.unit_density = std::stod(line.substr(density.size()));
     if (line.rfind("# secondary: ", 0) == 0) trace.secondary = true;
+    if (line.rfind("# stall: ", 0) == 0) {
+      std::istringstream stall(line.substr(9));
+      int window = 0;
+      double growth = 0;
+      REQUIRE(stall >> window >> growth);
+      trace.stop = stall_test(window, growth);
+    }
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
       REQUIRE(line == "iteration,seconds,mean_growth,growing_share,max_gap,overlapping_vertices,outside_vertices");
@@ -81,7 +101,9 @@ TEST_CASE("progress: after a fifth of each recorded run the predicted end is wit
     REQUIRE(trace.size() > 100);
     const double end = trace.back().seconds;
     const auto end_iteration = static_cast<double>(trace.back().iteration);
-    StopModel model(Params::Stop{}, t.secondary, t.unit_density);
+    // Every example packs at the default growth_rate and dt.
+    const Params defaults;
+    StopModel model(t.stop, t.secondary, t.unit_density, defaults.growth.growth_rate * defaults.forces.dt);
     int estimates = 0;
     double worst = 1.0, worst_at = 0.0, next_row = 0.2;
     std::ostringstream table;  // the predicted end over the real one, in time and in steps, every tenth of the run
@@ -117,7 +139,7 @@ TEST_CASE("progress: during free growth, the growth that fills the container to 
   auto sample = [](std::uint64_t i) {
     return ProgressSample{i, 0.01 * double(i), 1.0 + 0.0005 * double(i), 1.0, 0.1, 0, 0};
   };
-  StopModel unknown(Params::Stop{}, false, 0.0), model(Params::Stop{}, false, 0.155);
+  StopModel unknown(stall_test(1000, 0.01), false, 0.0), model(stall_test(1000, 0.01), false, 0.155);
   for (std::uint64_t i = 10; i <= 70; i += 10) model.observe(sample(i));
   CHECK_FALSE(model.estimate().has_value());  // seven samples
   for (std::uint64_t i = 80; i <= 1000; i += 10) model.observe(sample(i)), unknown.observe(sample(i));
@@ -138,14 +160,14 @@ TEST_CASE("progress: once the elements meet, the stall windows' rises decay unti
     if (i <= 2000) return 0.5 + 0.08 * (i - 1000) / 1000;
     return 0.58 + 0.04 * (i - 2000) / 1000;
   };
-  StopModel model(Params::Stop{}, false, 0.1);
+  StopModel model(stall_test(1000, 0.01), false, 0.1);
   for (std::uint64_t i = 10; i <= 3100; i += 10)
     model.observe({i, 0.01 * double(i), std::exp(ln_g(double(i))), 0.5, 0.02, 0, 0});
   const std::optional<StopEstimate> e = model.estimate();
   REQUIRE(e.has_value());
   CHECK(e->iteration == 6240);  // 6000 and 4 % settling
   // And the gap test first where the largest gap falls to stop_gap sooner: 0.02 · e^(-0.001 (i - 2100)).
-  StopModel closing(Params::Stop{}, false, 0.1);
+  StopModel closing(stall_test(1000, 0.01), false, 0.1);
   for (std::uint64_t i = 10; i <= 3100; i += 10)
     closing.observe(
         {i, 0.01 * double(i), std::exp(ln_g(double(i))), 0.5, 0.02 * std::exp(-0.001 * (double(i) - 2100)), 0, 0});
@@ -155,7 +177,7 @@ TEST_CASE("progress: once the elements meet, the stall windows' rises decay unti
 }
 
 TEST_CASE("progress: once growth has stopped, the settling left") {
-  StopModel model(Params::Stop{}, false, 0.1);
+  StopModel model(stall_test(1000, 0.01), false, 0.1);
   // Growth stops at 1900 (the gap test fired between samples); the run settles from there.
   for (std::uint64_t i = 10; i <= 1950; i += 10)
     model.observe(

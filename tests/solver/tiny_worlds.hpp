@@ -14,11 +14,18 @@
 namespace animpak::test {
 
 /// One growth step as both backends take it: each slice's proposal, then the element and neighbour limits.
+/// `closest` is each vertex's gap (step_forces); without it every gap is 0, so a free slice grows at
+/// growth_rate itself (growth_multiplier 1).
+inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8_t>& contact,
+                              const std::vector<float>& closest, const Params& params, bool growing, SimState& state,
+                              std::vector<std::uint8_t>& changed) {
+  std::vector<float> proposed;
+  reference::propose_growth(topo, contact, closest, params, growing, state, proposed);
+  return reference::grow_slices(topo, proposed, params, state, changed);
+}
 inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
                               bool growing, SimState& state, std::vector<std::uint8_t>& changed) {
-  std::vector<float> proposed;
-  reference::propose_growth(topo, contact, params, growing, state, proposed);
-  return reference::grow_slices(topo, proposed, params, state, changed);
+  return grow_step(topo, contact, std::vector<float>(contact.size(), 0.0f), params, growing, state, changed);
 }
 
 /// The paper's constants as printed (§5), taken literally: round numbers that make the expected values

@@ -2,6 +2,7 @@
 // global size padded (the kernels guard `if (i >= n) return;`), each launch's event kept for timing.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "cl_host.hpp"
@@ -41,9 +42,17 @@ class Kernel {
     return event;
   }
 
+  const std::string& name() const { return name_; }
+  /// Device time of the launches timed so far (OpenclBackend::settle_times) and how many there were.
+  void add_time(double seconds) { seconds_ += seconds, ++launches_; }
+  double seconds() const { return seconds_; }
+  std::uint64_t launches() const { return launches_; }
+
  private:
   std::string name_;
   cl::Kernel kernel_;
+  double seconds_ = 0.0;
+  std::uint64_t launches_ = 0;
 };
 
 }  // namespace animpak::opencl

@@ -106,31 +106,45 @@ class DeviceBackend final : public OpenclBackend {
     return true;
   }
   const PhaseTimes& times() const override { return times_; }
+  std::vector<KernelTime> kernel_times() const override {
+    std::vector<KernelTime> out;
+    for (const auto& [kernel, phase] : profiled_)
+      out.push_back({kernel->name(), phase, kernel->seconds(), kernel->launches()});
+    // The host's share of a step: the overlap broadphase (built from the slice boxes read back every
+    // step), the grid's counting sort when it runs on the host, the repulsion order's refresh.
+    out.push_back({"host: overlap broadphase", "forces", host_overlap_grid_, host_overlap_builds_});
+    if (host_sorts_ > 0) out.push_back({"host: grid counting sort", "grid", host_sort_, host_sorts_});
+    out.push_back({"host: repulsion order", "transfer", host_reorder_, host_reorders_});
+    return out;
+  }
 
   void step() override {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
-    timed(times_.grid, slot_positions_.run(queue_, grid_.triangles));
-    timed(times_.forces, slice_centroids_.run(queue_, world_.slices));
-    timed(times_.forces, run_curve_tangents());
-    timed(times_.forces, slice_boxes_.run(queue_, world_.slices));
+    timed(times_.grid, slot_positions_, grid_.triangles);
+    timed(times_.forces, slice_centroids_, world_.slices);
+    if (curve_mode_ == AP_CURVE_SPLINE)
+      timed(times_.forces, curve_spline_tangents_, topo_buf_.tracks);
+    else
+      timed(times_.forces, curve_tangents_, world_.vertices);
+    timed(times_.forces, slice_boxes_, world_.slices);
     build_overlap_grid();
-    timed(times_.forces, repulsion_force_.run(queue_, boundary_count_));
-    if (mirror_) timed(times_.forces, wall_mirror_.run(queue_, boundary_count_));
-    timed(times_.forces, forces_.run(queue_, world_.vertices));
-    timed(times_.integrate, integrate_.run(queue_, world_.vertices));
-    timed(times_.constraints, constraints_.run(queue_, world_.slices));
-    timed(times_.loop, loop_.run(queue_, world_.loops));
-    timed(times_.constraints, apply_containment_.run(queue_, world_.vertices));
-    timed(times_.growth, propose_growth_.run(queue_, world_.slices));
-    timed(times_.growth, grow_.run(queue_, world_.slices));
-    timed(times_.growth, rest_lengths_.run(queue_, world_.vertices));
+    timed(times_.forces, repulsion_force_, boundary_count_);
+    if (mirror_) timed(times_.forces, wall_mirror_, boundary_count_);
+    timed(times_.forces, forces_, world_.vertices);
+    timed(times_.integrate, integrate_, world_.vertices);
+    timed(times_.constraints, constraints_, world_.slices);
+    timed(times_.loop, loop_, world_.loops);
+    timed(times_.constraints, apply_containment_, world_.vertices);
+    timed(times_.growth, propose_growth_, world_.slices);
+    timed(times_.growth, grow_, world_.slices);
+    timed(times_.growth, rest_lengths_, world_.vertices);
     ++iteration_;
   }
 
   StepStatistics statistics() override {
     const std::int32_t slices = world_.slices;
-    timed(times_.statistics, statistics_.run(queue_, slices));
+    timed(times_.statistics, statistics_, slices);
     SliceStatistics per_slice;
     per_slice.resize(static_cast<std::size_t>(slices));
     std::vector<float> growth(slices);
@@ -387,7 +401,7 @@ class DeviceBackend final : public OpenclBackend {
                             opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, secondary_since_ == 0 ? 1 : 0, b.slice_begin,
-                         b.slice_element, b.element_secondary, contact_, growth_, w.proposed);
+                         b.slice_element, b.element_secondary, contact_, closest_, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");
     grow_.bind(world_, p, b.slice_element, b.element_slice_begin, w.proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");
@@ -415,22 +429,35 @@ class DeviceBackend final : public OpenclBackend {
     cl::Event e;
     check(queue_.enqueueReadBuffer(b, wait ? CL_TRUE : CL_FALSE, 0, sizeof(T) * out.size(), out.data(), nullptr, &e),
           std::string("clEnqueueReadBuffer(") + name + ")");
-    pending_.push_back({&times_.transfer, e});
+    pending_.push_back({&times_.transfer, e, nullptr});
   }
 
-  void timed(double& sink, const cl::Event& e) {
-    if (e() != nullptr) pending_.push_back({&sink, e});
+  // Runs `kernel` on `items` work-items, its device time to count towards the phase `sink` and the
+  // kernel's own total (kernel_times, pack --profile).
+  void timed(double& sink, Kernel& kernel, std::int32_t items) {
+    cl::Event e = kernel.run(queue_, items);
+    if (e() == nullptr) return;
+    pending_.push_back({&sink, e, &kernel});
+    if (std::find_if(profiled_.begin(), profiled_.end(), [&](const auto& k) { return k.first == &kernel; }) ==
+        profiled_.end()) {
+      const char* phase = "";
+      for (const NamedPhase& f : phase_fields)
+        if (&(times_.*f.seconds) == &sink) phase = f.name;
+      profiled_.push_back({&kernel, phase});
+    }
   }
 
   // Device time per phase from the profiling events. Callers have just waited on a read, so the
   // finish is free; it covers batches whose reads were all empty (a world without envelope).
   void settle_times() {
     check(queue_.finish(), "clFinish");
-    for (const auto& [sink, event] : pending_) {
+    for (const Pending& p : pending_) {
       cl_ulong start = 0, end = 0;
-      check(event.getProfilingInfo(CL_PROFILING_COMMAND_START, &start), "clGetEventProfilingInfo(START)");
-      check(event.getProfilingInfo(CL_PROFILING_COMMAND_END, &end), "clGetEventProfilingInfo(END)");
-      *sink += static_cast<double>(end - start) * 1e-9;
+      check(p.event.getProfilingInfo(CL_PROFILING_COMMAND_START, &start), "clGetEventProfilingInfo(START)");
+      check(p.event.getProfilingInfo(CL_PROFILING_COMMAND_END, &end), "clGetEventProfilingInfo(END)");
+      const double seconds = static_cast<double>(end - start) * 1e-9;
+      *p.sink += seconds;
+      if (p.kernel != nullptr) p.kernel->add_time(seconds);
     }
     pending_.clear();
   }
@@ -444,7 +471,8 @@ class DeviceBackend final : public OpenclBackend {
     std::vector<float> px(n), py(n), pt(n);
     read(x_, px, "x"), read(y_, py, "y"), read(t_, pt, "t", true);
     settle_times();
-    PhaseStopwatch w(times_.transfer);
+    PhaseStopwatch w(times_.transfer), own(host_reorder_);
+    ++host_reorders_;
     for (std::size_t i = 0; i < boundary_order_.size(); ++i) {
       const std::int32_t v = boundary_order_[i];
       const std::int32_t cx = reference::grid_axis_cell(px[v], grid_.cell, grid_.n),
@@ -465,28 +493,29 @@ class DeviceBackend final : public OpenclBackend {
   // Centroids and cells on the device, the stable counting sort on the device or on the host (as
   // grid.cpp), then the per-slot copies the force kernels read.
   void build_grid() {
-    timed(times_.grid, envelope_cells_.run(queue_, grid_.triangles));
+    timed(times_.grid, envelope_cells_, grid_.triangles);
     if (sort_ == GridSort::device) {
       const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-      timed(times_.grid, grid_clear_.run(queue_, grid_.cells));
-      timed(times_.grid, grid_count_.run(queue_, grid_.triangles));
-      timed(times_.grid, grid_block_sums_.run(queue_, blocks));
-      timed(times_.grid, grid_scan_blocks_.run(queue_, AP_LOCAL_SIZE));  // one work-group
-      timed(times_.grid, grid_scan_cells_.run(queue_, blocks));
-      timed(times_.grid, grid_scatter_.run(queue_, grid_.triangles));
-      timed(times_.grid, grid_order_.run(queue_, grid_.cells));
+      timed(times_.grid, grid_clear_, grid_.cells);
+      timed(times_.grid, grid_count_, grid_.triangles);
+      timed(times_.grid, grid_block_sums_, blocks);
+      timed(times_.grid, grid_scan_blocks_, AP_LOCAL_SIZE);  // one work-group
+      timed(times_.grid, grid_scan_cells_, blocks);
+      timed(times_.grid, grid_scatter_, grid_.triangles);
+      timed(times_.grid, grid_order_, grid_.cells);
     } else {
       host_sort();
     }
-    timed(times_.grid, grid_gather_.run(queue_, grid_.triangles));
-    if (grid_.far_cells != 0) timed(times_.grid, grid_runs_.run(queue_, grid_.cells));
+    timed(times_.grid, grid_gather_, grid_.triangles);
+    if (grid_.far_cells != 0) timed(times_.grid, grid_runs_, grid_.cells);
     grid_built_ = true;
   }
 
   void host_sort() {
     read(scratch_.triangle_cell, cells_, "triangle_cell", true);
     settle_times();
-    PhaseStopwatch w(times_.grid);
+    PhaseStopwatch w(times_.grid), own(host_sort_);
+    ++host_sorts_;
     counting_sort(cells_, grid_.cells, cell_start_, sorted_);
     // The host vectors stay untouched until the next build, which first waits on this queue.
     check(queue_.enqueueWriteBuffer(scratch_.cell_start, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
@@ -506,7 +535,8 @@ class DeviceBackend final : public OpenclBackend {
     read(w.box_x1, boxes_.x1, "slice_box_x1"), read(w.box_y1, boxes_.y1, "slice_box_y1");
     read(w.box_t, boxes_.t, "slice_t", true);
     settle_times();
-    PhaseStopwatch watch(times_.forces);
+    PhaseStopwatch watch(times_.forces), own(host_overlap_grid_);
+    ++host_overlap_builds_;
     reference::build_overlap_grid(topo_, boxes_, overlap_grid_);
     const auto grow = [&](cl::Buffer& buffer, std::size_t& capacity, const std::vector<std::int32_t>& data,
                           const char* name) {
@@ -567,7 +597,15 @@ class DeviceBackend final : public OpenclBackend {
   reference::OverlapGrid overlap_grid_;
   std::size_t overlap_start_capacity_ = 0, overlap_elements_capacity_ = 0;
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
-  std::vector<std::pair<double*, cl::Event>> pending_;
+  struct Pending {
+    double* sink;  // the phase's total
+    cl::Event event;
+    Kernel* kernel;  // the kernel launched, or null for a transfer
+  };
+  std::vector<Pending> pending_;
+  std::vector<std::pair<Kernel*, const char*>> profiled_;  // every kernel timed so far, with its phase
+  double host_overlap_grid_ = 0, host_sort_ = 0, host_reorder_ = 0;
+  std::uint64_t host_overlap_builds_ = 0, host_sorts_ = 0, host_reorders_ = 0;
   PhaseTimes times_;
 };
 

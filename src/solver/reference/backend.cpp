@@ -53,7 +53,8 @@ class ReferenceBackend final : public Backend {
     }
     {
       PhaseStopwatch w(times_.growth);
-      reference::propose_growth(topo_, forces.contact, params_, state_.settling_since == 0, state_, proposed_);
+      reference::propose_growth(topo_, forces.contact, forces.closest, params_, state_.settling_since == 0, state_,
+                                proposed_);
       grown_ = reference::grow_slices(topo_, proposed_, params_, state_, changed_);
       reference::update_rest_lengths(topo_, changed_, state_);
     }

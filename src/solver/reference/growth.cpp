@@ -4,22 +4,36 @@
 // slice and a slice touching the wall pause;
 // and no slice outgrows growth_ratio × the smallest slice of its element nor neighbour_growth_ratio ×
 // either time neighbour, so an element's size changes smoothly over the loop.
+#include <limits>
+
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
 
-void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params, bool growing,
-                    const SimState& state, std::vector<float>& proposed) {
+float growth_multiplier(float gap, float boost_gap, float boost) {
+  const float m = gap / boost_gap;
+  if (m > boost) return boost;  // also a gap of +inf (no boundary vertex)
+  return m > 1.0f ? m : 1.0f;
+}
+
+void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const std::vector<float>& closest,
+                    const Params& params, bool growing, const SimState& state, std::vector<float>& proposed) {
   const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
   const float shrink =
       static_cast<float>((growing ? params.growth.shrink_rate : params.growth.settle_shrink_rate) * params.forces.dt);
   const float cap = static_cast<float>(params.growth.max_growth);
+  const float boost = static_cast<float>(params.growth.growth_boost);
+  const float boost_gap = static_cast<float>(params.growth.boost_gap);
   const std::int32_t slices = topo.slice_count();
   proposed.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
     std::uint8_t bits = 0;
-    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) bits |= contact[v];
+    float gap = std::numeric_limits<float>::infinity();
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) {
+      bits |= contact[v];
+      gap = closest[v] < gap ? closest[v] : gap;
+    }
     const float g = state.growth[s];
     float next = g;
     // Growing, the larger of two overlapping slices yields; settling, both do, so that an overlap one side
@@ -32,7 +46,7 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
     } else if (growing && !held && (bits & (contact_wall | contact_block)) == 0 && g < cap) {
-      next = g + step;
+      next = g + step * growth_multiplier(gap, boost_gap, boost);
       if (next > cap) next = cap;
     }
     proposed[s] = next;
