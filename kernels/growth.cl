@@ -7,10 +7,11 @@
  * touching a changed slice take their rest length from the scaled rest copy. */
 
 /** growth_multiplier of src/solver/reference/growth.cpp: a free slice grows growth_step × clamp(its gap /
- * boost_gap, 1, growth_boost). */
-float growth_multiplier(const float gap, const float boost_gap, const float boost) {
-  const float m = gap / boost_gap;
-  if (m > boost) return boost;
+ * boost_gap, 1, growth_boost), and no faster than the outline may move (boost_step). */
+float growth_multiplier(const float gap, const float boost_gap, const float boost, const float speed_limit) {
+  float m = gap / boost_gap;
+  if (m > boost) m = boost;
+  if (m > speed_limit) m = speed_limit;
   return m > 1.0f ? m : 1.0f;
 }
 
@@ -24,15 +25,22 @@ __kernel void propose_growth(const WorldInfo world,
                              __global const uchar* element_secondary, /* input: per element */
                              __global const uchar* contact, /* input: AP_CONTACT_* per vertex, from step_forces */
                              __global const float* closest, /* input: per vertex, from step_forces */
-                             __global const float* growth,  /* input: g per slice */
-                             __global float* proposed) {    /* output: proposed g per slice */
+                             __global const float* rest_copy_x,
+                             __global const float* rest_copy_y, /* input: rest copy per vertex */
+                             __global const float* slice_rest_copy_cx,
+                             __global const float* slice_rest_copy_cy, /* input: per slice */
+                             __global const float* growth,             /* input: g per slice */
+                             __global float* proposed) {               /* output: proposed g per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   uchar bits = 0;
-  float gap = INFINITY;
+  float gap = INFINITY, radius2 = 0.0f;
   for (int v = slice_begin[s]; v < slice_begin[s + 1]; ++v) {
     bits |= contact[v];
     gap = closest[v] < gap ? closest[v] : gap;
+    const float dx = rest_copy_x[v] - slice_rest_copy_cx[s], dy = rest_copy_y[v] - slice_rest_copy_cy[s];
+    const float r2 = dx * dx + dy * dy;
+    radius2 = r2 > radius2 ? r2 : radius2;
   }
   const float g = growth[s];
   float next = g;
@@ -42,7 +50,8 @@ __kernel void propose_growth(const WorldInfo world,
     next = g - (growing != 0 ? p.shrink_step : p.settle_shrink_step);
     if (next < 1.0f) next = 1.0f;
   } else if (growing != 0 && !held && (bits & (AP_CONTACT_WALL | AP_CONTACT_BLOCK)) == 0 && g < p.max_growth) {
-    next = g + p.growth_step * growth_multiplier(gap, p.boost_gap, p.growth_boost);
+    const float speed_limit = p.boost_step / (sqrt(radius2) * p.growth_step);
+    next = g + p.growth_step * growth_multiplier(gap, p.boost_gap, p.growth_boost, speed_limit);
     if (next > p.max_growth) next = p.max_growth;
   }
   proposed[s] = next;
@@ -71,7 +80,10 @@ __kernel void grow_slices(const WorldInfo world,
   if (s + 1 < end && after < bound) bound = after;
   const float g = proposed[s] < bound ? proposed[s] : bound;
   const float old = growth[s];
-  uchar bits = proposed[s] < bound ? 0 : AP_GROWTH_HELD;
+  /* Held below its proposal, or below one step at the paper's rate (reference grow_slices). */
+  const float base = old + p.growth_step;
+  const float wanted = proposed[s] < base ? proposed[s] : base;
+  uchar bits = wanted < bound ? 0 : AP_GROWTH_HELD;
   if (g > old) bits |= AP_GROWTH_GREW;
   if (g < old) bits |= AP_GROWTH_SHRANK;
   changed[s] = bits;

@@ -112,6 +112,8 @@ typedef struct {
   ap_float fold_area;          /* the share of a slice triangle's rest area where the fold guard starts */
   ap_float growth_boost;       /* a free slice's growth step is at most growth_boost × growth_step */
   ap_float boost_gap;          /* ... and growth_step × slice gap / boost_gap below that */
+  ap_float boost_step;         /* boost_speed * velocity_cap * dt * dt: the outline's largest boosted step */
+  ap_float pad_boost;          /* unused: keeps the size a multiple of 8 bytes */
 } ForceParams;
 
 /* Sizes of the world, passed to every kernel that walks more than one array. */

@@ -79,6 +79,7 @@ struct Params {
     double max_growth = 15.0;              ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
     double growth_boost = 4.0;  ///< a free slice grows growth_rate × clamp(gap / boost_gap, 1, growth_boost)
     double boost_gap = 0.01;    ///< the slice gap (nearest other element or wall) at which the boost starts
+    double boost_speed = 0.5;   ///< the boost moves no outline vertex faster than this share of the velocity cap
   };
 
   /// §5.3 stopping, and how often the run checks (src/solver).

@@ -307,14 +307,21 @@ void apply_containment(const Topology& topo, SimState& state);
 // ---- growth (§5.3), growth.cpp -------------------------------------------------------------------------
 
 /// Bits of the per-slice `changed` flags grow_slices writes: whether g grew or shrank, and whether the
-/// element's growth_ratio or neighbour_growth_ratio limit held it below its own proposal (such a slice cannot grow, so the stop
-/// test counts it as touching).
+/// element's growth_ratio or neighbour_growth_ratio limit held it below its own proposal or below one
+/// growth step at growth_rate, whichever is less (such a slice is blocked by a contact elsewhere in its
+/// element, so the stop test counts it as touching; one that the limits only slow from the room's boost
+/// is not).
 enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
 /// How many times growth_rate a free slice grows (docs/parameters.md, "Growth"): its gap (the least
 /// `closest` over its vertices: the nearest other element or the wall) over boost_gap, clamped to
-/// [1, boost]. Not in the paper, which grows every free slice at one rate.
-float growth_multiplier(float gap, float boost_gap, float boost);
+/// [1, boost], and to at most speed_limit (the multiplier at which the slice's outline moves outwards
+/// boost_speed × the velocity cap per step) unless that is below 1. Not in the paper, which grows every
+/// free slice at one rate.
+float growth_multiplier(float gap, float boost_gap, float boost, float speed_limit);
+/// boost_speed · velocity_cap · Δt² as float (products in double): the largest outward step of an outline
+/// vertex that the room's boost may ask for (growth_multiplier's speed_limit).
+float boost_step(const Params& params);
 
 /// Each slice's own next g from its contacts (docs/parameters.md, "Growth"), into `proposed`: a slice
 /// with a vertex outside the container, or one that overlaps an element no larger there (contact_yield),

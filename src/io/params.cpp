@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 50> table{{
+const std::array<ParamInfo, 51> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -112,6 +112,10 @@ const std::array<ParamInfo, 50> table{{
     {"boost_gap", "growth", field<&Params::growth, &Params::Growth::boost_gap>(), 1e-4, 1.0,
      "the slice gap (nearest other element or the wall) above which a free slice grows faster than "
      "growth_rate, in proportion to the gap",
+     "not in the paper"},
+    {"boost_speed", "growth", field<&Params::growth, &Params::Growth::boost_speed>(), 0.0, 1.0,
+     "the room's boost never moves a slice's outline outwards faster than this share of velocity_cap "
+     "(the farthest vertex from its centroid: its rest radius times the growth per step)",
      "not in the paper"},
     {"shrink_rate", "growth", field<&Params::growth, &Params::Growth::shrink_rate>(), 0.0, inf,
      "g -= shrink_rate · Δt_sim per step while overlapping", "not in the paper (growth pauses)"},

@@ -264,14 +264,19 @@ TEST_CASE("growth: no slice outgrows either time neighbour by more than neighbou
 
 TEST_CASE(
     "growth: a free slice grows growth_rate × its gap / boost_gap, at least once and at most growth_boost times") {
-  // The multiplier alone: 1 up to boost_gap, then in proportion to the gap, then capped.
-  CHECK(reference::growth_multiplier(0.0f, 0.02f, 4.0f) == 1.0f);
-  CHECK(reference::growth_multiplier(0.01f, 0.02f, 4.0f) == 1.0f);
-  CHECK(reference::growth_multiplier(0.02f, 0.02f, 4.0f) == 1.0f);
-  CHECK(reference::growth_multiplier(0.05f, 0.02f, 4.0f) == 0.05f / 0.02f);
-  CHECK(reference::growth_multiplier(0.5f, 0.02f, 4.0f) == 4.0f);
-  CHECK(reference::growth_multiplier(std::numeric_limits<float>::infinity(), 0.02f, 4.0f) == 4.0f);
-  CHECK(reference::growth_multiplier(0.5f, 0.02f, 1.0f) == 1.0f);  // growth_boost 1: the paper's one rate
+  // The multiplier alone: 1 up to boost_gap, then in proportion to the gap, then capped by growth_boost
+  // and by the outline's speed limit, never below 1.
+  const float inf = std::numeric_limits<float>::infinity();
+  CHECK(reference::growth_multiplier(0.0f, 0.02f, 4.0f, inf) == 1.0f);
+  CHECK(reference::growth_multiplier(0.01f, 0.02f, 4.0f, inf) == 1.0f);
+  CHECK(reference::growth_multiplier(0.02f, 0.02f, 4.0f, inf) == 1.0f);
+  CHECK(reference::growth_multiplier(0.05f, 0.02f, 4.0f, inf) == 0.05f / 0.02f);
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 4.0f, inf) == 4.0f);
+  CHECK(reference::growth_multiplier(std::numeric_limits<float>::infinity(), 0.02f, 4.0f, inf) == 4.0f);
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 1.0f, inf) == 1.0f);  // growth_boost 1: the paper's one rate
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 4.0f, 2.5f) == 2.5f);
+  CHECK(reference::growth_multiplier(0.05f, 0.02f, 4.0f, 3.0f) == 0.05f / 0.02f);
+  CHECK(reference::growth_multiplier(0.5f, 0.02f, 4.0f, 0.3f) == 1.0f);  // never below the paper's rate
 
   // In a growth step: each slice takes the least gap of its vertices; a slice that touches (contact)
   // does not grow whatever its gap; growth_boost 1 gives every free slice growth_rate exactly.
@@ -282,6 +287,8 @@ TEST_CASE(
   params.growth.neighbour_growth_ratio = 100.0;
   params.growth.growth_boost = 4.0;
   params.growth.boost_gap = 0.02;
+  params.growth.boost_speed = 1.0;
+  params.forces.velocity_cap = 1e6;  // the outline's speed limit out of the way here; it has its own case
   const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   SimState state = w.state;
   std::fill(state.growth.begin(), state.growth.end(), 1.5f);
@@ -309,5 +316,97 @@ TEST_CASE(
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     CHECK(same_bits(state.growth[s], s == touching ? 1.5f : 1.5f + step));
+  }
+}
+
+TEST_CASE("growth: a slice the limits only slow from the room's boost is not held; one they stop is") {
+  // The stop test counts a held slice as touching: with the boost, a free slice whose time neighbour
+  // grows at the paper's rate is limited below its 4x proposal, but it still grows a full step, so it
+  // must not count as touching (two discs in a circle stopped by the gap test with the wall gap at 2.8
+  // times half the channel when it did).
+  const World w = growth_world();
+  const Topology& topo = w.topology;
+  Params params = w.params;
+  params.growth.growth_boost = 4.0;
+  params.growth.boost_gap = 0.01;
+  params.forces.velocity_cap = 1e6;  // the outline's speed limit out of the way
+  params.growth.growth_ratio = 100.0;
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  // A neighbour limit that lets a slice beside one growing at the paper's rate grow about three steps.
+  params.growth.neighbour_growth_ratio = 1.0 + 2.0 * step / 1.5;
+  const auto r = static_cast<float>(params.growth.neighbour_growth_ratio);
+  SimState state = w.state;
+  std::fill(state.growth.begin(), state.growth.end(), 1.5f);
+  state.growth[5] = state.growth[7] = r * 1.5f;           // already at the limit of their neighbour at the wall
+  std::vector<float> closest(topo.vertex_count(), 1.0f);  // free: 4x
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  closest[topo.slice_begin[1]] = 0.005f;        // slice 1 near something: 1x, and it bounds slices 0 and 2
+  contact[topo.slice_begin[6]] = contact_wall;  // slice 6 at the wall: 0, and it bounds slices 5 and 7
+  std::vector<std::uint8_t> changed;
+  test::grow_step(topo, contact, closest, params, true, state, changed);
+  CHECK(same_bits(state.growth[1], 1.5f + step));
+  for (const std::int32_t s : {0, 2}) {  // limited below 4 steps, but more than one: not held
+    INFO("slice " << s);
+    CHECK(same_bits(state.growth[s], r * (1.5f + step)));
+    CHECK(state.growth[s] > 1.5f + 2.0f * step);
+    CHECK((changed[s] & reference::growth_held) == 0);
+  }
+  for (const std::int32_t s : {5, 7}) {  // no room at all: held
+    INFO("slice " << s);
+    CHECK(same_bits(state.growth[s], r * 1.5f));
+    CHECK((changed[s] & reference::growth_held) != 0);
+  }
+  CHECK((changed[6] & reference::growth_held) == 0);  // the wall holds it, not a limit
+  CHECK(same_bits(state.growth[3], 1.5f + 4.0f * step));
+}
+
+TEST_CASE("growth: the room's boost moves no outline faster than boost_speed × the velocity cap") {
+  // A slice's outline moves outwards by its largest rest-copy radius per unit of g; with the boost, the
+  // discs of a two-element scene outgrew their meshes (the springs could not follow at the velocity cap)
+  // and stopped at g 7.6 with 0.20 of art radius against 0.23 at g 6.6 without.
+  const World w = growth_world();
+  const Topology& topo = w.topology;
+  Params params = w.params;
+  params.growth.growth_ratio = 100.0;
+  params.growth.neighbour_growth_ratio = 100.0;
+  params.growth.growth_boost = 4.0;
+  params.growth.boost_gap = 0.01;
+  params.growth.boost_speed = 0.5;
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+  const float largest = reference::boost_step(params);
+  CHECK(largest == static_cast<float>(0.5 * params.forces.velocity_cap * params.forces.dt * params.forces.dt));
+  std::vector<float> closest(topo.vertex_count(), 1.0f);  // far from everything
+  std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
+  for (const double cap : {1e6, 0.035, 1e-9}) {
+    INFO("velocity_cap " << cap);
+    params.forces.velocity_cap = cap;
+    const float limit_step = reference::boost_step(params);
+    SimState state = w.state;
+    std::fill(state.growth.begin(), state.growth.end(), 1.5f);
+    std::vector<std::uint8_t> changed;
+    test::grow_step(topo, contact, closest, params, true, state, changed);
+    for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
+      INFO("slice " << s);
+      float radius2 = 0.0f;
+      for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) {
+        const float dx = topo.rest_copy_x[v] - topo.slice_rest_copy_cx[s],
+                    dy = topo.rest_copy_y[v] - topo.slice_rest_copy_cy[s];
+        radius2 = std::max(radius2, dx * dx + dy * dy);
+      }
+      const float radius = std::sqrt(radius2);
+      REQUIRE(radius > 0.0f);
+      const float grown = state.growth[s] - 1.5f;
+      if (cap == 1e6) {
+        CHECK(same_bits(state.growth[s], 1.5f + 4.0f * step));  // the limit far above the boost
+      } else if (cap == 1e-9) {
+        CHECK(same_bits(state.growth[s], 1.5f + step));  // the limit below 1: the paper's rate still
+      } else {
+        const float m = limit_step / (radius * step);
+        REQUIRE(m > 1.0f);
+        REQUIRE(m < 4.0f);  // this cap binds in this world
+        CHECK(same_bits(state.growth[s], 1.5f + step * m));
+        CHECK(grown * radius <= limit_step * 1.0001f);  // the outline's step within the limit
+      }
+    }
   }
 }

@@ -16,13 +16,14 @@ static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, n
 static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
-static_assert(sizeof(ForceParams) == 32 * 4 && offsetof(ForceParams, k_spring) == 12 &&
+static_assert(sizeof(ForceParams) == 34 * 4 && offsetof(ForceParams, k_spring) == 12 &&
               offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
               offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92 &&
               offsetof(ForceParams, settle_shrink_step) == 96 && offsetof(ForceParams, interval_points) == 100 &&
               offsetof(ForceParams, motion_curve) == 104 && offsetof(ForceParams, k_mirror) == 108 &&
               offsetof(ForceParams, k_fold) == 112 && offsetof(ForceParams, fold_area) == 116 &&
-              offsetof(ForceParams, growth_boost) == 120 && offsetof(ForceParams, boost_gap) == 124);
+              offsetof(ForceParams, growth_boost) == 120 && offsetof(ForceParams, boost_gap) == 124 &&
+              offsetof(ForceParams, boost_step) == 128);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);
@@ -68,6 +69,7 @@ ForceParams force_params(const Params& params) {
   p.fold_area = static_cast<float>(params.forces.fold_area);
   p.growth_boost = static_cast<float>(params.growth.growth_boost);
   p.boost_gap = static_cast<float>(params.growth.boost_gap);
+  p.boost_step = reference::boost_step(params);
   return p;
 }
 

@@ -401,7 +401,8 @@ class DeviceBackend final : public OpenclBackend {
                             opencl::container_index_info(topo_.container.index), b.container_index, x_, y_, vx_, vy_);
     propose_growth_ = Kernel(program, "propose_growth");
     propose_growth_.bind(world_, p, settling_since_ == 0 ? 1 : 0, secondary_since_ == 0 ? 1 : 0, b.slice_begin,
-                         b.slice_element, b.element_secondary, contact_, closest_, growth_, w.proposed);
+                         b.slice_element, b.element_secondary, contact_, closest_, b.rest_copy_x, b.rest_copy_y,
+                         b.rest_copy_cx, b.rest_copy_cy, growth_, w.proposed);
     grow_ = Kernel(program, "grow_slices");
     grow_.bind(world_, p, b.slice_element, b.element_slice_begin, w.proposed, growth_, changed_);
     rest_lengths_ = Kernel(program, "update_rest_lengths");

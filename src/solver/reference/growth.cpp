@@ -4,15 +4,22 @@
 // slice and a slice touching the wall pause;
 // and no slice outgrows growth_ratio × the smallest slice of its element nor neighbour_growth_ratio ×
 // either time neighbour, so an element's size changes smoothly over the loop.
+#include <cmath>
 #include <limits>
 
 #include "animpak/reference.hpp"
 
 namespace animpak::reference {
 
-float growth_multiplier(float gap, float boost_gap, float boost) {
-  const float m = gap / boost_gap;
-  if (m > boost) return boost;  // also a gap of +inf (no boundary vertex)
+float boost_step(const Params& params) {
+  return static_cast<float>(params.growth.boost_speed * params.forces.velocity_cap * params.forces.dt *
+                            params.forces.dt);
+}
+
+float growth_multiplier(float gap, float boost_gap, float boost, float speed_limit) {
+  float m = gap / boost_gap;
+  if (m > boost) m = boost;  // also a gap of +inf (no boundary vertex)
+  if (m > speed_limit) m = speed_limit;
   return m > 1.0f ? m : 1.0f;
 }
 
@@ -25,14 +32,19 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
   const float cap = static_cast<float>(params.growth.max_growth);
   const float boost = static_cast<float>(params.growth.growth_boost);
   const float boost_gap = static_cast<float>(params.growth.boost_gap);
+  const float largest_step = boost_step(params);
   const std::int32_t slices = topo.slice_count();
   proposed.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
     std::uint8_t bits = 0;
-    float gap = std::numeric_limits<float>::infinity();
+    float gap = std::numeric_limits<float>::infinity(), radius2 = 0.0f;
     for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v) {
       bits |= contact[v];
       gap = closest[v] < gap ? closest[v] : gap;
+      const float dx = topo.rest_copy_x[v] - topo.slice_rest_copy_cx[s],
+                  dy = topo.rest_copy_y[v] - topo.slice_rest_copy_cy[s];
+      const float r2 = dx * dx + dy * dy;
+      radius2 = r2 > radius2 ? r2 : radius2;
     }
     const float g = state.growth[s];
     float next = g;
@@ -46,7 +58,9 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
       next = g - shrink;
       if (next < 1.0f) next = 1.0f;  // never below the overlap-free start (§4)
     } else if (growing && !held && (bits & (contact_wall | contact_block)) == 0 && g < cap) {
-      next = g + step * growth_multiplier(gap, boost_gap, boost);
+      // The outline's farthest vertex moves sqrt(radius2) per unit of g: at most largest_step per step.
+      const float speed_limit = largest_step / (std::sqrt(radius2) * step);
+      next = g + step * growth_multiplier(gap, boost_gap, boost, speed_limit);
       if (next > cap) next = cap;
     }
     proposed[s] = next;
@@ -56,6 +70,7 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
 std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
                          SimState& state, std::vector<std::uint8_t>& changed) {
   const float ratio = static_cast<float>(params.growth.growth_ratio);
+  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
   const float neighbour_ratio = static_cast<float>(params.growth.neighbour_growth_ratio);
   // The element's smallest proposal bounds every slice of it, and each slice's time neighbours bound it.
   changed.assign(topo.slice_count(), growth_kept);
@@ -71,7 +86,12 @@ std::int32_t grow_slices(const Topology& topo, const std::vector<float>& propose
       if (s > first && neighbour_ratio * proposed[s - 1] < bound) bound = neighbour_ratio * proposed[s - 1];
       if (s + 1 < end && neighbour_ratio * proposed[s + 1] < bound) bound = neighbour_ratio * proposed[s + 1];
       const float g = proposed[s] < bound ? proposed[s] : bound;
-      std::uint8_t bits = proposed[s] < bound ? growth_kept : growth_held;
+      // Held: a limit keeps it below what it proposed, or below one growth step at the paper's rate where
+      // the room's boost proposed more; a slice the limits let grow at least that much is not held,
+      // however much faster its room would let it grow (docs/parameters.md, "Growth that follows the room").
+      const float base = state.growth[s] + step;
+      const float wanted = proposed[s] < base ? proposed[s] : base;
+      std::uint8_t bits = wanted < bound ? growth_kept : growth_held;
       if (g > state.growth[s]) bits |= growth_grew, ++grown;
       if (g < state.growth[s]) bits |= growth_shrank;
       changed[s] = bits;
