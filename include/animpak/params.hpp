@@ -77,7 +77,7 @@ struct Params {
     double neighbour_growth_ratio = 1.03;  ///< a slice's g is at most this × either time neighbour's
     double settle_shrink_rate = 0.04;      ///< while settling, overlapping and spilling slices shrink this fast
     double max_growth = 15.0;              ///< cap on g (the authors' code: 15, i.e. 0.07 · 15 ≈ full size)
-    double growth_boost = 4.0;  ///< a free slice grows growth_rate × clamp(gap / boost_gap, 1, growth_boost)
+    double growth_boost = 1.0;  ///< a free slice grows growth_rate × clamp(gap / boost_gap, 1, growth_boost)
     double boost_gap = 0.01;    ///< the slice gap (nearest other element or wall) at which the boost starts
     double boost_speed = 0.5;   ///< the boost moves no outline vertex faster than this share of the velocity cap
   };
@@ -88,8 +88,8 @@ struct Params {
     double stop_growth = 0.0;      ///< also stop when every slice's g exceeds this (0: off)
     int max_iterations = 100000;   ///< hard cap on steps
     int settle_iterations = 3000;  ///< after the gap test passes, steps without growth to clear overlaps
-    int stall_window = 400;        ///< the stall test compares the mean g this many steps apart (0: off)
-    double stall_growth = 0.004;   ///< growth has stalled when the mean g rose by less than this share in a window
+    int stall_window = 1000;       ///< the stall test compares the mean g this many steps apart (0: off)
+    double stall_growth = 0.01;    ///< growth has stalled when the mean g rose by less than this share in a window
     int check_interval = 10;       ///< NaN/Inf check and statistics every k steps
   };
 
