@@ -319,7 +319,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("growth: a slice the limits only slow from the room's boost is not held; one they stop is") {
+TEST_CASE("growth: a slice the limits only slow from the room's boost is not held, one they stop is") {
   // The stop test counts a held slice as touching: with the boost, a free slice whose time neighbour
   // grows at the paper's rate is limited below its 4x proposal, but it still grows a full step, so it
   // must not count as touching (two discs in a circle stopped by the gap test with the wall gap at 2.8
