@@ -313,7 +313,7 @@ void apply_containment(const Topology& topo, SimState& state);
 /// is not).
 enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
-/// How many times growth_rate a free slice grows (docs/parameters.md, "Growth"): its gap (the least
+/// How many times growth_rate a free slice grows (docs/parameters.md, "Growth that follows the room"): its gap (the least
 /// `closest` over its vertices: the nearest other element or the wall) over boost_gap, clamped to
 /// [1, boost], and to at most speed_limit (the multiplier at which the slice's outline moves outwards
 /// boost_speed × the velocity cap per step) unless that is below 1. Not in the paper, which grows every
