@@ -47,12 +47,16 @@ class Kernel {
   void add_time(double seconds) { seconds_ += seconds, ++launches_; }
   double seconds() const { return seconds_; }
   std::uint64_t launches() const { return launches_; }
+  /// The phase of PhaseTimes its time counts towards (null until its first timed launch).
+  const char* phase() const { return phase_; }
+  void set_phase(const char* phase) { phase_ = phase; }
 
  private:
   std::string name_;
   cl::Kernel kernel_;
   double seconds_ = 0.0;
   std::uint64_t launches_ = 0;
+  const char* phase_ = nullptr;
 };
 
 }  // namespace animpak::opencl

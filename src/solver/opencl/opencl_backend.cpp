@@ -108,8 +108,8 @@ class DeviceBackend final : public OpenclBackend {
   const PhaseTimes& times() const override { return times_; }
   std::vector<KernelTime> kernel_times() const override {
     std::vector<KernelTime> out;
-    for (const auto& [kernel, phase] : profiled_)
-      out.push_back({kernel->name(), phase, kernel->seconds(), kernel->launches()});
+    for (const Kernel* kernel : profiled_)
+      out.push_back({kernel->name(), kernel->phase(), kernel->seconds(), kernel->launches()});
     // The host's share of a step: the overlap broadphase (built from the slice boxes read back every
     // step), the grid's counting sort when it runs on the host, the repulsion order's refresh.
     out.push_back({"host: overlap broadphase", "forces", host_overlap_grid_, host_overlap_builds_});
@@ -123,10 +123,7 @@ class DeviceBackend final : public OpenclBackend {
     if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
     timed(times_.grid, slot_positions_, grid_.triangles);
     timed(times_.forces, slice_centroids_, world_.slices);
-    if (curve_mode_ == AP_CURVE_SPLINE)
-      timed(times_.forces, curve_spline_tangents_, topo_buf_.tracks);
-    else
-      timed(times_.forces, curve_tangents_, world_.vertices);
+    timed(times_.forces, curve_tangents_kernel(), curve_tangents_items());
     timed(times_.forces, slice_boxes_, world_.slices);
     build_overlap_grid();
     timed(times_.forces, repulsion_force_, boundary_count_);
@@ -198,7 +195,7 @@ class DeviceBackend final : public OpenclBackend {
     forces_.set(0, world);
     slot_positions_.run(queue_, grid_.triangles);
     slice_centroids_.run(queue_, world_.slices);
-    run_curve_tangents();
+    curve_tangents_kernel().run(queue_, curve_tangents_items());
     slice_boxes_.run(queue_, world_.slices);
     build_overlap_grid();
     repulsion_force_.run(queue_, boundary_count_);
@@ -340,9 +337,9 @@ class DeviceBackend final : public OpenclBackend {
 
   // Every vertex's tangent for the curve between slices: the spline's, a solve per track, or Steffen's,
   // one work-item per vertex (reference::curve_tangents).
-  cl::Event run_curve_tangents() {
-    if (curve_mode_ == AP_CURVE_SPLINE) return curve_spline_tangents_.run(queue_, topo_buf_.tracks);
-    return curve_tangents_.run(queue_, world_.vertices);
+  Kernel& curve_tangents_kernel() { return curve_mode_ == AP_CURVE_SPLINE ? curve_spline_tangents_ : curve_tangents_; }
+  std::int32_t curve_tangents_items() const {
+    return curve_mode_ == AP_CURVE_SPLINE ? topo_buf_.tracks : world_.vertices;
   }
 
   // Every other phase of a step, in step order: forces (§5), integration, constraints (§5.2),
@@ -439,12 +436,12 @@ class DeviceBackend final : public OpenclBackend {
     cl::Event e = kernel.run(queue_, items);
     if (e() == nullptr) return;
     pending_.push_back({&sink, e, &kernel});
-    if (std::find_if(profiled_.begin(), profiled_.end(), [&](const auto& k) { return k.first == &kernel; }) ==
-        profiled_.end()) {
+    if (kernel.phase() == nullptr) {  // its first timed launch: name its phase, list it for kernel_times
       const char* phase = "";
       for (const NamedPhase& f : phase_fields)
         if (&(times_.*f.seconds) == &sink) phase = f.name;
-      profiled_.push_back({&kernel, phase});
+      kernel.set_phase(phase);
+      profiled_.push_back(&kernel);
     }
   }
 
@@ -604,7 +601,7 @@ class DeviceBackend final : public OpenclBackend {
     Kernel* kernel;  // the kernel launched, or null for a transfer
   };
   std::vector<Pending> pending_;
-  std::vector<std::pair<Kernel*, const char*>> profiled_;  // every kernel timed so far, with its phase
+  std::vector<Kernel*> profiled_;  // every kernel timed so far, in the order of its first launch
   double host_overlap_grid_ = 0, host_sort_ = 0, host_reorder_ = 0;
   std::uint64_t host_overlap_builds_ = 0, host_sorts_ = 0, host_reorders_ = 0;
   PhaseTimes times_;
