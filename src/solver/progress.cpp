@@ -17,8 +17,9 @@ constexpr double kSettleShare = 0.04;
 // - a stall window's rise, relative to the one before, never taken closer to 1 than this (a rise that
 //   decays no faster would never stall); 0.5 when the windows do not tell.
 constexpr double kMaxWindowDecay = 0.95, kDefaultWindowDecay = 0.5;
-// - the steps of the largest gap's fit: two stall windows of 0.9.0's 1,000 steps (with 0.10.0's windows
-//   of 400, a line over 800 steps ended the default example's trace 0.37 of its real end);
+// - the steps of the largest gap's fit: two stall windows of the default 1,000 steps, whatever the scene's
+//   window (with windows of 400, a line over 800 steps ended the boosted default trace at 0.37 of its
+//   real end);
 constexpr std::uint64_t kGapFitSteps = 2000;
 // - the largest gap the fit of the gap test takes: above it, the largest gap is a lone element's distance
 //   to the wall before any neighbour is within the repulsion's reach, which drops at once when one comes
