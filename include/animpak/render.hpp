@@ -81,6 +81,11 @@ std::vector<std::filesystem::path> write_inspect_pictures(const SpacetimeElement
 /// width however thin: what a browser draws at that size, for `animpak check --png`.
 Picture draw_art_preview(const ArtShape& art, int size);
 
+/// An inline `<svg>` of the art at its own coordinates, fitted into a `size`-pixel square with its aspect
+/// kept: its paths in drawing order with their paint, as the SVG frames write them (`animpak report`'s
+/// table of elements). Our own drawing of the imported art, never the file's text.
+std::string art_svg(const ArtShape& art, int size);
+
 /// Slice vertex positions of element instance `element` at frame time tf (paper §6): on the curve between
 /// the two consecutive slices whose current t values bracket tf (include/animpak/curve.hpp; the paper's
 /// linear interpolation with `motion_curve` 0).
@@ -287,6 +292,10 @@ struct MotionMetrics {
   /// Per element, at its slices: the largest over the smallest of its boundary's area over its scripted
   /// area there (the rest copy's, shrunk as placed): its growth g squared, deformation included.
   std::vector<double> size_over_script;
+  /// Per frame: the largest acceleration of any element there (container units per frame²); NaN where it
+  /// has no second difference (the first and last frames when the world does not loop). Over
+  /// acceleration_median it is the frame's own kink, which shows where the jolts are (`animpak report`).
+  std::vector<double> frame_peak;
   /// 99th percentile over median of the acceleration (infinite when the median is 0).
   double kink() const {
     return acceleration_median > 0.0 ? acceleration_p99 / acceleration_median : std::numeric_limits<double>::infinity();

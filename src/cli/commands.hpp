@@ -98,6 +98,14 @@ struct RenderOptions {
 
 int render(const RenderOptions& options);
 
+struct ReportOptions {
+  std::filesystem::path dir;                 ///< a folder `animpak pack` wrote, rendered
+  std::optional<std::filesystem::path> out;  ///< default DIR/report.html
+};
+
+/// Writes the packing in `dir` as one self-contained HTML page (report_page.hpp).
+int report(const ReportOptions& options);
+
 struct BenchOptions {
   std::vector<std::string> devices{"reference"};
   std::vector<int> sizes{10000, 50000, 100000};  ///< target vertex counts of the synthetic worlds

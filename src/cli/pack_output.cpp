@@ -152,8 +152,11 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   nlohmann::json sizes = nlohmann::json::array();
   for (std::size_t e = 0; e < m.size_over_script.size() && e < w.elements.size(); ++e)
     sizes.push_back({{"element", w.elements[e].name}, {"ratio", m.size_over_script[e]}});
+  nlohmann::json peaks = nlohmann::json::array();
+  for (const double peak : m.frame_peak)
+    peaks.push_back(std::isfinite(peak) ? nlohmann::json(peak) : nlohmann::json(nullptr));
   stats["motion"] = {
-      {"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}}},
+      {"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}, {"frame_peak", peaks}}},
       {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
       {"slice_ratio", std::isfinite(m.slice_ratio) ? nlohmann::json(m.slice_ratio) : nlohmann::json(nullptr)},
       {"size_over_script", sizes}};

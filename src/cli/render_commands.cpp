@@ -199,6 +199,13 @@ class RenderingFrontend final : public Frontend {
     render_cmd_->add_flag("--contact-plot", render_.contact_plot,
                           "also draw every frame's spherical contact function H(r) into DIR/contact.png");
 
+    report_cmd_ = app.add_subcommand(
+        "report",
+        "Write a packing as one self-contained HTML page: its animation, quality and motion per frame, "
+        "elements and provenance");
+    report_cmd_->add_option("DIR", report_.dir, "folder written by animpak pack (rendered)")->required();
+    report_cmd_->add_option("--out", report_.out, "the page's file (default DIR/report.html)");
+
     pack.add_flag("!--no-render", pack_render_, "do not render frames");
     add_frame_options(pack, pack_frames_);
 
@@ -209,6 +216,7 @@ class RenderingFrontend final : public Frontend {
     if (inspect_cmd_->parsed()) return inspect(inspect_);
     if (check_cmd_->parsed()) return check(check_);
     if (render_cmd_->parsed()) return render(render_);
+    if (report_cmd_->parsed()) return report(report_);
     return std::nullopt;
   }
 
@@ -229,6 +237,8 @@ class RenderingFrontend final : public Frontend {
   CLI::App* inspect_cmd_ = nullptr;
   CLI::App* check_cmd_ = nullptr;
   CLI::App* render_cmd_ = nullptr;
+  CLI::App* report_cmd_ = nullptr;
+  ReportOptions report_;
   InspectOptions inspect_;
   CheckOptions check_;
   RenderOptions render_;

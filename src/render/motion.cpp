@@ -38,6 +38,7 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
     if (from < centroids.size() && to < centroids.size()) loops_into[from] = to, loops_from[to] = from;
   }
   std::vector<double> all, at_slice, elsewhere;
+  m.frame_peak.assign(n, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t e = 0; e < centroids.size() && n >= 3; ++e) {
     const ElementInstance& inst = world.elements[e];
     const int first = inst.slice_begin, slices = topo.element_slice_begin[e + 1] - first;
@@ -47,6 +48,7 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
                  c = i + 1 == n ? centroids[loops_into[e]][0] : centroids[e][i + 1];
       const double value = std::hypot(a.x - 2.0 * b.x + c.x, a.y - 2.0 * b.y + c.y);
       all.push_back(value);
+      if (!(m.frame_peak[i] >= value)) m.frame_peak[i] = value;
       // Frame i bends at a slice when one of the element's slice times lies within a frame of it.
       bool near = false;
       for (int s = 0; s < slices && !near; ++s) {

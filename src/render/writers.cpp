@@ -199,6 +199,26 @@ std::string quoted(const std::filesystem::path& p) {
 
 }  // namespace
 
+std::string art_svg(const ArtShape& art, int size) {
+  Box box = art.bounds();
+  double widest = 0.0;
+  for (const ArtPath& path : art.paths) widest = std::max(widest, path.stroke_width);
+  const double pad = std::max(0.5 * widest, 0.01 * std::max(box.width(), box.height()));
+  const double x = box.min.x - pad, y = box.min.y - pad, w = std::max(box.width() + 2 * pad, 1e-9),
+               h = std::max(box.height() + 2 * pad, 1e-9);
+  const double k = size / std::max(w, h);
+  std::ostringstream out;
+  out << std::setprecision(7) << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x << ' ' << y << ' ' << w
+      << ' ' << h << "\" width=\"" << std::max(1L, std::lround(w * k)) << "\" height=\""
+      << std::max(1L, std::lround(h * k)) << "\">\n";
+  const ArtPoints points = own_points(art);
+  for (std::size_t p = 0; p < art.paths.size(); ++p)
+    write_svg_path(
+        out, art.paths[p], points[p], [](Vec2 q) { return q; }, art.paths[p].stroke_width);
+  out << "</svg>";
+  return out.str();
+}
+
 std::string animation_file_name(FrameFormat format) {
   switch (format) {
     case FrameFormat::lottie:

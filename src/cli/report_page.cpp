@@ -1,0 +1,449 @@
+// The HTML of `animpak report` (report_page.hpp): text and inline SVG only, so the page needs no network and
+// no file beside it. Every figure is stats.json's, shown in an element whose data-stat names its path there
+// (and data-scale the factor it is shown at), so that a test can hold the page to the file.
+#include "report_page.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "animpak/error.hpp"
+
+namespace animpak::cli {
+namespace {
+
+using nlohmann::json;
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// JSON inside a <script> element: "</" would end the element early.
+std::string script_json(const json& value) {
+  std::string text = value.dump();
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
+    text.replace(at, 2, "<\\/");
+  return text;
+}
+
+// The value at a dotted path ("quality.frames.coverage.mean", "final_growth.3.min"), null when absent.
+const json& at_path(const json& root, const std::string& path) {
+  static const json null_value;
+  const json* node = &root;
+  std::size_t begin = 0;
+  while (begin <= path.size()) {
+    const std::size_t end = std::min(path.find('.', begin), path.size());
+    const std::string key = path.substr(begin, end - begin);
+    if (node->is_object() && node->contains(key)) {
+      node = &(*node)[key];
+    } else if (node->is_array() && !key.empty() && key.find_first_not_of("0123456789") == std::string::npos &&
+               std::stoul(key) < node->size()) {
+      node = &(*node)[std::stoul(key)];
+    } else {
+      return null_value;
+    }
+    begin = end + 1;
+  }
+  return *node;
+}
+
+// One figure of stats.json in a <span data-stat>: the value at `path` times `scale` with `decimals`
+// decimals and `unit` after it, or a dash for null (the page then carries no number to compare).
+std::string stat(const json& stats, const std::string& path, int decimals, double scale = 1.0,
+                 const std::string& unit = "") {
+  const json& value = at_path(stats, path);
+  if (!value.is_number()) return "<span class=\"none\" data-stat-none=\"" + escaped(path) + "\">–</span>";
+  std::ostringstream out;
+  out << "<span data-stat=\"" << escaped(path) << "\"";
+  if (scale != 1.0) out << " data-scale=\"" << scale << "\"";
+  out << ">" << report_number(value.get<double>() * scale, decimals) << unit << "</span>";
+  return out.str();
+}
+
+std::string text_of(const json& stats, const std::string& path) {
+  const json& value = at_path(stats, path);
+  if (value.is_string()) return escaped(value.get<std::string>());
+  if (value.is_null()) return "–";
+  return escaped(value.dump());
+}
+
+// A round step for about `count` ticks over `range`: 1, 2 or 5 times a power of ten.
+double tick_step(double range, int count) {
+  const double raw = range / count, power = std::pow(10.0, std::floor(std::log10(raw))), f = raw / power;
+  return (f < 1.5 ? 1.0 : f < 3.5 ? 2.0 : f < 7.5 ? 5.0 : 10.0) * power;
+}
+
+struct Series {
+  std::string name;
+  std::vector<double> x;
+  std::vector<std::optional<double>> y;
+  std::string color;
+  std::string role = "main";  ///< main (the plot's own figure), extra (drawn thin), reference (dashed level)
+};
+
+struct PlotSpec {
+  std::string id, title, x_label, y_label;
+  double x_min = 0.0, x_max = 1.0;
+  bool time_axis = true;  ///< x is the frame time: the scrubber's cursor moves over it
+  std::optional<double> y_floor;  ///< the y axis starts here at most (0 for shares)
+};
+
+// An inline SVG line plot: axes with round ticks, one polyline per run of values (a null breaks the line),
+// the main series' points as dots, a legend; a hidden cursor line the page's script moves to a frame time.
+std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
+  constexpr double W = 440, H = 230, left = 54, right = 14, top = 30, bottom = 40;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Series& s : series)
+    for (const auto& y : s.y)
+      if (y && std::isfinite(*y)) lo = std::min(lo, *y), hi = std::max(hi, *y);
+  if (!std::isfinite(lo)) lo = 0.0, hi = 1.0;
+  if (spec.y_floor) lo = std::min(lo, *spec.y_floor);
+  if (hi - lo < 1e-12) {
+    const double pad = std::max(std::abs(hi) * 0.1, 0.05);
+    lo -= pad, hi += pad;
+  }
+  const double step = tick_step(hi - lo, 4);
+  lo = std::floor(lo / step + 1e-9) * step, hi = std::ceil(hi / step - 1e-9) * step;
+  const double xs = (W - left - right) / (spec.x_max - spec.x_min), ys = (H - top - bottom) / (hi - lo);
+  const auto px = [&](double x) { return left + (x - spec.x_min) * xs; };
+  const auto py = [&](double y) { return H - bottom - (y - lo) * ys; };
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(2);
+  out << "<svg class=\"plot\" id=\"" << spec.id << "\" viewBox=\"0 0 " << W << ' ' << H << "\" width=\"" << W
+      << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << escaped(spec.title) << "\"";
+  if (spec.time_axis) out << " data-time=\"1\" data-x0=\"" << px(spec.x_min) << "\" data-x1=\"" << px(spec.x_max) << "\"";
+  out << ">\n<text class=\"title\" x=\"" << left << "\" y=\"16\">" << escaped(spec.title) << "</text>\n";
+  // Grid and ticks.
+  for (double y = lo; y <= hi + step * 1e-6; y += step) {
+    out << "<line class=\"grid\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << py(y) << "\" y2=\""
+        << py(y) << "\"/><text class=\"tick\" x=\"" << left - 6 << "\" y=\"" << py(y) + 4
+        << "\" text-anchor=\"end\">" << report_number(y, step < 1 ? int(std::ceil(-std::log10(step) - 1e-9)) : 0)
+        << "</text>\n";
+  }
+  const double xstep = tick_step(spec.x_max - spec.x_min, 4);
+  for (double x = spec.x_min; x <= spec.x_max + xstep * 1e-6; x += xstep)
+    out << "<text class=\"tick\" x=\"" << px(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
+        << report_number(x, xstep < 1 ? int(std::ceil(-std::log10(xstep) - 1e-9)) : 0) << "</text>\n";
+  out << "<line class=\"axis\" x1=\"" << left << "\" x2=\"" << left << "\" y1=\"" << top - 4 << "\" y2=\""
+      << H - bottom << "\"/><line class=\"axis\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\""
+      << H - bottom << "\" y2=\"" << H - bottom << "\"/>\n";
+  out << "<text class=\"label\" x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\">"
+      << escaped(spec.x_label) << "</text><text class=\"label\" transform=\"translate(13 " << (top + H - bottom) / 2
+      << ") rotate(-90)\" text-anchor=\"middle\">" << escaped(spec.y_label) << "</text>\n";
+  double legend_x = W - right;
+  for (auto s = series.rbegin(); s != series.rend(); ++s) {
+    out << "<text class=\"legend\" x=\"" << legend_x << "\" y=\"16\" text-anchor=\"end\" fill=\"" << s->color
+        << "\">" << escaped(s->name) << "</text>\n";
+    legend_x -= 7.0 * double(s->name.size()) + 12.0;
+  }
+  for (const Series& s : series) {
+    std::ostringstream points;
+    points.setf(std::ios::fixed);
+    points.precision(2);
+    int run = 0;
+    const auto flush = [&] {
+      if (run > 0)
+        out << "<polyline class=\"series " << s.role << "\" data-series=\"" << escaped(s.name) << "\" stroke=\""
+            << s.color << "\" points=\"" << points.str() << "\"/>\n";
+      points.str("");
+      run = 0;
+    };
+    for (std::size_t i = 0; i < s.y.size() && i < s.x.size(); ++i) {
+      if (!s.y[i] || !std::isfinite(*s.y[i])) {
+        flush();
+        continue;
+      }
+      points << (run ? " " : "") << px(s.x[i]) << ',' << py(*s.y[i]);
+      ++run;
+    }
+    flush();
+    if (s.role == "main" && s.y.size() <= 200)
+      for (std::size_t i = 0; i < s.y.size() && i < s.x.size(); ++i)
+        if (s.y[i] && std::isfinite(*s.y[i]))
+          out << "<circle class=\"dot\" cx=\"" << px(s.x[i]) << "\" cy=\"" << py(*s.y[i]) << "\" r=\"1.8\" fill=\""
+              << s.color << "\"/>";
+    out << "\n";
+  }
+  if (spec.time_axis)
+    out << "<line class=\"cursor\" x1=\"0\" x2=\"0\" y1=\"" << top - 4 << "\" y2=\"" << H - bottom
+        << "\" visibility=\"hidden\"/>\n";
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::optional<double> number_at(const json& object, const std::string& key) {
+  if (!object.is_object() || !object.contains(key) || !object[key].is_number()) return std::nullopt;
+  return object[key].get<double>();
+}
+
+// A level drawn across a time plot.
+Series level(const std::string& name, double value, const std::string& color) {
+  return {name, {0.0, 1.0}, {value, value}, color, "reference"};
+}
+
+std::string row(const std::string& label, const std::string& value, const std::string& note = "") {
+  return "<tr><th>" + label + "</th><td>" + value + "</td><td class=\"note\">" + note + "</td></tr>\n";
+}
+
+const char* kStyle = R"(
+body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0 auto;max-width:1120px;padding:16px 24px 40px;color:#222;background:#fafafa}
+h1{font-size:24px;margin:8px 0 2px}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ddd;padding-bottom:4px}
+.sub{color:#666;margin:0 0 12px}
+#stage{display:flex;gap:24px;flex-wrap:wrap;align-items:flex-start}
+#animation{background:#fff;border:1px solid #ddd;padding:6px;flex:0 1 520px}
+#animation svg{display:block;width:100%;height:auto;max-height:70vh}
+.controls{display:flex;gap:10px;align-items:center;margin-top:6px}.controls input{flex:1}
+#readout{font-variant-numeric:tabular-nums;color:#444;min-height:1.4em;margin-top:4px}
+table{border-collapse:collapse}th,td{text-align:left;padding:3px 12px 3px 0;vertical-align:middle}
+th{font-weight:600;color:#333}td{font-variant-numeric:tabular-nums}.note{color:#777;font-size:13px}
+#plots{display:flex;flex-wrap:wrap;gap:12px}
+svg.plot{background:#fff;border:1px solid #ddd}
+svg.plot .title{font-size:13px;font-weight:600;fill:#333}svg.plot .tick,svg.plot .label{font-size:11px;fill:#555}
+svg.plot .legend{font-size:11px}svg.plot .grid{stroke:#eee}svg.plot .axis{stroke:#999}
+svg.plot polyline{fill:none;stroke-width:1.6}svg.plot polyline.extra{stroke-width:1;opacity:.7}
+svg.plot polyline.reference{stroke-dasharray:5 4;stroke-width:1.2}svg.plot .cursor{stroke:#c33;stroke-width:1}
+#elements td svg{display:block}
+code{font-size:13px}
+)";
+
+// The page's one script: play and pause the animated SVG, and a slider that stops it at a frame, shows that
+// frame's figures and moves a cursor over every time plot.
+const char* kScript = R"(
+(function () {
+  var data = JSON.parse(document.getElementById('frame-data').textContent);
+  var svg = document.querySelector('#animation svg');
+  var scrub = document.getElementById('scrub'), play = document.getElementById('play');
+  var readout = document.getElementById('readout');
+  function fixed(v, d, s) { return v === null || v === undefined ? '–' : (v * (s || 1)).toFixed(d); }
+  function show(i) {
+    readout.textContent = 'frame ' + i + ', t = ' + data.t[i].toFixed(3) + ': coverage ' +
+      fixed(data.coverage[i], 1, 100) + ' %, channel CV ' + fixed(data.channel[i], 2) +
+      ', wall ratio ' + fixed(data.wall[i], 2) + ', kink ' + fixed(data.kink[i], 1);
+    var plots = document.querySelectorAll('svg.plot[data-time]');
+    for (var k = 0; k < plots.length; ++k) {
+      var p = plots[k], c = p.querySelector('.cursor');
+      var x = Number(p.dataset.x0) + (Number(p.dataset.x1) - Number(p.dataset.x0)) * data.t[i];
+      c.setAttribute('x1', x); c.setAttribute('x2', x); c.setAttribute('visibility', 'visible');
+    }
+  }
+  function frameNow() {
+    return data.frame_seconds > 0 ? Math.floor(svg.getCurrentTime() / data.frame_seconds + 1e-6) % data.t.length : 0;
+  }
+  scrub.addEventListener('input', function () {
+    if (svg && svg.pauseAnimations) { svg.pauseAnimations(); svg.setCurrentTime(Number(scrub.value) * data.frame_seconds); }
+    play.textContent = 'Play';
+    show(Number(scrub.value));
+  });
+  play.addEventListener('click', function () {
+    if (!svg || !svg.pauseAnimations) return;
+    if (svg.animationsPaused()) { svg.unpauseAnimations(); play.textContent = 'Pause'; }
+    else { svg.pauseAnimations(); play.textContent = 'Play'; scrub.value = frameNow(); show(frameNow()); }
+  });
+  // While it plays, the readout and the cursors follow the animation.
+  function follow() {
+    if (svg && svg.animationsPaused && !svg.animationsPaused()) { var i = frameNow(); scrub.value = i; show(i); }
+    window.requestAnimationFrame(follow);
+  }
+  show(0);
+  window.requestAnimationFrame(follow);
+  document.body.dataset.ready = 'yes';
+})();
+)";
+
+}  // namespace
+
+std::string report_number(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", std::max(decimals, 0), value);
+  std::string digits = text, sign;
+  // No "-0.0": a value that rounds to zero has no sign.
+  if (digits[0] == '-') {
+    digits = digits.substr(1);
+    if (digits.find_first_not_of("0.") != std::string::npos) sign = "-";
+  }
+  const std::size_t point = std::min(digits.find('.'), digits.size());
+  std::string grouped;
+  for (std::size_t i = 0; i < point; ++i) {
+    if (i > 0 && (point - i) % 3 == 0) grouped += ',';
+    grouped += digits[i];
+  }
+  return sign + grouped + digits.substr(point);
+}
+
+std::string report_page(const ReportInput& input) {
+  const json& stats = input.stats;
+  const json& frames = at_path(stats, "frames");
+  if (!frames.is_array() || frames.empty())
+    throw InputError(
+        "stats.json: no frames (packed with --no-render, or by animpak-solve); run `animpak render DIR` first, "
+        "which measures the frames the report plots");
+  const std::size_t n = frames.size();
+  std::vector<double> t(n);
+  std::vector<std::optional<double>> coverage(n), channel(n), wall(n), kink(n);
+  const json& peaks = at_path(stats, "motion.acceleration.frame_peak");
+  const std::optional<double> median = number_at(at_path(stats, "motion.acceleration"), "median");
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = number_at(frames[i], "t").value_or(double(i) / double(n));
+    coverage[i] = number_at(frames[i], "coverage");
+    channel[i] = number_at(frames[i], "channel_cv");
+    wall[i] = number_at(frames[i], "wall_ratio");
+    if (peaks.is_array() && i < peaks.size() && peaks[i].is_number() && median && *median > 0.0)
+      kink[i] = peaks[i].get<double>() / *median;
+  }
+  const double t_max = std::max(1.0, t.empty() ? 1.0 : t.back());
+
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+       << "<title>animpak report: " << escaped(input.title) << "</title><style>" << kStyle << "</style></head>\n<body>\n";
+  page << "<h1>" << escaped(input.title) << "</h1>\n<p class=\"sub\">" << text_of(stats, "elements") << " elements, "
+       << stat(stats, "vertices", 0) << " vertices, packed in " << stat(stats, "iterations", 0)
+       << " iterations by animpak " << text_of(stats, "animpak") << " on " << text_of(stats, "device") << "</p>\n";
+
+  // The animation and the slider.
+  page << "<div id=\"stage\"><div id=\"animation-box\" style=\"flex:0 1 540px\"><div id=\"animation\">\n"
+       << input.animation_svg << "\n</div>\n<div class=\"controls\"><button id=\"play\" type=\"button\">Pause</button>"
+       << "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"" << n - 1 << "\" value=\"0\" aria-label=\"frame\">"
+       << "</div><div id=\"readout\"></div></div>\n";
+
+  // The summary: docs/quality.md says what each figure means.
+  const std::string fq = "quality.frames.", bq = "quality.between_slices.";
+  page << "<div id=\"summary\"><h2 style=\"margin-top:0\">Quality</h2><table>\n"
+       << row("coverage", stat(stats, fq + "coverage.mean", 1, 100, " %") + " (" +
+                              stat(stats, fq + "coverage.min", 1, 100, " %") + " – " +
+                              stat(stats, fq + "coverage.max", 1, 100, " %") + ")",
+              "mean over the frames (lowest – highest)");
+  if (at_path(stats, "still_reference.mean_over_still").is_number())
+    page << row("against standing still", stat(stats, "still_reference.mean_over_still", 2),
+                "mean coverage over the still packing's " + stat(stats, "still_reference.coverage", 1, 100, " %"));
+  page << row("art outside", stat(stats, fq + "element_frames_outside", 0) + " of " + stat(stats, fq + "element_frames", 0),
+              "element-frames; between slices " + stat(stats, bq + "element_frames_outside", 0) + " of " +
+                  stat(stats, bq + "element_frames", 0))
+       << row("overlapping", stat(stats, fq + "overlapping_pair_frames", 0),
+              "pair-frames; between slices " + stat(stats, bq + "overlapping_pair_frames", 0))
+       << row("channel CV", stat(stats, fq + "channel_cv.mean", 2), "mean over the frames; 0 is a channel of one width")
+       << row("wall ratio", stat(stats, fq + "wall_ratio.median", 2),
+              "median frame; an even packing has about 0.5")
+       << row("largest empty disc", stat(stats, fq + "empty_disc.median", 2, 1.0, " ρ"),
+              "median frame, in element radii; worst " + stat(stats, fq + "empty_disc.worst", 2, 1.0, " ρ"))
+       << row("kink", stat(stats, "motion.kink", 1), "acceleration's 99th percentile over its median")
+       << row("slices show", stat(stats, "motion.slice_ratio", 2),
+              "acceleration next to a slice over elsewhere; 1 when they do not show");
+  std::size_t worst = 0;
+  const json& sizes = at_path(stats, "motion.size_over_script");
+  for (std::size_t e = 0; sizes.is_array() && e < sizes.size(); ++e)
+    if (number_at(sizes[e], "ratio").value_or(0.0) > number_at(sizes[worst], "ratio").value_or(0.0)) worst = e;
+  if (sizes.is_array() && !sizes.empty())
+    page << row("size against the script", stat(stats, "motion.size_over_script." + std::to_string(worst) + ".ratio", 2, 1.0, "×"),
+                "the least steady element's largest over smallest area over its script");
+  page << "</table></div></div>\n";
+
+  // The plots.
+  std::vector<double> between_t;
+  std::vector<std::optional<double>> between_coverage;
+  for (const json& b : at_path(stats, "between_slices")) {
+    between_t.push_back(number_at(b, "t").value_or(0.0));
+    between_coverage.push_back(number_at(b, "coverage"));
+  }
+  std::vector<std::optional<double>> coverage_percent = coverage, between_percent = between_coverage;
+  for (auto& v : coverage_percent)
+    if (v) *v *= 100.0;
+  for (auto& v : between_percent)
+    if (v) *v *= 100.0;
+  page << "<h2>Per frame</h2>\n<div id=\"plots\">\n";
+  std::vector<Series> coverage_series{{"frames", t, coverage_percent, "#1f6fb2"}};
+  if (!between_t.empty()) coverage_series.push_back({"between slices", between_t, between_percent, "#8fb7dc", "extra"});
+  if (const auto still = number_at(at_path(stats, "still_reference"), "coverage"))
+    coverage_series.push_back(level("standing still", *still * 100.0, "#777"));
+  page << plot({"plot-coverage", "Coverage", "frame time t", "% of the container", 0.0, t_max, true, std::nullopt},
+               coverage_series);
+  page << plot({"plot-channel", "Channel CV", "frame time t", "std / mean", 0.0, t_max, true, 0.0},
+               {{"frames", t, channel, "#2a8a4a"}});
+  page << plot({"plot-wall", "Wall ratio", "frame time t", "wall gap / art gap", 0.0, t_max, true, 0.0},
+               {{"frames", t, wall, "#a0522d"}, level("even: 0.5", 0.5, "#777")});
+  std::vector<Series> kink_series{{"frames", t, kink, "#7b3fa0"}};
+  if (const auto overall = number_at(at_path(stats, "motion"), "kink")) kink_series.push_back(level("kink", *overall, "#777"));
+  page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0},
+               kink_series);
+  const json& contact = at_path(stats, "quality.frames.contact.mean");
+  const double contact_step = number_at(at_path(stats, "quality.frames.contact"), "step").value_or(0.05);
+  std::vector<Series> contact_series;
+  double r_max = contact_step;
+  if (contact.is_array()) {
+    Series mean{"mean H(r)", {}, {}, "#c0392b"};
+    for (std::size_t k = 0; k < contact.size(); ++k) {
+      mean.x.push_back(double(k) * contact_step);
+      mean.y.push_back(contact[k].is_number() ? std::optional<double>(contact[k].get<double>()) : std::nullopt);
+    }
+    r_max = std::max(r_max, mean.x.empty() ? 0.0 : mean.x.back());
+    for (const json& f : frames) {
+      if (!f.contains("contact") || !f["contact"].is_array()) continue;
+      Series one{"", {}, {}, "#e6a29a", "extra"};
+      for (std::size_t k = 0; k < f["contact"].size(); ++k) {
+        one.x.push_back(double(k) * contact_step);
+        one.y.push_back(f["contact"][k].is_number() ? std::optional<double>(f["contact"][k].get<double>()) : std::nullopt);
+      }
+      contact_series.push_back(one);
+    }
+    contact_series.push_back(mean);
+  }
+  page << plot({"plot-contact", "Negative space: spherical contact H(r)", "r (element radii)", "share of the container",
+                0.0, r_max, false, 0.0},
+               contact_series);
+  page << "</div>\n";
+
+  // The elements.
+  page << "<h2>Elements</h2>\n<table id=\"elements\"><tr><th></th><th>element</th><th>art</th><th>kind</th>"
+       << "<th>growth g</th><th>size against the script</th></tr>\n";
+  for (std::size_t e = 0; e < input.elements.size(); ++e) {
+    const ReportElement& el = input.elements[e];
+    const std::string g = "final_growth." + std::to_string(e) + ".";
+    page << "<tr><td>" << el.thumbnail << "</td><td>" << escaped(el.name) << "</td><td>" << escaped(el.library)
+         << " <span class=\"note\">" << escaped(el.art) << "</span></td><td>" << escaped(el.kind) << "</td><td>"
+         << stat(stats, g + "min", 2) << " – " << stat(stats, g + "max", 2) << "</td><td>"
+         << stat(stats, "motion.size_over_script." + std::to_string(e) + ".ratio", 2, 1.0, "×") << "</td></tr>\n";
+  }
+  page << "</table>\n";
+
+  // Provenance.
+  page << "<h2>Provenance</h2>\n<table id=\"provenance\">\n"
+       << row("scene", "<code>" + text_of(stats, "scene") + "</code>")
+       << row("animpak", text_of(stats, "animpak") + ", commit <code>" + text_of(stats, "commit") + "</code>" +
+                             (stats.contains("rendered_by") ? ", rendered by <code>" + text_of(stats, "rendered_by") + "</code>" : ""))
+       << row("device", text_of(stats, "device")) << row("driver", text_of(stats, "driver"))
+       << row("seed", stat(stats, "seed", 0)) << row("iterations", stat(stats, "iterations", 0), text_of(stats, "stop_reason"))
+       << row("time", stat(stats, "seconds.simulation", 1, 1.0, " s"), "simulation; set-up " + stat(stats, "seconds.setup", 1, 1.0, " s"))
+       << row("size", stat(stats, "vertices", 0) + " vertices, " + stat(stats, "springs", 0) + " springs")
+       << "</table>\n";
+
+  // The frame figures the slider shows (the plots' own numbers).
+  double frame_seconds = 0.0;
+  const std::size_t dur = input.animation_svg.find("dur=\"");
+  if (dur != std::string::npos) frame_seconds = std::atof(input.animation_svg.c_str() + dur + 5) / double(n);
+  const auto list = [](const std::vector<std::optional<double>>& v) {
+    json a = json::array();
+    for (const auto& x : v) a.push_back(x ? json(*x) : json(nullptr));
+    return a;
+  };
+  const json data = {{"t", t},           {"coverage", list(coverage)}, {"channel", list(channel)},
+                     {"wall", list(wall)}, {"kink", list(kink)},         {"frame_seconds", frame_seconds}};
+  page << "<script id=\"frame-data\" type=\"application/json\">" << script_json(data) << "</script>\n<script>"
+       << kScript << "</script>\n</body></html>\n";
+  return page.str();
+}
+
+}  // namespace animpak::cli

@@ -1,0 +1,42 @@
+// The page `animpak report DIR` writes (docs/cli.md, "report"): one self-contained HTML file with the
+// packing's animation, its quality and motion per frame as plots, its elements and its provenance. Built
+// from stats.json's figures as they are (docs/quality.md, "stats.json"), so every number the page shows is
+// one of that file's, named by its path in a data-stat attribute.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace animpak::cli {
+
+/// One row of the page's table of elements.
+struct ReportElement {
+  std::string name;       ///< the element's name in stats.json ("star#3", a guided element's own name)
+  std::string library;    ///< its library element's name
+  std::string art;        ///< the art file as the scene names it
+  std::string kind;       ///< "unguided", "guided" or "secondary"
+  std::string thumbnail;  ///< an inline <svg> of its art (our own drawing of the imported art, never the file)
+};
+
+struct ReportInput {
+  std::string title;           ///< the packed folder's name
+  nlohmann::json stats;        ///< DIR/stats.json
+  std::string animation_svg;   ///< DIR/animation.svg (animpak's own svg-anim output), inline
+  std::vector<ReportElement> elements;  ///< in stats.json's element order
+};
+
+/// The ids of the page's plots, each an inline <svg> holding one <polyline> per series: coverage,
+/// channel CV, wall ratio and kink against the frame time, and the contact function H(r).
+inline const std::vector<std::string> kReportPlots = {"plot-coverage", "plot-channel", "plot-wall", "plot-kink",
+                                                      "plot-contact"};
+
+/// The whole page. InputError when stats.json lacks the per-frame figures (a folder packed with
+/// --no-render or by animpak-solve).
+std::string report_page(const ReportInput& input);
+
+/// `value` with `decimals` decimals, thousands separated by commas ("5,400", "43.5").
+std::string report_number(double value, int decimals);
+
+}  // namespace animpak::cli

@@ -1,0 +1,249 @@
+// animpak report: the page shows stats.json's own numbers, its five plots and the animation, and headless
+// Chromium loads it with no console message and draws something; a page missing a plot or the animation
+// fails the same check.
+#include <catch2/catch.hpp>
+
+#include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
+
+#include "report_page.hpp"
+#include "run_animpak.hpp"
+#include "scene/tiny_scenes.hpp"
+#include "skip.hpp"
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+using nlohmann::json;
+
+namespace {
+
+bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
+
+const json& at_path(const json& root, const std::string& path) {
+  static const json null_value;
+  const json* node = &root;
+  std::size_t begin = 0;
+  while (begin <= path.size()) {
+    const std::size_t end = std::min(path.find('.', begin), path.size());
+    const std::string key = path.substr(begin, end - begin);
+    if (node->is_object() && node->contains(key))
+      node = &(*node)[key];
+    else if (node->is_array() && !key.empty() && std::isdigit(static_cast<unsigned char>(key[0])) &&
+             std::stoul(key) < node->size())
+      node = &(*node)[std::stoul(key)];
+    else
+      return null_value;
+    begin = end + 1;
+  }
+  return *node;
+}
+
+// The <svg> element with this id, from its start tag to its </svg>, or empty.
+std::string svg_with_id(const std::string& dom, const std::string& id) {
+  const std::size_t at = dom.find("id=\"" + id + "\"");
+  if (at == std::string::npos) return {};
+  const std::size_t begin = dom.rfind("<svg", at), end = dom.find("</svg>", at);
+  if (begin == std::string::npos || end == std::string::npos) return {};
+  return dom.substr(begin, end + 6 - begin);
+}
+
+// Points of the plot's main series (its polylines), counted.
+std::size_t main_points(const std::string& plot) {
+  std::size_t count = 0;
+  const std::regex line("<polyline class=\"series main\"[^>]*points=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(plot.begin(), plot.end(), line); it != std::sregex_iterator(); ++it) {
+    const std::string points = (*it)[1];
+    count += points.empty() ? 0 : std::count(points.begin(), points.end(), ' ') + 1;
+  }
+  return count;
+}
+
+std::size_t non_null(const json& values) {
+  std::size_t n = 0;
+  for (const json& v : values) n += v.is_number() ? 1 : 0;
+  return n;
+}
+
+// What is wrong with a page as Chromium built it (its DOM after the script ran), held against stats.json:
+// empty when nothing is.
+std::vector<std::string> page_problems(const std::string& dom, const json& stats) {
+  std::vector<std::string> problems;
+  if (dom.find("data-ready=\"yes\"") == std::string::npos) problems.push_back("the page's script did not finish");
+  const std::size_t animation = dom.find("<div id=\"animation\">");
+  const std::size_t animation_end = dom.find("</div>", animation);
+  if (animation == std::string::npos ||
+      dom.substr(animation, animation_end - animation).find("<animate") == std::string::npos)
+    problems.push_back("no animated SVG in #animation");
+  std::set<std::string> present;
+  std::size_t frames_with_wall = 0;
+  for (const json& f : stats["frames"]) frames_with_wall += f["wall_ratio"].is_number() ? 1 : 0;
+  const std::map<std::string, std::size_t> expected = {
+      {"plot-coverage", stats["frames"].size()},
+      {"plot-channel", stats["frames"].size()},
+      {"plot-wall", frames_with_wall},
+      {"plot-kink", non_null(stats["motion"]["acceleration"]["frame_peak"])},
+      {"plot-contact", stats["quality"]["frames"]["contact"]["mean"].size()}};
+  for (const std::string& id : animpak::cli::kReportPlots) {
+    const std::string plot = svg_with_id(dom, id);
+    if (plot.empty()) {
+      problems.push_back(id + ": missing");
+      continue;
+    }
+    if (main_points(plot) != expected.at(id) || expected.at(id) == 0)
+      problems.push_back(id + ": " + std::to_string(main_points(plot)) + " points, stats.json has " +
+                         std::to_string(expected.at(id)));
+  }
+  // Every number shown is stats.json's at its path, to the decimals shown.
+  const std::regex shown(R"re(<span data-stat="([^"]+)"(?: data-scale="([^"]+)")?>([^<]*)</span>)re");
+  int numbers = 0;
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), shown); it != std::sregex_iterator(); ++it, ++numbers) {
+    const std::string path = (*it)[1], text = (*it)[3];
+    const double scale = (*it)[2].matched ? std::stod((*it)[2]) : 1.0;
+    std::string digits;
+    for (const char c : text)
+      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-') digits += c;
+      else if (c != ',' && !digits.empty()) break;
+    const json& value = at_path(stats, path);
+    if (!value.is_number() || digits.empty()) {
+      problems.push_back(path + ": shows \"" + text + "\", stats.json has " + value.dump());
+      continue;
+    }
+    const std::size_t point = digits.find('.');
+    const int decimals = point == std::string::npos ? 0 : int(digits.size() - point - 1);
+    if (std::abs(std::stod(digits) - value.get<double>() * scale) > 0.5 * std::pow(10.0, -decimals) * 1.0001)
+      problems.push_back(path + ": shows " + text + ", stats.json has " + value.dump());
+  }
+  if (numbers < 25) problems.push_back("only " + std::to_string(numbers) + " numbers are tied to stats.json");
+  return problems;
+}
+
+struct Loaded {
+  std::string dom;
+  std::vector<std::string> console;  ///< every console message the page logged
+};
+
+Loaded load_in_chromium(const fs::path& page, const fs::path& scratch) {
+  const fs::path dom = scratch / "dom.html", log = scratch / "chromium.log";
+  // Root (CI) needs --no-sandbox; a profile of its own keeps another Chromium from taking the page over.
+  const std::string command = "chromium --headless --no-sandbox --disable-gpu --user-data-dir='" +
+                              (scratch / "profile").string() + "' --enable-logging=stderr --v=0 --dump-dom 'file://" +
+                              page.string() + "' >'" + dom.string() + "' 2>'" + log.string() + "'";
+  REQUIRE(std::system(command.c_str()) == 0);
+  Loaded loaded{read_text(dom), {}};
+  std::istringstream lines(read_text(log));
+  for (std::string line; std::getline(lines, line);)
+    if (line.find(":CONSOLE") != std::string::npos) loaded.console.push_back(line);
+  return loaded;
+}
+
+}  // namespace
+
+TEST_CASE("report: stats.json's numbers, five plots and the animation, loaded by Chromium with no console message") {
+  if (!have_chromium())
+    return animpak::test::skip("chromium is not on PATH (Debian package chromium); the page was not loaded");
+  const animpak::test::TempDir dir("animpak-report-");
+  std::ofstream(dir / "scene.json") << animpak::test::star_scene(4, 8, 3, {"", R"("initial_scale": 0.15)"});
+  const std::string packed = (dir / "packed").string();
+  const CommandResult pack = run_animpak("pack " + (dir / "scene.json").string() + " --out " + packed +
+                                         " --max-iterations 150 --frames 8 --size 96 --format png,svg-anim");
+  REQUIRE(pack.code == 0);
+  const CommandResult report = run_animpak("report " + packed);
+  INFO(report.err);
+  REQUIRE(report.code == 0);
+  CHECK_THAT(report.err, Contains("report.html") && Contains("self-contained"));
+  const fs::path page = fs::path(packed) / "report.html";
+  const std::string html = read_text(page);
+  // Self-contained: nothing is fetched (no src or href to another file, no link element, no @import).
+  CHECK(std::regex_search(html, std::regex(R"((src|href)\s*=)")) == false);
+  CHECK(html.find("@import") == std::string::npos);
+  const json stats = json::parse(read_text(fs::path(packed) / "stats.json"));
+
+  const Loaded loaded = load_in_chromium(page, dir.path());
+  for (const std::string& line : loaded.console) UNSCOPED_INFO(line);
+  CHECK(loaded.console.empty());
+  const std::vector<std::string> problems = page_problems(loaded.dom, stats);
+  for (const std::string& p : problems) UNSCOPED_INFO(p);
+  CHECK(problems.empty());
+
+  // The check sees a page without a plot or without the animation.
+  const auto doctored = [&](const std::string& from, const std::string& to, const std::string& name) {
+    std::string text = html;
+    const std::size_t begin = text.find(from);
+    REQUIRE(begin != std::string::npos);
+    const std::size_t end = text.find(to, begin);
+    REQUIRE(end != std::string::npos);
+    text.erase(begin, end + to.size() - begin);
+    const fs::path file = dir / name;
+    std::ofstream(file) << text;
+    return page_problems(load_in_chromium(file, dir.path()).dom, stats);
+  };
+  CHECK_FALSE(doctored("<svg class=\"plot\" id=\"plot-kink\"", "</svg>", "no-plot.html").empty());
+  CHECK_FALSE(doctored("<div id=\"animation\">", "</svg>", "no-animation.html").empty());
+
+  // The screenshot shows the page: many colours, most of the page not background.
+  const fs::path shot = dir / "shot.png";
+  const std::string command = "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir='" +
+                              (dir / "profile").string() + "' --window-size=1000,1400 --screenshot='" + shot.string() +
+                              "' 'file://" + page.string() + "' >/dev/null 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  auto in = OIIO::ImageInput::open(shot.string());
+  REQUIRE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<unsigned char> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
+  REQUIRE(in->read_image(0, 0, 0, -1, OIIO::TypeDesc::UINT8, pixels.data()));
+  std::set<unsigned> colours;
+  std::size_t off_background = 0;
+  for (std::size_t i = 0; i + 2 < pixels.size(); i += spec.nchannels) {
+    const unsigned rgb = pixels[i] << 16 | pixels[i + 1] << 8 | pixels[i + 2];
+    colours.insert(rgb);
+    off_background += rgb != 0xfafafa ? 1 : 0;
+  }
+  CHECK(colours.size() > 200);
+  CHECK(off_background > pixels.size() / spec.nchannels / 4);
+}
+
+TEST_CASE("report: a packing rendered without animation.svg gets one drawn, and one never rendered is refused") {
+  const animpak::test::TempDir dir("animpak-report-");
+  std::ofstream(dir / "scene.json") << animpak::test::star_scene(2, 5, 4, {"", R"("initial_scale": 0.15)"});
+  const std::string packed = (dir / "packed").string(), bare = (dir / "bare").string();
+  REQUIRE(run_animpak("pack " + (dir / "scene.json").string() + " --out " + packed +
+                      " --max-iterations 40 --frames 4 --size 64 --format png")
+              .code == 0);
+  const CommandResult report = run_animpak("report " + packed + " --out " + (dir / "page.html").string());
+  INFO(report.err);
+  REQUIRE(report.code == 0);
+  CHECK_THAT(report.err, Contains("has no animation.svg; drawing one"));
+  CHECK_THAT(read_text(dir / "page.html"), Contains("<animate"));
+  CHECK_FALSE(fs::exists(fs::path(packed) / "animation.svg"));
+  CHECK_FALSE(fs::exists(fs::path(packed) / ".report-partial"));
+  CHECK_FALSE(fs::exists(fs::path(packed) / "report.html"));
+
+  REQUIRE(run_animpak("pack " + (dir / "scene.json").string() + " --out " + bare + " --max-iterations 20 --no-render")
+              .code == 0);
+  const CommandResult refused = run_animpak("report " + bare);
+  CHECK(refused.code == 2);
+  CHECK_THAT(refused.err, Contains("stats.json: no frames") && Contains("animpak render " + bare));
+  CHECK_FALSE(fs::exists(fs::path(bare) / "report.html"));
+  const CommandResult empty = run_animpak("report " + (dir / "nothing").string());
+  CHECK(empty.code == 2);
+  CHECK_THAT(empty.err, Contains("no state.bin"));
+}
+
+TEST_CASE("report: numbers with thousands separated and no negative zero, and a page needs frames") {
+  using animpak::cli::report_number;
+  CHECK(report_number(5400, 0) == "5,400");
+  CHECK(report_number(1234567.891, 2) == "1,234,567.89");
+  CHECK(report_number(43.46, 1) == "43.5");
+  CHECK(report_number(-0.001, 2) == "0.00");
+  CHECK(report_number(-1234.5, 1) == "-1,234.5");
+  CHECK(report_number(999.96, 1) == "1,000.0");
+  animpak::cli::ReportInput input;
+  input.stats = json::parse(R"({"frames": []})");
+  CHECK_THROWS_WITH(animpak::cli::report_page(input), Contains("no frames") && Contains("animpak render"));
+}
