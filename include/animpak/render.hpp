@@ -133,8 +133,9 @@ struct ElementArt {
 /// Element `element`'s art replayed on these slice vertex positions, and its stroke scale there.
 ElementArt element_art(const World& world, int element, const std::vector<Vec2>& positions);
 
-/// Every element's art at frame time tf, in element order: the one geometry every frame writer (PNG,
-/// SVG frames, Lottie, animated SVG) and the frame metrics use.
+/// Every element's art at frame time tf, in element order (drawn_count entries: the reflections after
+/// the elements): the one geometry every frame writer (PNG, SVG frames, Lottie, animated SVG) and the
+/// frame metrics use.
 std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf);
 /// The same with every element's tangents (frame_tangents) computed once, for many times of one state.
 std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf,
@@ -261,7 +262,8 @@ inline std::vector<double> mean_contact(const std::vector<FrameMetrics>& metrics
   return mean;
 }
 
-/// The container as a region: the outline minus the holes (even–odd).
+/// The container as a region: the outline minus the holes (even–odd); the shown (whole) container of a
+/// mirrored scene.
 Region container_region(const Container& container);
 
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames

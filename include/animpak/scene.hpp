@@ -2,6 +2,8 @@
 // element instances placed in it, and the initial simulation state.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "animpak/curve.hpp"
@@ -13,6 +15,13 @@
 
 namespace animpak {
 
+/// The line a mirrored scene is reflected across (docs/scene-format.md, "Mirror"), in unit coordinates.
+struct MirrorLine {
+  bool vertical = true;  ///< x = at (true) or y = at
+  double at = 0.0;
+  Vec2 reflect(Vec2 p) const { return vertical ? Vec2{2.0 * at - p.x, p.y} : Vec2{p.x, 2.0 * at - p.y}; }
+};
+
 /// The container in unit coordinates: its outline and holes, each a simple ring without repeats.
 struct Container {
   std::vector<Vec2> outline;
@@ -21,6 +30,12 @@ struct Container {
   ArtShape art;                 ///< the container's art in unit coordinates (stroke widths too), for drawing it
   int outline_path = -1;        ///< source index of the art path the outline was taken from
   std::vector<int> hole_paths;  ///< source index of each hole's path, in `holes` order
+  /// Mirror symmetry: `outline` and `holes` are the side that is simulated, the line is a wall of it, and
+  /// the frames show that side and its reflection, whose outline and holes are `whole_outline` and
+  /// `whole_holes` (mirror_container).
+  std::optional<MirrorLine> mirror;
+  std::vector<Vec2> whole_outline;
+  std::vector<std::vector<Vec2>> whole_holes;
 
   /// Inside the outline and outside every hole.
   bool contains(Vec2 p) const;
@@ -30,6 +45,11 @@ struct Container {
   double area() const;
   /// Box of the outline (holes lie inside it).
   Box bounds() const;
+  /// The outline and holes the frames draw and measure: the whole of a mirrored container, or these.
+  const std::vector<Vec2>& shown_outline() const { return mirror ? whole_outline : outline; }
+  const std::vector<std::vector<Vec2>>& shown_holes() const { return mirror ? whole_holes : holes; }
+  /// Box of the shown outline: the frames' extent.
+  Box shown_bounds() const;
 };
 
 /// Picks the outline and holes from the container art (spec.outline / spec.holes by source index;
@@ -37,6 +57,13 @@ struct Container {
 /// normalizes them like element art (longer side 1, centred). InputError names the file and the path
 /// index for a missing index, an outline with fewer than 3 points or no area, or a hole outside it.
 Container make_container(const ArtShape& art, const ContainerSpec& spec);
+
+/// The side of `whole` that `spec` keeps, for a mirrored scene (docs/scene-format.md, "Mirror"): the
+/// container clipped to that side of the line (in the container art's coordinates, through whole.frame),
+/// with `mirror` set and, as `whole_outline`/`whole_holes`, that side united with its reflection, which is
+/// what the frames show. InputError when the line misses the container or leaves the kept side in more
+/// than one piece, or an island inside a hole. mirror.cpp.
+Container mirror_container(const Container& whole, const MirrorSpec& spec, const std::string& scene_name);
 
 /// Builds box.index, the container query's segment index, for `cells` cells along the longer side of the
 /// segments' bounding box (square cells; a container without segments gets none). container_index.cpp.
@@ -93,6 +120,14 @@ struct World {
 /// blue-noise seeds, each shrunk to params.placement.initial_scale; then checks that nothing overlaps and that
 /// every element is inside the container. InputError names the elements (and slice) at fault.
 World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library);
+
+/// How many elements the frames draw and measure: every element, then under mirror symmetry the reflection of each
+/// (drawn element N + i is element i reflected across Container::mirror; docs/scene-format.md, "Mirror").
+int drawn_count(const World& world);
+/// The element drawn as `drawn`: itself, or drawn − N for a reflection.
+int drawn_source(const World& world, int drawn);
+/// Its name: the element's, or the element's with " mirrored" after it.
+std::string drawn_name(const World& world, int drawn);
 
 /// The share of the container the elements' meshes fill at g = 1: each element's rest copy slice area
 /// (its triangles, the mean over its slices) summed over the elements, over the container's area. The

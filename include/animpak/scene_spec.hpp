@@ -98,13 +98,22 @@ struct OrientationSpec {
   Vec2 center{250.0, 250.0};  ///< radial/tangential: container art coordinates
 };
 
+/// Mirror symmetry (docs/scene-format.md, "Mirror"): only one side of a vertical or horizontal line is
+/// simulated, the line acting as a wall, and the frames draw that side and its reflection.
+struct MirrorSpec {
+  bool vertical = true;  ///< the line x = `at` (true) or y = `at`
+  double at = 0.0;       ///< container art coordinates
+  bool keep_low = true;  ///< simulate the side of smaller x (left) or y (top); false: the other side
+};
+
 struct SceneSpec {
   std::filesystem::path file;  ///< the scene file itself, for messages
   ContainerSpec container;
   std::vector<LibraryElementSpec> elements;
   std::vector<GuidedSpec> guided;
   OrientationSpec orientation;
-  std::optional<int> count;  ///< unguided elements to seed; default: as many as fit ("fill")
+  std::optional<MirrorSpec> mirror;  ///< none: the whole container is simulated
+  std::optional<int> count;          ///< unguided elements to seed; default: as many as fit ("fill")
   std::uint64_t seed = 1;
   bool loop = true;  ///< loop constraint on: the t = 1 plane meets the t = 0 plane
   Params params;     ///< paper constants with the scene's overrides applied

@@ -91,12 +91,12 @@ std::string summary_line(const std::string& label, const QualitySummary& q) {
 }
 
 nlohmann::json element_share(const World& w, const ElementShare& e) {
-  return {{"element", e.element >= 0 ? nlohmann::json(w.elements[e.element].name) : nlohmann::json()},
+  return {{"element", e.element >= 0 ? nlohmann::json(drawn_name(w, e.element)) : nlohmann::json()},
           {"share", e.share}};
 }
 
 nlohmann::json pair_share(const World& w, const PairShare& p) {
-  auto name = [&](int i) { return i >= 0 ? nlohmann::json(w.elements[i].name) : nlohmann::json(); };
+  auto name = [&](int i) { return i >= 0 ? nlohmann::json(drawn_name(w, i)) : nlohmann::json(); };
   return {{"a", name(p.a)}, {"b", name(p.b)}, {"share", p.share}};
 }
 

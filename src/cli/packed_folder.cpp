@@ -17,10 +17,11 @@ namespace {
 
 constexpr int kManifestVersion = 1;
 // Every whole-animation file a render writes (animation_file_name in src/render/writers.cpp names them),
-// and the contact plot `render --contact-plot` draws after the swap: a name missing here is neither
-// swapped in nor removed, and would outlive the render it came from.
-const char* const kAnimationFiles[] = {"animation.gif",    "animation.mp4", "animation.json",
-                                       "animation.lottie", "animation.svg", "contact.png"};
+// the contact plot `render --contact-plot` draws after the swap, and the page `animpak report` writes from
+// a render: a name missing here is neither swapped in nor removed, and would outlive the render it came
+// from.
+const char* const kAnimationFiles[] = {"animation.gif", "animation.mp4", "animation.json", "animation.lottie",
+                                       "animation.svg", "contact.png",   "report.html"};
 
 std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
   std::ifstream in(file, std::ios::binary);

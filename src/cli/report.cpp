@@ -1,5 +1,5 @@
 // `animpak report DIR`: the packing in DIR as one self-contained HTML page (report_page.hpp; docs/cli.md,
-// "report"). Reads DIR/stats.json for every figure, rebuilds the world from state.bin and DIR/input/ for the
+// "`report`"). Reads DIR/stats.json for every figure, rebuilds the world from state.bin and DIR/input/ for the
 // table of elements, and embeds DIR/animation.svg, drawing one into a scratch folder when the packing was
 // rendered without it.
 #include <fstream>
@@ -46,10 +46,12 @@ int report(const ReportOptions& options) {
     throw InputError(stats_file.string() + ": not a JSON object; run `animpak render " + options.dir.string() +
                      "` to write it again");
   if (!input.stats.contains("frames") || !input.stats["frames"].is_array() || input.stats["frames"].empty())
-    throw InputError(stats_file.string() + ": no frames (packed with --no-render, or by animpak-solve); run `animpak render " +
+    throw InputError(stats_file.string() +
+                     ": no frames (packed with --no-render, or by animpak-solve); run `animpak render " +
                      options.dir.string() + "` first, which measures the frames the report plots");
   input.title = std::filesystem::absolute(options.dir).lexically_normal().filename().string();
-  if (input.title.empty()) input.title = std::filesystem::absolute(options.dir).lexically_normal().parent_path().filename().string();
+  if (input.title.empty())
+    input.title = std::filesystem::absolute(options.dir).lexically_normal().parent_path().filename().string();
 
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
   const PackedScene packed = packed_scene(options.dir, checkpoint);
@@ -58,14 +60,18 @@ int report(const ReportOptions& options) {
   const std::size_t stats_elements = input.stats.value("final_growth", nlohmann::json::array()).size();
   if (stats_elements != 0 && stats_elements != world.elements.size())
     throw InputError(stats_file.string() + ": " + std::to_string(stats_elements) + " elements, but state.bin has " +
-                     std::to_string(world.elements.size()) + "; the statistics are another packing's: run `animpak render " +
-                     options.dir.string() + "` to measure this one");
+                     std::to_string(world.elements.size()) +
+                     "; the statistics are another packing's: run `animpak render " + options.dir.string() +
+                     "` to measure this one");
   std::vector<std::string> thumbnails(world.library.size());
   for (std::size_t l = 0; l < world.library.size(); ++l) thumbnails[l] = art_svg(world.library[l].art.art, 44);
   for (const ElementInstance& e : world.elements) {
     const SpacetimeElement& lib = world.library[e.library];
     input.elements.push_back({e.name, lib.name, lib.art.art.source.filename().string(),
-                              e.guided ? "guided" : e.secondary ? "secondary" : "unguided", thumbnails[e.library]});
+                              e.guided      ? "guided"
+                              : e.secondary ? "secondary"
+                                            : "unguided",
+                              thumbnails[e.library]});
   }
 
   const std::filesystem::path animation = options.dir / "animation.svg";

@@ -21,11 +21,20 @@ std::string escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -97,7 +106,7 @@ struct Series {
 struct PlotSpec {
   std::string id, title, x_label, y_label;
   double x_min = 0.0, x_max = 1.0;
-  bool time_axis = true;  ///< x is the frame time: the scrubber's cursor moves over it
+  bool time_axis = true;          ///< x is the frame time: the scrubber's cursor moves over it
   std::optional<double> y_floor;  ///< the y axis starts here at most (0 for shares)
 };
 
@@ -125,29 +134,29 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
   out.precision(2);
   out << "<svg class=\"plot\" id=\"" << spec.id << "\" viewBox=\"0 0 " << W << ' ' << H << "\" width=\"" << W
       << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << escaped(spec.title) << "\"";
-  if (spec.time_axis) out << " data-time=\"1\" data-x0=\"" << px(spec.x_min) << "\" data-x1=\"" << px(spec.x_max) << "\"";
+  if (spec.time_axis)
+    out << " data-time=\"1\" data-x0=\"" << px(spec.x_min) << "\" data-x1=\"" << px(spec.x_max) << "\"";
   out << ">\n<text class=\"title\" x=\"" << left << "\" y=\"16\">" << escaped(spec.title) << "</text>\n";
   // Grid and ticks.
   for (double y = lo; y <= hi + step * 1e-6; y += step) {
-    out << "<line class=\"grid\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << py(y) << "\" y2=\""
-        << py(y) << "\"/><text class=\"tick\" x=\"" << left - 6 << "\" y=\"" << py(y) + 4
-        << "\" text-anchor=\"end\">" << report_number(y, step < 1 ? int(std::ceil(-std::log10(step) - 1e-9)) : 0)
-        << "</text>\n";
+    out << "<line class=\"grid\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << py(y) << "\" y2=\"" << py(y)
+        << "\"/><text class=\"tick\" x=\"" << left - 6 << "\" y=\"" << py(y) + 4 << "\" text-anchor=\"end\">"
+        << report_number(y, step < 1 ? int(std::ceil(-std::log10(step) - 1e-9)) : 0) << "</text>\n";
   }
   const double xstep = tick_step(spec.x_max - spec.x_min, 4);
   for (double x = spec.x_min; x <= spec.x_max + xstep * 1e-6; x += xstep)
     out << "<text class=\"tick\" x=\"" << px(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
         << report_number(x, xstep < 1 ? int(std::ceil(-std::log10(xstep) - 1e-9)) : 0) << "</text>\n";
-  out << "<line class=\"axis\" x1=\"" << left << "\" x2=\"" << left << "\" y1=\"" << top - 4 << "\" y2=\""
-      << H - bottom << "\"/><line class=\"axis\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\""
-      << H - bottom << "\" y2=\"" << H - bottom << "\"/>\n";
+  out << "<line class=\"axis\" x1=\"" << left << "\" x2=\"" << left << "\" y1=\"" << top - 4 << "\" y2=\"" << H - bottom
+      << "\"/><line class=\"axis\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << H - bottom << "\" y2=\""
+      << H - bottom << "\"/>\n";
   out << "<text class=\"label\" x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\">"
       << escaped(spec.x_label) << "</text><text class=\"label\" transform=\"translate(13 " << (top + H - bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">" << escaped(spec.y_label) << "</text>\n";
   double legend_x = W - right;
   for (auto s = series.rbegin(); s != series.rend(); ++s) {
-    out << "<text class=\"legend\" x=\"" << legend_x << "\" y=\"16\" text-anchor=\"end\" fill=\"" << s->color
-        << "\">" << escaped(s->name) << "</text>\n";
+    out << "<text class=\"legend\" x=\"" << legend_x << "\" y=\"16\" text-anchor=\"end\" fill=\"" << s->color << "\">"
+        << escaped(s->name) << "</text>\n";
     legend_x -= 7.0 * double(s->name.size()) + 12.0;
   }
   for (const Series& s : series) {
@@ -203,13 +212,13 @@ const char* kStyle = R"(
 body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;margin:0 auto;max-width:1120px;padding:16px 24px 40px;color:#222;background:#fafafa}
 h1{font-size:24px;margin:8px 0 2px}h2{font-size:18px;margin:28px 0 8px;border-bottom:1px solid #ddd;padding-bottom:4px}
 .sub{color:#666;margin:0 0 12px}
-#stage{display:flex;gap:24px;flex-wrap:wrap;align-items:flex-start}
+#stage{display:flex;gap:24px;flex-wrap:wrap;align-items:flex-start}#summary{flex:1 1 420px;min-width:320px}
 #animation{background:#fff;border:1px solid #ddd;padding:6px;flex:0 1 520px}
 #animation svg{display:block;width:100%;height:auto;max-height:70vh}
 .controls{display:flex;gap:10px;align-items:center;margin-top:6px}.controls input{flex:1}
 #readout{font-variant-numeric:tabular-nums;color:#444;min-height:1.4em;margin-top:4px}
 table{border-collapse:collapse}th,td{text-align:left;padding:3px 12px 3px 0;vertical-align:middle}
-th{font-weight:600;color:#333}td{font-variant-numeric:tabular-nums}.note{color:#777;font-size:13px}
+th{font-weight:600;color:#333}td{font-variant-numeric:tabular-nums;white-space:nowrap}td.note{color:#777;font-size:13px;white-space:normal}
 #plots{display:flex;flex-wrap:wrap;gap:12px}
 svg.plot{background:#fff;border:1px solid #ddd}
 svg.plot .title{font-size:13px;font-weight:600;fill:#333}svg.plot .tick,svg.plot .label{font-size:11px;fill:#555}
@@ -309,7 +318,8 @@ std::string report_page(const ReportInput& input) {
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-       << "<title>animpak report: " << escaped(input.title) << "</title><style>" << kStyle << "</style></head>\n<body>\n";
+       << "<title>animpak report: " << escaped(input.title) << "</title><style>" << kStyle
+       << "</style></head>\n<body>\n";
   page << "<h1>" << escaped(input.title) << "</h1>\n<p class=\"sub\">" << text_of(stats, "elements") << " elements, "
        << stat(stats, "vertices", 0) << " vertices, packed in " << stat(stats, "iterations", 0)
        << " iterations by animpak " << text_of(stats, "animpak") << " on " << text_of(stats, "device") << "</p>\n";
@@ -323,21 +333,21 @@ std::string report_page(const ReportInput& input) {
   // The summary: docs/quality.md says what each figure means.
   const std::string fq = "quality.frames.", bq = "quality.between_slices.";
   page << "<div id=\"summary\"><h2 style=\"margin-top:0\">Quality</h2><table>\n"
-       << row("coverage", stat(stats, fq + "coverage.mean", 1, 100, " %") + " (" +
-                              stat(stats, fq + "coverage.min", 1, 100, " %") + " – " +
-                              stat(stats, fq + "coverage.max", 1, 100, " %") + ")",
+       << row("coverage",
+              stat(stats, fq + "coverage.mean", 1, 100, " %") + " (" + stat(stats, fq + "coverage.min", 1, 100, " %") +
+                  " – " + stat(stats, fq + "coverage.max", 1, 100, " %") + ")",
               "mean over the frames (lowest – highest)");
   if (at_path(stats, "still_reference.mean_over_still").is_number())
     page << row("against standing still", stat(stats, "still_reference.mean_over_still", 2),
                 "mean coverage over the still packing's " + stat(stats, "still_reference.coverage", 1, 100, " %"));
-  page << row("art outside", stat(stats, fq + "element_frames_outside", 0) + " of " + stat(stats, fq + "element_frames", 0),
+  page << row("art outside",
+              stat(stats, fq + "element_frames_outside", 0) + " of " + stat(stats, fq + "element_frames", 0),
               "element-frames; between slices " + stat(stats, bq + "element_frames_outside", 0) + " of " +
                   stat(stats, bq + "element_frames", 0))
        << row("overlapping", stat(stats, fq + "overlapping_pair_frames", 0),
               "pair-frames; between slices " + stat(stats, bq + "overlapping_pair_frames", 0))
        << row("channel CV", stat(stats, fq + "channel_cv.mean", 2), "mean over the frames; 0 is a channel of one width")
-       << row("wall ratio", stat(stats, fq + "wall_ratio.median", 2),
-              "median frame; an even packing has about 0.5")
+       << row("wall ratio", stat(stats, fq + "wall_ratio.median", 2), "median frame; an even packing has about 0.5")
        << row("largest empty disc", stat(stats, fq + "empty_disc.median", 2, 1.0, " ρ"),
               "median frame, in element radii; worst " + stat(stats, fq + "empty_disc.worst", 2, 1.0, " ρ"))
        << row("kink", stat(stats, "motion.kink", 1), "acceleration's 99th percentile over its median")
@@ -348,7 +358,8 @@ std::string report_page(const ReportInput& input) {
   for (std::size_t e = 0; sizes.is_array() && e < sizes.size(); ++e)
     if (number_at(sizes[e], "ratio").value_or(0.0) > number_at(sizes[worst], "ratio").value_or(0.0)) worst = e;
   if (sizes.is_array() && !sizes.empty())
-    page << row("size against the script", stat(stats, "motion.size_over_script." + std::to_string(worst) + ".ratio", 2, 1.0, "×"),
+    page << row("size against the script",
+                stat(stats, "motion.size_over_script." + std::to_string(worst) + ".ratio", 2, 1.0, "×"),
                 "the least steady element's largest over smallest area over its script");
   page << "</table></div></div>\n";
 
@@ -376,7 +387,8 @@ std::string report_page(const ReportInput& input) {
   page << plot({"plot-wall", "Wall ratio", "frame time t", "wall gap / art gap", 0.0, t_max, true, 0.0},
                {{"frames", t, wall, "#a0522d"}, level("even: 0.5", 0.5, "#777")});
   std::vector<Series> kink_series{{"frames", t, kink, "#7b3fa0"}};
-  if (const auto overall = number_at(at_path(stats, "motion"), "kink")) kink_series.push_back(level("kink", *overall, "#777"));
+  if (const auto overall = number_at(at_path(stats, "motion"), "kink"))
+    kink_series.push_back(level("kink", *overall, "#777"));
   page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0},
                kink_series);
   const json& contact = at_path(stats, "quality.frames.contact.mean");
@@ -395,7 +407,8 @@ std::string report_page(const ReportInput& input) {
       Series one{"", {}, {}, "#e6a29a", "extra"};
       for (std::size_t k = 0; k < f["contact"].size(); ++k) {
         one.x.push_back(double(k) * contact_step);
-        one.y.push_back(f["contact"][k].is_number() ? std::optional<double>(f["contact"][k].get<double>()) : std::nullopt);
+        one.y.push_back(f["contact"][k].is_number() ? std::optional<double>(f["contact"][k].get<double>())
+                                                    : std::nullopt);
       }
       contact_series.push_back(one);
     }
@@ -422,11 +435,15 @@ std::string report_page(const ReportInput& input) {
   // Provenance.
   page << "<h2>Provenance</h2>\n<table id=\"provenance\">\n"
        << row("scene", "<code>" + text_of(stats, "scene") + "</code>")
-       << row("animpak", text_of(stats, "animpak") + ", commit <code>" + text_of(stats, "commit") + "</code>" +
-                             (stats.contains("rendered_by") ? ", rendered by <code>" + text_of(stats, "rendered_by") + "</code>" : ""))
+       << row("animpak",
+              text_of(stats, "animpak") + ", commit <code>" + text_of(stats, "commit") + "</code>" +
+                  (stats.contains("rendered_by") ? ", rendered by <code>" + text_of(stats, "rendered_by") + "</code>"
+                                                 : ""))
        << row("device", text_of(stats, "device")) << row("driver", text_of(stats, "driver"))
-       << row("seed", stat(stats, "seed", 0)) << row("iterations", stat(stats, "iterations", 0), text_of(stats, "stop_reason"))
-       << row("time", stat(stats, "seconds.simulation", 1, 1.0, " s"), "simulation; set-up " + stat(stats, "seconds.setup", 1, 1.0, " s"))
+       << row("seed", stat(stats, "seed", 0))
+       << row("iterations", stat(stats, "iterations", 0), text_of(stats, "stop_reason"))
+       << row("time", stat(stats, "seconds.simulation", 1, 1.0, " s"),
+              "simulation; set-up " + stat(stats, "seconds.setup", 1, 1.0, " s"))
        << row("size", stat(stats, "vertices", 0) + " vertices, " + stat(stats, "springs", 0) + " springs")
        << "</table>\n";
 
@@ -439,8 +456,12 @@ std::string report_page(const ReportInput& input) {
     for (const auto& x : v) a.push_back(x ? json(*x) : json(nullptr));
     return a;
   };
-  const json data = {{"t", t},           {"coverage", list(coverage)}, {"channel", list(channel)},
-                     {"wall", list(wall)}, {"kink", list(kink)},         {"frame_seconds", frame_seconds}};
+  const json data = {{"t", t},
+                     {"coverage", list(coverage)},
+                     {"channel", list(channel)},
+                     {"wall", list(wall)},
+                     {"kink", list(kink)},
+                     {"frame_seconds", frame_seconds}};
   page << "<script id=\"frame-data\" type=\"application/json\">" << script_json(data) << "</script>\n<script>"
        << kScript << "</script>\n</body></html>\n";
   return page.str();

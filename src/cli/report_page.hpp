@@ -1,4 +1,4 @@
-// The page `animpak report DIR` writes (docs/cli.md, "report"): one self-contained HTML file with the
+// The page `animpak report DIR` writes (docs/cli.md, "`report`"): one self-contained HTML file with the
 // packing's animation, its quality and motion per frame as plots, its elements and its provenance. Built
 // from stats.json's figures as they are (docs/quality.md, "stats.json"), so every number the page shows is
 // one of that file's, named by its path in a data-stat attribute.
@@ -21,9 +21,9 @@ struct ReportElement {
 };
 
 struct ReportInput {
-  std::string title;           ///< the packed folder's name
-  nlohmann::json stats;        ///< DIR/stats.json
-  std::string animation_svg;   ///< DIR/animation.svg (animpak's own svg-anim output), inline
+  std::string title;                    ///< the packed folder's name
+  nlohmann::json stats;                 ///< DIR/stats.json
+  std::string animation_svg;            ///< DIR/animation.svg (animpak's own svg-anim output), inline
   std::vector<ReportElement> elements;  ///< in stats.json's element order
 };
 

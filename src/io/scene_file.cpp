@@ -235,6 +235,26 @@ std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<Li
   return guided;
 }
 
+MirrorSpec read_mirror(const JsonField& field) {
+  const io_detail::ObjectSpec& format = io_detail::kMirrorObject;
+  field.check_keys(format.keys());
+  const std::optional<JsonField> x = field.optional("x"), y = field.optional("y");
+  if (x && y) y->fail("a mirror line is vertical (x) or horizontal (y), not both; keep one");
+  if (!x && !y)
+    field.fail("needs the line: {\"x\": X} (vertical) or {\"y\": Y} (horizontal), in container art coordinates");
+  MirrorSpec spec;
+  spec.vertical = x.has_value();
+  spec.at = read_number(x ? *x : *y, format.at(x ? "x" : "y"));
+  if (auto f = field.optional("keep")) {
+    const std::size_t side = io_detail::read_choice(*f, format.at("keep"));
+    if (spec.vertical != (side < 2))
+      f->fail(std::string("a ") + (spec.vertical ? "vertical line keeps \"left\" or \"right\""
+                                                 : "horizontal line keeps \"top\" or \"bottom\""));
+    spec.keep_low = side % 2 == 0;
+  }
+  return spec;
+}
+
 OrientationSpec read_orientation(const JsonField& field) {
   const io_detail::ObjectSpec& format = io_detail::kOrientationObject;
   const io_detail::ObjectSpec& field_format = io_detail::kVectorFieldObject;
@@ -439,6 +459,7 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
               "meets t = 0; remove the phase or let the scene loop");
   if (auto f = root.optional("guided")) scene.guided = read_guided(*f, scene.elements, scene.loop);
   if (auto f = root.optional("orientation")) scene.orientation = read_orientation(*f);
+  if (auto f = root.optional("mirror")) scene.mirror = read_mirror(*f);
   if (auto f = root.optional("count")) read_count(*f, scene);
   if (auto f = root.optional("seed")) scene.seed = f->unsigned_integer();
   if (auto f = root.optional("params")) read_params(*f, scene.params);

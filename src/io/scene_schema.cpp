@@ -30,6 +30,7 @@ constexpr std::array<std::string_view, 1> kRandom{"random"};
 constexpr std::array<std::string_view, 4> kPresets{"none", "rotate", "pulse", "swim"};
 constexpr std::array<std::string_view, 3> kModes{"random", "fixed", "field"};
 constexpr std::array<std::string_view, 3> kKinds{"constant", "radial", "tangential"};
+constexpr std::array<std::string_view, 4> kKeepSides{"left", "right", "top", "bottom"};
 
 const FieldSpec kPathIndex{.key = "", .type = Type::integer, .meaning = "", .range = kCount};
 const FieldSpec kFillWord{.key = "", .type = Type::word, .meaning = "as many as fit", .words = kFill};
@@ -179,6 +180,18 @@ const std::array kOrientationFields{
               .object = &kVectorFieldObject},
 };
 
+const std::array kMirrorFields{
+    FieldSpec{
+        .key = "x", .type = Type::number, .meaning = "a vertical mirror line at this x (container art coordinates)"},
+    FieldSpec{
+        .key = "y", .type = Type::number, .meaning = "a horizontal mirror line at this y (container art coordinates)"},
+    FieldSpec{.key = "keep",
+              .type = Type::choice,
+              .meaning = "the side simulated: left or right of a vertical line (default left), top or bottom of a "
+                         "horizontal one (default top)",
+              .words = kKeepSides},
+};
+
 const FieldSpec kContainerArt{.key = "", .type = Type::art, .meaning = "the container's art file"};
 const std::array kSceneFields{
     FieldSpec{.key = "container",
@@ -201,6 +214,10 @@ const std::array kSceneFields{
               .type = Type::object,
               .meaning = "initial orientation of unguided elements",
               .object = &kOrientationObject},
+    FieldSpec{.key = "mirror",
+              .type = Type::object,
+              .meaning = "mirror symmetry: simulate one side of the line, draw its reflection on the other",
+              .object = &kMirrorObject},
     FieldSpec{.key = "count",
               .type = Type::integer,
               .meaning = "unguided elements to seed; default \"fill\"",
@@ -372,6 +389,8 @@ const ObjectSpec kGuidedObject{"guided", "an element that passes through target 
 const ObjectSpec kTargetObject{"target", "a spacetime point of a guided element", kTargetFields};
 const ObjectSpec kOrientationObject{"orientation", "how unguided elements are turned at the start", kOrientationFields};
 const ObjectSpec kVectorFieldObject{"vector_field", "a direction field the elements align with", kVectorFieldFields};
+const ObjectSpec kMirrorObject{"mirror", "a vertical (x) or horizontal (y) line the packing is mirrored across",
+                               kMirrorFields};
 
 std::vector<std::string_view> ObjectSpec::keys() const {
   std::vector<std::string_view> out;

@@ -75,6 +75,7 @@ extern const ObjectSpec kGuidedObject;
 extern const ObjectSpec kTargetObject;
 extern const ObjectSpec kOrientationObject;
 extern const ObjectSpec kVectorFieldObject;
+extern const ObjectSpec kMirrorObject;
 
 /// `field` as a number or integer within `spec`'s range.
 double read_number(const JsonField& field, const FieldSpec& spec);

@@ -14,7 +14,7 @@ namespace {
 // Half the last decimal kept (--precision) of the element's widest stroke, in stroke-scale units: 0 when it
 // strokes nothing.
 double stroke_tolerance(const World& world, int element, const FrameOutput& out) {
-  const Box box = world.container.bounds();
+  const Box box = world.container.shown_bounds();
   const int height = out.style.size;
   const double pixels = fit_to_picture(raster_width(box, height), height, box, 0.02 * height).scale;
   double widest = 0.0;
@@ -207,7 +207,7 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   const int P = lib.vertices_per_slice();
   const double frames_per_unit = world.loop ? frames : frames - 1, steps = std::pow(10.0, key_decimals);
   const auto frame_of = [&](double t) { return std::round(t * frames_per_unit * steps) / steps; };
-  const Box box = world.container.bounds();
+  const Box box = world.container.shown_bounds();
   const double pixels =
       fit_to_picture(raster_width(box, out.style.size), out.style.size, box, 0.02 * out.style.size).scale;
   const bool cubic = world.params.forces.motion_curve != curve_linear;
@@ -266,6 +266,16 @@ ElementKeys element_keys(const World& world, const SimState& state, int element,
   // A document that does not loop shows its last slice through its last frame, up to op = N.
   if (keys.stroke_frames.back() < frames) add(frames, art.back());
   add_stroke_keys(world, state, element, tangents, out, frames_per_unit, keys);
+  return keys;
+}
+
+ElementKeys drawn_keys(const World& world, const SimState& state, int drawn, const FrameOutput& out) {
+  ElementKeys keys = element_keys(world, state, drawn_source(world, drawn), out);
+  if (drawn >= int(world.elements.size()))
+    for (PathKeys& path : keys.paths)
+      for (auto& key : path.lines)
+        for (auto& line : key)
+          for (Vec2& p : line) p = world.container.mirror->reflect(p);
   return keys;
 }
 

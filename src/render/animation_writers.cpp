@@ -144,10 +144,10 @@ class LottieLayers {
       : json_(json),
         interpolation_(out.interpolation),
         decimals_(std::clamp(out.precision, 0, 12)),
-        width_(raster_width(world.container.bounds(), out.style.size)),
+        width_(raster_width(world.container.shown_bounds(), out.style.size)),
         height_(out.style.size),
         frames_(out.count),
-        fit_(fit_to_picture(width_, height_, world.container.bounds(), 0.02 * height_)) {}
+        fit_(fit_to_picture(width_, height_, world.container.shown_bounds(), 0.02 * height_)) {}
   void document_head(double fps) {
     json_ << "{\"v\":\"5.7.4\",\"fr\":" << number(fps, 6) << ",\"ip\":0,\"op\":" << frames_ << ",\"w\":" << width_
           << ",\"h\":" << height_ << ",\"nm\":\"animpak\",\"ddd\":0,\"meta\":{\"g\":\"animpak " << animpak_version
@@ -159,8 +159,8 @@ class LottieLayers {
   void container_outline(const Container& container) {
     head(4, "container");
     json_ << ",\"shapes\":[{\"ty\":\"gr\",\"nm\":\"outline\",\"it\":[";
-    std::vector<std::vector<Vec2>> rings{container.outline};
-    rings.insert(rings.end(), container.holes.begin(), container.holes.end());
+    std::vector<std::vector<Vec2>> rings{container.shown_outline()};
+    rings.insert(rings.end(), container.shown_holes().begin(), container.shown_holes().end());
     for (const auto& ring : rings) {
       std::vector<Vec2> pixels;
       for (Vec2 p : ring) pixels.push_back(fit_.to_pixel(p));
@@ -269,9 +269,9 @@ void write_lottie(const World& world, const SimState& state, const FrameOutput& 
   LottieLayers layers(json, world, out);
   layers.document_head(out.fps);
   if (out.style.container == ContainerDrawing::outline) layers.container_outline(world.container);
-  for (int e = int(world.elements.size()) - 1; e >= 0; --e) {
-    const ArtShape& art = world.library[world.elements[e].library].art.art;
-    layers.art_layer(ids[e], art, element_keys(world, state, e, out));
+  for (int e = drawn_count(world) - 1; e >= 0; --e) {
+    const ArtShape& art = world.library[world.elements[drawn_source(world, e)].library].art.art;
+    layers.art_layer(ids[e], art, drawn_keys(world, state, e, out));
     check_written(json, file);
   }
   if (out.style.container == ContainerDrawing::fill)
@@ -299,7 +299,7 @@ struct SvgView {
 
 SvgView svg_view(const World& world, const FrameOutput& out) {
   SvgView view(world.container.frame);
-  const Box box = world.container.bounds();
+  const Box box = world.container.shown_bounds();
   view.height = out.style.size, view.width = raster_width(box, view.height);
   const PixelFit fit = fit_to_picture(view.width, view.height, box, 0.02 * view.height);
   view.pixels_per_art_unit = fit.scale * view.frame.scale;
@@ -348,8 +348,8 @@ void write_svg_head(std::ostream& svg, const SvgView& view, const World& world, 
     }
     svg << "</g>\n";
   }
-  std::vector<std::vector<Vec2>> rings{world.container.outline};
-  rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
+  std::vector<std::vector<Vec2>> rings{world.container.shown_outline()};
+  rings.insert(rings.end(), world.container.shown_holes().begin(), world.container.shown_holes().end());
   svg << "<path id=\"container\" d=\"";
   for (std::size_t r = 0; r < rings.size(); ++r) {
     for (std::size_t k = 0; k < rings[r].size(); ++k) {
@@ -434,9 +434,9 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
   if (!svg) throw InputError(file.string() + ": cannot write; check that the folder is writable");
   const SvgView view = svg_view(world, out);
   write_svg_head(svg, view, world, out.style);
-  for (int e = 0; e < int(world.elements.size()); ++e) {
-    const ArtShape& art = world.library[world.elements[e].library].art.art;
-    const ElementKeys keys = element_keys(world, state, e, out);
+  for (int e = 0; e < drawn_count(world); ++e) {
+    const ArtShape& art = world.library[world.elements[drawn_source(world, e)].library].art.art;
+    const ElementKeys keys = drawn_keys(world, state, e, out);
     const std::string stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
     const Vec2 origin = least_corner(
         keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);

@@ -61,6 +61,8 @@ ElementKeys still_keys(const ArtPoints& points);
 /// (motion_curve 0), its own slices; on the curve, each path where its motion needs it (within the
 /// tolerance of key_tolerance); held, the N frames. One frame: one key.
 ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out);
+/// The keys of drawn element `drawn` (drawn_count): element_keys of its element, reflected for a mirror image.
+ElementKeys drawn_keys(const World& world, const SimState& state, int drawn, const FrameOutput& out);
 
 /// animation.json: one Lottie shape layer per element (docs/animation-formats.md).
 /// `file` is named in its errors.

@@ -113,9 +113,18 @@ std::vector<std::vector<Vec2>> frame_tangents(const World& world, const SimState
 
 std::vector<ElementArt> frame_art(const World& world, const SimState& state, double tf,
                                   const std::vector<std::vector<Vec2>>& tangents) {
-  std::vector<ElementArt> art(world.elements.size());
-  for (std::size_t i = 0; i < world.elements.size(); ++i)
+  const std::size_t n = world.elements.size();
+  std::vector<ElementArt> art(drawn_count(world));
+  for (std::size_t i = 0; i < n; ++i)
     art[i] = element_art(world, int(i), element_at(world, state, int(i), tf, tangents[i]));
+  // Mirror symmetry: each element's art reflected across the line (docs/scene-format.md, "Mirror").
+  if (const std::optional<MirrorLine>& line = world.container.mirror)
+    for (std::size_t i = 0; i < n; ++i) {
+      art[n + i] = art[i];
+      for (auto& path : art[n + i].points)
+        for (auto& polyline : path)
+          for (Vec2& p : polyline) p = line->reflect(p);
+    }
   return art;
 }
 
@@ -131,17 +140,18 @@ ArtPoints own_points(const ArtShape& art) {
 }
 
 Picture draw_frame(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style) {
-  const Box box = world.container.bounds();
+  const Box box = world.container.shown_bounds();
   const int height = style.size;
   const int width = raster_width(box, height);
   Picture pic(width, height, box, style.background, 0.02 * style.size);
   if (style.container == ContainerDrawing::fill) pic.draw_art(world.container.art, own_points(world.container.art));
-  for (std::size_t i = 0; i < world.elements.size(); ++i)
-    pic.draw_art(world.library[world.elements[i].library].art.art, art[i].points, 1.0, art[i].stroke_scale);
+  for (std::size_t i = 0; i < art.size(); ++i)
+    pic.draw_art(world.library[world.elements[drawn_source(world, int(i))].library].art.art, art[i].points, 1.0,
+                 art[i].stroke_scale);
   if (style.container == ContainerDrawing::outline) {
     const double w = std::max(1.0, style.size / 400.0);
-    pic.draw_ring(world.container.outline, {0.55, 0.55, 0.55, 1}, w);
-    for (const auto& hole : world.container.holes) pic.draw_ring(hole, {0.55, 0.55, 0.55, 1}, w);
+    pic.draw_ring(world.container.shown_outline(), {0.55, 0.55, 0.55, 1}, w);
+    for (const auto& hole : world.container.shown_holes()) pic.draw_ring(hole, {0.55, 0.55, 0.55, 1}, w);
   }
   return pic;
 }

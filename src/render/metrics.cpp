@@ -26,17 +26,17 @@ Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_sc
 Region container_region(const Container& container) {
   Region region;
   region.rule = FillRule::evenodd;
-  region.rings.push_back(container.outline);
-  region.rings.insert(region.rings.end(), container.holes.begin(), container.holes.end());
+  region.rings.push_back(container.shown_outline());
+  region.rings.insert(region.rings.end(), container.shown_holes().begin(), container.shown_holes().end());
   return region;
 }
 
 FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf, Measures what) {
   std::vector<Region> elements;
-  elements.reserve(world.elements.size());
-  for (std::size_t i = 0; i < world.elements.size(); ++i)
-    elements.push_back(
-        art_region(world.library[world.elements[i].library].art.art, art[i].points, art[i].stroke_scale));
+  elements.reserve(art.size());
+  for (std::size_t i = 0; i < art.size(); ++i)
+    elements.push_back(art_region(world.library[world.elements[drawn_source(world, int(i))].library].art.art,
+                                  art[i].points, art[i].stroke_scale));
   FrameMetrics m = measure_regions(elements, container_region(world.container), what);
   m.t = tf;
   return m;

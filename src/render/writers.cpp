@@ -53,9 +53,10 @@ std::string xml_escaped(const std::string& text) {
 std::vector<std::string> element_ids(const World& world) {
   std::set<std::string> taken{"container", "container-art", "background"};
   std::vector<std::string> ids;
-  for (const ElementInstance& e : world.elements) {
-    std::string id = e.name;
-    for (int k = 2; taken.count(id); ++k) id = e.name + "-" + std::to_string(k);
+  for (int i = 0; i < drawn_count(world); ++i) {
+    const std::string name = drawn_name(world, i);
+    std::string id = name;
+    for (int k = 2; taken.count(id); ++k) id = name + "-" + std::to_string(k);
     taken.insert(id);
     ids.push_back(id);
   }
@@ -134,8 +135,8 @@ void write_svg_container(std::ostream& out, const World& world, const FrameStyle
       write_svg_path(out, art.paths[p], points[p], to_art, art.paths[p].stroke_width / world.container.frame.scale);
     out << "</g>\n";
   }
-  std::vector<std::vector<Vec2>> rings{world.container.outline};
-  rings.insert(rings.end(), world.container.holes.begin(), world.container.holes.end());
+  std::vector<std::vector<Vec2>> rings{world.container.shown_outline()};
+  rings.insert(rings.end(), world.container.shown_holes().begin(), world.container.shown_holes().end());
   out << "<path id=\"container\" d=\"";
   write_path_data(out, rings, std::vector<bool>(rings.size(), true), to_art);
   out << "\" fill-rule=\"evenodd\" fill=\"none\"";
@@ -157,7 +158,7 @@ void write_svg(const World& world, const std::vector<ElementArt>& art, const Fra
   const ArtFrame& frame = world.container.frame;
   auto to_art = [&](Vec2 p) { return frame.to_art(p); };
   Box box;
-  for (Vec2 p : world.container.outline) box.add(to_art(p));
+  for (Vec2 p : world.container.shown_outline()) box.add(to_art(p));
   // The margin of draw_frame's pictures: 2 % of the height on every side.
   const double margin = 0.02 * box.height();
   const double x = box.min.x - margin, y = box.min.y - margin, w = box.width() + 2 * margin,
@@ -166,8 +167,8 @@ void write_svg(const World& world, const std::vector<ElementArt>& art, const Fra
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x << ' ' << y << ' ' << w << ' ' << h
       << "\" width=\"" << raster_width({{x, y}, {x + w, y + h}}, style.size) << "\" height=\"" << style.size << "\">\n";
   write_svg_container(out, world, style, x, y, w, h);
-  for (std::size_t i = 0; i < world.elements.size(); ++i) {
-    const ArtShape& shape = world.library[world.elements[i].library].art.art;
+  for (std::size_t i = 0; i < art.size(); ++i) {
+    const ArtShape& shape = world.library[world.elements[drawn_source(world, int(i))].library].art.art;
     out << "<g id=\"" << xml_escaped(ids[i]) << "\">\n";
     for (std::size_t p = 0; p < shape.paths.size(); ++p)
       write_svg_path(out, shape.paths[p], art[i].points[p], to_art,
@@ -285,7 +286,7 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   for (int i = 0; i < out.count; ++i) {
     // One replay per frame, drawn, written and measured by every format alike.
     const std::vector<ElementArt> art = frame_art(world, state, times[i], tangents);
-    for (std::size_t e = 0; e < art.size(); ++e) {
+    for (std::size_t e = 0; e < centroids.size(); ++e) {
       Vec2 sum;
       std::size_t n = 0;
       for (const auto& path : art[e].points)

@@ -47,6 +47,12 @@ Box Container::bounds() const {
   return box;
 }
 
+Box Container::shown_bounds() const {
+  Box box;
+  for (Vec2 p : shown_outline()) box.add(p);
+  return box;
+}
+
 double Container::area() const {
   double a = std::abs(signed_area(outline));
   for (const auto& h : holes) a -= std::abs(signed_area(h));

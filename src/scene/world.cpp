@@ -219,6 +219,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 World make_world(const SceneSpec& scene) {
   Container container =
       make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
+  if (scene.mirror) container = mirror_container(container, *scene.mirror, scene.file.string());
   std::vector<SpacetimeElement> library;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const LibraryElementSpec& spec = scene.elements[i];

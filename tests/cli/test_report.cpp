@@ -107,8 +107,10 @@ std::vector<std::string> page_problems(const std::string& dom, const json& stats
     const double scale = (*it)[2].matched ? std::stod((*it)[2]) : 1.0;
     std::string digits;
     for (const char c : text)
-      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-') digits += c;
-      else if (c != ',' && !digits.empty()) break;
+      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-')
+        digits += c;
+      else if (c != ',' && !digits.empty())
+        break;
     const json& value = at_path(stats, path);
     if (!value.is_number() || digits.empty()) {
       problems.push_back(path + ": shows \"" + text + "\", stats.json has " + value.dump());
@@ -206,6 +208,10 @@ TEST_CASE("report: stats.json's numbers, five plots and the animation, loaded by
   }
   CHECK(colours.size() > 200);
   CHECK(off_background > pixels.size() / spec.nchannels / 4);
+
+  // The page describes one render: the next render removes it.
+  REQUIRE(run_animpak("render " + packed + " --frames 2 --size 32 --format png").code == 0);
+  CHECK_FALSE(fs::exists(page));
 }
 
 TEST_CASE("report: a packing rendered without animation.svg gets one drawn, and one never rendered is refused") {

@@ -107,3 +107,43 @@ TEST_CASE("Rng: same seed, same numbers, uniform stays in range, below has no bi
   }
   CHECK(std::abs(low - high) < 600);
 }
+
+TEST_CASE("mirror_container: the kept side with the line as its wall, the whole as it and its image, and its errors") {
+  const Container whole = make_container(frame_with_hole(), {});
+  // The 200 × 100 frame's hole spans x 60–100: a line at x = 80 cuts it, so the kept side has a notch
+  // instead of a hole, and its image on the right has one too.
+  const Container left = mirror_container(whole, {true, 80.0, true}, "scene.json");
+  REQUIRE(left.mirror);
+  CHECK(left.mirror->vertical);
+  CHECK(left.mirror->at == Approx(whole.frame.to_unit({80, 0}).x));
+  CHECK(left.holes.empty());
+  const double unit = whole.frame.scale * whole.frame.scale;  // art units² → unit²
+  CHECK(left.area() == Approx((80.0 * 100 - 20 * 40) * unit));
+  const Box kept = left.bounds();
+  CHECK(kept.max.x == Approx(left.mirror->at).margin(1e-8));
+  // The shown container: the kept side and its image, 160 wide with the hole's two halves as one hole.
+  CHECK(left.shown_holes().size() == 1);
+  CHECK(std::abs(signed_area(left.shown_outline())) == Approx(160.0 * 100 * unit));
+  CHECK(left.shown_bounds().width() == Approx(160 * whole.frame.scale));
+  // Every vertex of the kept side reflects onto the shown outline's side of the line.
+  for (Vec2 p : left.outline) CHECK(left.mirror->reflect(p).x >= left.mirror->at - 1e-8);
+
+  // The other side, and a horizontal line.
+  const Container right = mirror_container(whole, {true, 150.0, false}, "scene.json");
+  CHECK(right.area() == Approx(50.0 * 100 * unit));
+  CHECK(right.bounds().min.x == Approx(right.mirror->at).margin(1e-8));
+  const Container top = mirror_container(whole, {false, 50.0, true}, "scene.json");
+  CHECK_FALSE(top.mirror->vertical);
+  CHECK(top.area() == Approx((200.0 * 50 - 40 * 20) * unit));
+  CHECK(std::abs(signed_area(top.shown_outline())) == Approx(200.0 * 100 * unit));
+
+  // A line outside the container, and a cut that leaves two pieces.
+  CHECK_THROWS_WITH(mirror_container(whole, {true, 250.0, true}, "scene.json"),
+                    Catch::Contains("scene.json: mirror: the line x = 250 misses the container") &&
+                        Catch::Contains("spans x 0 to 200"));
+  ArtShape u;
+  u.source = "u.path";
+  u.paths.push_back(ring_path(0, {{0, 0}, {100, 0}, {100, 100}, {70, 100}, {70, 20}, {30, 20}, {30, 100}, {0, 100}}));
+  CHECK_THROWS_WITH(mirror_container(make_container(u, {}), {false, 60.0, false}, "u.json"),
+                    Catch::Contains("2 separate pieces") && Catch::Contains("move the mirror line"));
+}
