@@ -536,3 +536,30 @@ TEST_CASE("scene_json_schema: is docs/scene.schema.json, strict where the parser
                                    "minimum": 2, "maximum": 1000, "default": 100})j"));
   CHECK(schema["properties"]["version"]["maximum"] == kSceneFormatVersion);
 }
+
+TEST_CASE("parse_scene: mirror takes one line, x or y, and a side that matches it") {
+  const SceneSpec none = parse_scene_text(scene(kBird));
+  CHECK_FALSE(none.mirror);
+  const SceneSpec vertical = parse_scene_text(scene(kBird, R"(, "mirror": {"x": 250.5})"));
+  REQUIRE(vertical.mirror);
+  CHECK(vertical.mirror->vertical);
+  CHECK(vertical.mirror->at == 250.5);
+  CHECK(vertical.mirror->keep_low);
+  const SceneSpec bottom = parse_scene_text(scene(kBird, R"(, "mirror": {"y": 90, "keep": "bottom"})"));
+  REQUIRE(bottom.mirror);
+  CHECK_FALSE(bottom.mirror->vertical);
+  CHECK(bottom.mirror->at == 90.0);
+  CHECK_FALSE(bottom.mirror->keep_low);
+  CHECK(parse_scene_text(scene(kBird, R"(, "mirror": {"x": 1, "keep": "right"})")).mirror->keep_low == false);
+
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": 250, "y": 250})")),
+             Contains("mirror.y") && Contains("not both"));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"keep": "left"})")),
+             Contains("mirror") && Contains("{\"x\": X} (vertical) or {\"y\": Y} (horizontal)"));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": 250, "keep": "top"})")),
+             Contains("mirror.keep") && Contains("\"left\" or \"right\""));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"y": 250, "keep": "left"})")),
+             Contains("mirror.keep") && Contains("\"top\" or \"bottom\""));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": "middle"})")), Contains("mirror.x"));
+  CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": 250, "at": 3})")), Contains("mirror") && Contains("at"));
+}
