@@ -106,8 +106,9 @@ struct Series {
 struct PlotSpec {
   std::string id, title, x_label, y_label;
   double x_min = 0.0, x_max = 1.0;
-  bool time_axis = true;          ///< x is the frame time: the scrubber's cursor moves over it
-  std::optional<double> y_floor;  ///< the y axis starts here at most (0 for shares)
+  bool time_axis = true;                               ///< x is the frame time: the scrubber's cursor moves over it
+  std::optional<double> y_floor;                       ///< the y axis starts here at most (0 for shares)
+  std::string empty_note = "no values in stats.json";  ///< written across a plot without any value
 };
 
 // An inline SVG line plot: axes with round ticks, one polyline per run of values (a null breaks the line),
@@ -187,6 +188,12 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
               << s.color << "\"/>";
     out << "\n";
   }
+  const bool empty = std::none_of(series.begin(), series.end(), [](const Series& s) {
+    return s.role != "reference" && std::any_of(s.y.begin(), s.y.end(), [](const auto& y) { return y.has_value(); });
+  });
+  if (empty)
+    out << "<text class=\"label empty\" x=\"" << (left + W - right) / 2 << "\" y=\"" << (top + H - bottom) / 2
+        << "\" text-anchor=\"middle\">" << escaped(spec.empty_note) << "</text>\n";
   if (spec.time_axis)
     out << "<line class=\"cursor\" x1=\"0\" x2=\"0\" y1=\"" << top - 4 << "\" y2=\"" << H - bottom
         << "\" visibility=\"hidden\"/>\n";
@@ -389,7 +396,8 @@ std::string report_page(const ReportInput& input) {
   std::vector<Series> kink_series{{"frames", t, kink, "#7b3fa0"}};
   if (const auto overall = number_at(at_path(stats, "motion"), "kink"))
     kink_series.push_back(level("kink", *overall, "#777"));
-  page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0},
+  page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0,
+                "rendered before animpak 0.11.0: run animpak render DIR"},
                kink_series);
   const json& contact = at_path(stats, "quality.frames.contact.mean");
   const double contact_step = number_at(at_path(stats, "quality.frames.contact"), "step").value_or(0.05);

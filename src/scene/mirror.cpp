@@ -41,7 +41,8 @@ void single_region(const cl::PolyTree& tree, const std::string& what, std::vecto
                    std::vector<std::vector<Vec2>>& holes) {
   if (tree.ChildCount() != 1) {
     std::ostringstream message;
-    message << what << " is " << (tree.ChildCount() == 0 ? "empty" : std::to_string(tree.ChildCount()) + " separate pieces")
+    message << what << " is "
+            << (tree.ChildCount() == 0 ? "empty" : std::to_string(tree.ChildCount()) + " separate pieces")
             << "; animpak packs one connected container: move the mirror line so that the kept side is one piece";
     throw InputError(message.str());
   }
@@ -62,12 +63,11 @@ Container mirror_container(const Container& whole, const MirrorSpec& spec, const
   MirrorLine line{spec.vertical, spec.vertical ? on_line.x : on_line.y};
   const Box box = whole.bounds();
   const double lo = spec.vertical ? box.min.x : box.min.y, hi = spec.vertical ? box.max.x : box.max.y;
-  const std::string name = scene_name + ": mirror: the line " + (spec.vertical ? "x = " : "y = ") +
-                           [&] {
-                             std::ostringstream s;
-                             s << spec.at;
-                             return s.str();
-                           }();
+  const std::string name = scene_name + ": mirror: the line " + (spec.vertical ? "x = " : "y = ") + [&] {
+    std::ostringstream s;
+    s << spec.at;
+    return s.str();
+  }();
   if (!(line.at > lo && line.at < hi)) {
     const Vec2 art_lo = whole.frame.to_art(box.min), art_hi = whole.frame.to_art(box.max);
     std::ostringstream message;
@@ -116,10 +116,7 @@ Container mirror_container(const Container& whole, const MirrorSpec& spec, const
   return half;
 }
 
-
-int drawn_count(const World& world) {
-  return int(world.elements.size()) * (world.container.mirror ? 2 : 1);
-}
+int drawn_count(const World& world) { return int(world.elements.size()) * (world.container.mirror ? 2 : 1); }
 
 int drawn_source(const World& world, int drawn) {
   const int n = int(world.elements.size());

@@ -253,4 +253,10 @@ TEST_CASE("report: numbers with thousands separated and no negative zero, and a 
   animpak::cli::ReportInput input;
   input.stats = json::parse(R"({"frames": []})");
   CHECK_THROWS_WITH(animpak::cli::report_page(input), Contains("no frames") && Contains("animpak render"));
+  // A folder rendered before frame_peak existed: the kink plot says how to get it, the others plot.
+  input.stats = json::parse(R"({"frames": [{"t": 0, "coverage": 0.4}, {"t": 0.5, "coverage": 0.5}],
+                                "motion": {"acceleration": {"median": 1e-4}, "kink": 7}})");
+  const std::string page = animpak::cli::report_page(input);
+  CHECK_THAT(page, Contains("rendered before animpak 0.11.0: run animpak render DIR"));
+  CHECK_THAT(page, Contains(R"(<span data-stat="motion.kink">7.0</span>)"));
 }

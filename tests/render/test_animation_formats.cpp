@@ -308,7 +308,8 @@ TEST_CASE(
       for (std::size_t k = 0; k < frames.size(); ++k) html << svg;
       html << "</div><script>const svgs = document.querySelectorAll('body > div > svg'); const times = [";
       for (std::size_t k = 0; k < frames.size(); ++k) html << (k ? "," : "") << frames[k] / out.fps;
-      html << "]; svgs.forEach((s, k) => { s.pauseAnimations(); s.setCurrentTime(times[k]); });</script></body></html>\n";
+      html << "]; svgs.forEach((s, k) => { s.pauseAnimations(); s.setCurrentTime(times[k]); "
+              "});</script></body></html>\n";
     }
     // Root (CI) needs --no-sandbox; a transparent default background keeps the alpha mask the art's; a
     // profile of its own keeps a Chromium already running (another test run) from taking the page over.
