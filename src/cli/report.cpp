@@ -74,8 +74,18 @@ int report(const ReportOptions& options) {
                               thumbnails[e.library]});
   }
 
-  const std::filesystem::path animation = options.dir / "animation.svg";
-  if (std::filesystem::exists(animation)) {
+  const std::filesystem::path animation = options.dir / "animation.svg", gif = options.dir / "animation.gif";
+  if (std::filesystem::exists(animation) && std::filesystem::file_size(animation) > kInlineSvgLimit &&
+      std::filesystem::exists(gif)) {
+    // Too large to open quickly inline: the GIF stands in, and the page says so.
+    const std::uintmax_t megabytes = (std::filesystem::file_size(animation) + (1u << 19)) >> 20;
+    input.animation_gif = read_file(gif);
+    input.animation_note = "animation.svg (" + std::to_string(megabytes) +
+                           " MB) is too large to open quickly inside a page, so this shows animation.gif; the slider "
+                           "moves the plots' cursor. Open animation.svg beside this page for the vector animation.";
+    std::cerr << "animpak: " << animation.string() << " is " << megabytes
+              << " MB; the page shows animation.gif instead (the slider then moves the plots' cursor only)\n";
+  } else if (std::filesystem::exists(animation)) {
     input.animation_svg = svg_element(read_file(animation), animation);
   } else {
     // Drawn as `render --format svg-anim` would, with the frame count the statistics were measured at; the

@@ -221,7 +221,7 @@ h1{font-size:24px;margin:8px 0 2px}h2{font-size:18px;margin:28px 0 8px;border-bo
 .sub{color:#666;margin:0 0 12px}
 #stage{display:flex;gap:24px;flex-wrap:wrap;align-items:flex-start}#summary{flex:1 1 420px;min-width:320px}
 #animation{background:#fff;border:1px solid #ddd;padding:6px;flex:0 1 520px}
-#animation svg{display:block;width:100%;height:auto;max-height:70vh}
+#animation svg,#animation img{display:block;width:100%;height:auto;max-height:70vh}
 .controls{display:flex;gap:10px;align-items:center;margin-top:6px}.controls input{flex:1}
 #readout{font-variant-numeric:tabular-nums;color:#444;min-height:1.4em;margin-top:4px}
 table{border-collapse:collapse}th,td{text-align:left;padding:3px 12px 3px 0;vertical-align:middle}
@@ -244,6 +244,7 @@ const char* kScript = R"(
   var svg = document.querySelector('#animation svg');
   var scrub = document.getElementById('scrub'), play = document.getElementById('play');
   var readout = document.getElementById('readout');
+  if (!svg) play.style.display = 'none';  // a GIF stands in: it cannot be paused
   function fixed(v, d, s) { return v === null || v === undefined ? '–' : (v * (s || 1)).toFixed(d); }
   function show(i) {
     readout.textContent = 'frame ' + i + ', t = ' + data.t[i].toFixed(3) + ': coverage ' +
@@ -281,6 +282,23 @@ const char* kScript = R"(
 )";
 
 }  // namespace
+
+std::string base64(const std::string& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned a = static_cast<unsigned char>(bytes[i]),
+                   b = i + 1 < bytes.size() ? static_cast<unsigned char>(bytes[i + 1]) : 0u,
+                   c = i + 2 < bytes.size() ? static_cast<unsigned char>(bytes[i + 2]) : 0u;
+    const unsigned v = a << 16 | b << 8 | c;
+    out += digits[v >> 18 & 63];
+    out += digits[v >> 12 & 63];
+    out += i + 1 < bytes.size() ? digits[v >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? digits[v & 63] : '=';
+  }
+  return out;
+}
 
 std::string report_number(double value, int decimals) {
   char text[64];
@@ -333,7 +351,15 @@ std::string report_page(const ReportInput& input) {
 
   // The animation and the slider.
   page << "<div id=\"stage\"><div id=\"animation-box\" style=\"flex:0 1 540px\"><div id=\"animation\">\n"
-       << input.animation_svg << "\n</div>\n<div class=\"controls\"><button id=\"play\" type=\"button\">Pause</button>"
+       << (input.animation_gif.empty()
+               ? input.animation_svg
+               : "<img id=\"animation-gif\" alt=\"the animation\" src=\"data:image/gif;base64," +
+                     base64(input.animation_gif) + "\">")
+       << "\n</div>\n"
+       << (input.animation_note.empty()
+               ? ""
+               : "<p class=\"note\" id=\"animation-note\">" + escaped(input.animation_note) + "</p>")
+       << "<div class=\"controls\"><button id=\"play\" type=\"button\">Pause</button>"
        << "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"" << n - 1 << "\" value=\"0\" aria-label=\"frame\">"
        << "</div><div id=\"readout\"></div></div>\n";
 

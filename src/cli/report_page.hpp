@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,13 @@ struct ReportElement {
 };
 
 struct ReportInput {
-  std::string title;                    ///< the packed folder's name
-  nlohmann::json stats;                 ///< DIR/stats.json
-  std::string animation_svg;            ///< DIR/animation.svg (animpak's own svg-anim output), inline
+  std::string title;          ///< the packed folder's name
+  nlohmann::json stats;       ///< DIR/stats.json
+  std::string animation_svg;  ///< DIR/animation.svg (animpak's own svg-anim output), inline
+  /// Instead of the SVG, when it is too large to open quickly: DIR/animation.gif's bytes, embedded as a
+  /// data URI (the slider then moves the plots' cursor and the readout, not the animation).
+  std::string animation_gif;
+  std::string animation_note;           ///< a line under the animation saying which one the page shows, and why
   std::vector<ReportElement> elements;  ///< in stats.json's element order
 };
 
@@ -32,9 +37,16 @@ struct ReportInput {
 inline const std::vector<std::string> kReportPlots = {"plot-coverage", "plot-channel", "plot-wall", "plot-kink",
                                                       "plot-contact"};
 
+/// animation.svg files larger than this are not inlined when animation.gif can stand in (report.cpp): a
+/// 61 MB one (32 elements of detailed clip art over 100 slices) took headless Chromium a minute to open.
+inline constexpr std::uintmax_t kInlineSvgLimit = 16u << 20;
+
 /// The whole page. InputError when stats.json lacks the per-frame figures (a folder packed with
 /// --no-render or by animpak-solve).
 std::string report_page(const ReportInput& input);
+
+/// RFC 4648 base64 of `bytes` (the GIF's data URI).
+std::string base64(const std::string& bytes);
 
 /// `value` with `decimals` decimals, thousands separated by commas ("5,400", "43.5").
 std::string report_number(double value, int decimals);

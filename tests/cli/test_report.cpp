@@ -259,4 +259,16 @@ TEST_CASE("report: numbers with thousands separated and no negative zero, and a 
   const std::string page = animpak::cli::report_page(input);
   CHECK_THAT(page, Contains("rendered before animpak 0.11.0: run animpak render DIR"));
   CHECK_THAT(page, Contains(R"(<span data-stat="motion.kink">7.0</span>)"));
+  // Too large an SVG: the GIF stands in, as a data URI, and the page says so.
+  CHECK(animpak::cli::base64("") == "");
+  CHECK(animpak::cli::base64("f") == "Zg==");
+  CHECK(animpak::cli::base64("fo") == "Zm8=");
+  CHECK(animpak::cli::base64("foo") == "Zm9v");
+  CHECK(animpak::cli::base64(std::string("\xff\xfe\x00", 3)) == "//4A");
+  input.animation_gif = "GIF89a";
+  input.animation_note = "animation.svg (61 MB) is too large";
+  const std::string with_gif = animpak::cli::report_page(input);
+  CHECK_THAT(with_gif,
+             Contains(R"(<img id="animation-gif" alt="the animation" src="data:image/gif;base64,R0lGODlh">)"));
+  CHECK_THAT(with_gif, Contains("animation.svg (61 MB) is too large"));
 }
