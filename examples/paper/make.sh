@@ -37,7 +37,7 @@ frames_of() {
   case "$1" in
     fig12) echo "0 10 20 30 40" ;;  # t = 0, 0.125, 0.25, 0.375, 0.5
     fig13) echo "0 40" ;;           # t = 0 and 0.5
-    fig17) echo "0 10 20 30" ;;     # a quarter turn of the beam apart
+    fig17) echo "0 10 20 30" ;;     # an eighth of the beam's turn apart
     *) echo "0" ;;                  # the first frame
   esac
 }
