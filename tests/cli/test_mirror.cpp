@@ -48,8 +48,9 @@ TEST_CASE("mirror: frames symmetric to a pixel, each element on its side of the 
   const animpak::test::TempDir dir("animpak-mirror-");
   std::ofstream(dir / "scene.json") << mirrored_scene(R"({"x": 250.02})");
   const std::string packed = (dir / "packed").string();
-  const CommandResult pack = run_animpak("pack " + (dir / "scene.json").string() + " --out " + packed +
-                                         " --max-iterations 2000 --frames 6 --size 160 --format png,svg");
+  const CommandResult pack =
+      run_animpak("pack " + (dir / "scene.json").string() + " --out " + packed +
+                  " --max-iterations 2000 --frames 6 --size 160 --format png,svg,svg-anim,lottie");
   INFO(pack.err);
   REQUIRE(pack.code == 0);
   const json stats = json::parse(read_text(fs::path(packed) / "stats.json"));
@@ -62,6 +63,16 @@ TEST_CASE("mirror: frames symmetric to a pixel, each element on its side of the 
   }
   // At the frames no art touches another, its own image included.
   CHECK(stats["quality"]["frames"]["min_gap"].get<double>() > 0.0);
+  // The animated formats draw the reflections too: a group and a layer each.
+  const std::string animated = read_text(fs::path(packed) / "animation.svg"),
+                    lottie = read_text(fs::path(packed) / "animation.json");
+  for (int k = 1; k <= 4; ++k) {
+    const std::string id = "star#" + std::to_string(k);
+    INFO(id);
+    CHECK(animated.find("<g id=\"" + id + "\"") != std::string::npos);
+    CHECK(animated.find("<g id=\"" + id + " mirrored\"") != std::string::npos);
+    CHECK(lottie.find("\"nm\":\"" + id + " mirrored\"") != std::string::npos);
+  }
   for (int i = 0; i < 6; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d", i);
