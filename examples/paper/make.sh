@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 animpak=${ANIMPAK:-build/release/animpak}
 if [ $# -lt 1 ]; then
-  sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
   echo "figures: fig1 fig11 fig12 fig13 fig14 fig16a fig16b fig17, or all" >&2
   exit 1
 fi
