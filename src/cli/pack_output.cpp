@@ -162,21 +162,10 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
       {"size_over_script", sizes}};
 }
 
-// Through a temporary file and a rename, so that a failed write never loses the statistics already there.
+// Through a temporary file and a rename (replace_file), so that a failed write never loses the statistics
+// already there.
 void write_json(const std::filesystem::path& file, const nlohmann::json& value) {
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary);
-    out << value.dump(2) << "\n";
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw InputError(file.string() + ": cannot write the statistics; check the folder");
-    }
-  }
-  std::filesystem::rename(temporary, file);
+  replace_file(file, value.dump(2) + "\n", "cannot write the statistics; check the folder");
 }
 
 }  // namespace

@@ -23,12 +23,6 @@ constexpr int kManifestVersion = 1;
 const char* const kAnimationFiles[] = {"animation.gif", "animation.mp4", "animation.json", "animation.lottie",
                                        "animation.svg", "contact.png",   "report.html"};
 
-std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot read it; " + what_to_do);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 void write_bytes(const fs::path& file, const std::string& bytes) {
   fs::create_directories(file.parent_path());
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
@@ -206,6 +200,28 @@ void install_rendered(const fs::path& scratch, const fs::path& dir) {
       if (is_frame_file(e.path())) fs::rename(e.path(), dir / "frames" / e.path().filename());
   }
   fs::remove_all(scratch);
+}
+
+std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot read it; " + what_to_do);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void replace_file(const fs::path& file, const std::string& bytes, const std::string& failure) {
+  fs::path temporary = file;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw InputError(file.string() + ": " + failure);
+    }
+  }
+  fs::rename(temporary, file);
 }
 
 }  // namespace animpak::cli

@@ -60,4 +60,11 @@ std::filesystem::path render_scratch(const std::filesystem::path& dir);
 /// Replaces the rendered files in `dir` with those in `scratch`, then removes `scratch`.
 void install_rendered(const std::filesystem::path& scratch, const std::filesystem::path& dir);
 
+/// The file's bytes; InputError `<file>: cannot read it; <what_to_do>`.
+std::string read_bytes(const std::filesystem::path& file, const std::string& what_to_do);
+
+/// Writes `bytes` to `file` through `file`.tmp and a rename, so that a failed write never loses the file
+/// already there (stats.json, report.html); InputError `<file>: <failure>` when the write fails.
+void replace_file(const std::filesystem::path& file, const std::string& bytes, const std::string& failure);
+
 }  // namespace animpak::cli

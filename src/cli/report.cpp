@@ -14,14 +14,6 @@
 namespace animpak::cli {
 namespace {
 
-std::string read_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot read; check that the file exists and is readable");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The animated SVG from its first "<svg" on (the file has no XML declaration today; an older one may).
 std::string svg_element(const std::string& text, const std::filesystem::path& file) {
   const std::size_t at = text.find("<svg");
@@ -41,7 +33,8 @@ int report(const ReportOptions& options) {
     throw InputError(stats_file.string() + ": not found; run `animpak render " + options.dir.string() +
                      "`, which measures the frames and writes it");
   ReportInput input;
-  input.stats = nlohmann::json::parse(read_file(stats_file), nullptr, false);
+  input.stats =
+      nlohmann::json::parse(read_bytes(stats_file, "check that the file exists and is readable"), nullptr, false);
   if (input.stats.is_discarded() || !input.stats.is_object())
     throw InputError(stats_file.string() + ": not a JSON object; run `animpak render " + options.dir.string() +
                      "` to write it again");
@@ -75,18 +68,19 @@ int report(const ReportOptions& options) {
   }
 
   const std::filesystem::path animation = options.dir / "animation.svg", gif = options.dir / "animation.gif";
-  if (std::filesystem::exists(animation) && std::filesystem::file_size(animation) > kInlineSvgLimit &&
-      std::filesystem::exists(gif)) {
+  const bool have_svg = std::filesystem::exists(animation);
+  const std::uintmax_t svg_bytes = have_svg ? std::filesystem::file_size(animation) : 0;
+  if (svg_bytes > kInlineSvgLimit && std::filesystem::exists(gif)) {
     // Too large to open quickly inline: the GIF stands in, and the page says so.
-    const std::uintmax_t megabytes = (std::filesystem::file_size(animation) + (1u << 19)) >> 20;
-    input.animation_gif = read_file(gif);
+    const std::uintmax_t megabytes = (svg_bytes + (1u << 19)) >> 20;
+    input.animation_gif = read_bytes(gif, "check that the file exists and is readable");
     input.animation_note = "animation.svg (" + std::to_string(megabytes) +
                            " MB) is too large to open quickly inside a page, so this shows animation.gif; the slider "
                            "moves the plots' cursor. Open animation.svg beside this page for the vector animation.";
     std::cerr << "animpak: " << animation.string() << " is " << megabytes
               << " MB; the page shows animation.gif instead (the slider then moves the plots' cursor only)\n";
-  } else if (std::filesystem::exists(animation)) {
-    input.animation_svg = svg_element(read_file(animation), animation);
+  } else if (have_svg) {
+    input.animation_svg = svg_element(read_bytes(animation, "check that the file exists and is readable"), animation);
   } else {
     // Drawn as `render --format svg-anim` would, with the frame count the statistics were measured at; the
     // folder's own files are left as they are.
@@ -100,25 +94,14 @@ int report(const ReportOptions& options) {
     out.count = int(input.stats["frames"].size());
     out.formats = {FrameFormat::svg_anim};
     write_frames(world, world.state, out);
-    input.animation_svg = svg_element(read_file(scratch / "animation.svg"), scratch / "animation.svg");
+    input.animation_svg = svg_element(read_bytes(scratch / "animation.svg", "check that the folder is writable"),
+                                      scratch / "animation.svg");
     std::filesystem::remove_all(scratch);
   }
 
   const std::filesystem::path file = options.out.value_or(options.dir / "report.html");
   const std::string page = report_page(input);
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << page;
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw InputError(file.string() + ": cannot write; check that the folder is writable and has room");
-    }
-  }
-  std::filesystem::rename(temporary, file);
+  replace_file(file, page, "cannot write; check that the folder is writable and has room");
   std::cerr << "animpak: wrote " << file.string() << " (" << (page.size() + 1023) / 1024 << " KiB, self-contained)\n";
   return 0;
 }

@@ -11,34 +11,12 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/xml_text.hpp"
 
 namespace animpak::cli {
 namespace {
 
 using nlohmann::json;
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 // JSON inside a <script> element: "</" would end the element early.
 std::string script_json(const json& value) {
@@ -74,9 +52,9 @@ const json& at_path(const json& root, const std::string& path) {
 std::string stat(const json& stats, const std::string& path, int decimals, double scale = 1.0,
                  const std::string& unit = "") {
   const json& value = at_path(stats, path);
-  if (!value.is_number()) return "<span class=\"none\" data-stat-none=\"" + escaped(path) + "\">–</span>";
+  if (!value.is_number()) return "<span class=\"none\" data-stat-none=\"" + xml_escaped(path) + "\">–</span>";
   std::ostringstream out;
-  out << "<span data-stat=\"" << escaped(path) << "\"";
+  out << "<span data-stat=\"" << xml_escaped(path) << "\"";
   if (scale != 1.0) out << " data-scale=\"" << scale << "\"";
   out << ">" << report_number(value.get<double>() * scale, decimals) << unit << "</span>";
   return out.str();
@@ -84,9 +62,9 @@ std::string stat(const json& stats, const std::string& path, int decimals, doubl
 
 std::string text_of(const json& stats, const std::string& path) {
   const json& value = at_path(stats, path);
-  if (value.is_string()) return escaped(value.get<std::string>());
+  if (value.is_string()) return xml_escaped(value.get<std::string>());
   if (value.is_null()) return "–";
-  return escaped(value.dump());
+  return xml_escaped(value.dump());
 }
 
 // A round step for about `count` ticks over `range`: 1, 2 or 5 times a power of ten.
@@ -134,10 +112,10 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
   out.setf(std::ios::fixed);
   out.precision(2);
   out << "<svg class=\"plot\" id=\"" << spec.id << "\" viewBox=\"0 0 " << W << ' ' << H << "\" width=\"" << W
-      << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << escaped(spec.title) << "\"";
+      << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << xml_escaped(spec.title) << "\"";
   if (spec.time_axis)
     out << " data-time=\"1\" data-x0=\"" << px(spec.x_min) << "\" data-x1=\"" << px(spec.x_max) << "\"";
-  out << ">\n<text class=\"title\" x=\"" << left << "\" y=\"16\">" << escaped(spec.title) << "</text>\n";
+  out << ">\n<text class=\"title\" x=\"" << left << "\" y=\"16\">" << xml_escaped(spec.title) << "</text>\n";
   // Grid and ticks.
   for (double y = lo; y <= hi + step * 1e-6; y += step) {
     out << "<line class=\"grid\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << py(y) << "\" y2=\"" << py(y)
@@ -152,12 +130,12 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
       << "\"/><line class=\"axis\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << H - bottom << "\" y2=\""
       << H - bottom << "\"/>\n";
   out << "<text class=\"label\" x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\">"
-      << escaped(spec.x_label) << "</text><text class=\"label\" transform=\"translate(13 " << (top + H - bottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">" << escaped(spec.y_label) << "</text>\n";
+      << xml_escaped(spec.x_label) << "</text><text class=\"label\" transform=\"translate(13 " << (top + H - bottom) / 2
+      << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escaped(spec.y_label) << "</text>\n";
   double legend_x = W - right;
   for (auto s = series.rbegin(); s != series.rend(); ++s) {
     out << "<text class=\"legend\" x=\"" << legend_x << "\" y=\"16\" text-anchor=\"end\" fill=\"" << s->color << "\">"
-        << escaped(s->name) << "</text>\n";
+        << xml_escaped(s->name) << "</text>\n";
     legend_x -= 7.0 * double(s->name.size()) + 12.0;
   }
   for (const Series& s : series) {
@@ -167,7 +145,7 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
     int run = 0;
     const auto flush = [&] {
       if (run > 0)
-        out << "<polyline class=\"series " << s.role << "\" data-series=\"" << escaped(s.name) << "\" stroke=\""
+        out << "<polyline class=\"series " << s.role << "\" data-series=\"" << xml_escaped(s.name) << "\" stroke=\""
             << s.color << "\" points=\"" << points.str() << "\"/>\n";
       points.str("");
       run = 0;
@@ -193,7 +171,7 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
   });
   if (empty)
     out << "<text class=\"label empty\" x=\"" << (left + W - right) / 2 << "\" y=\"" << (top + H - bottom) / 2
-        << "\" text-anchor=\"middle\">" << escaped(spec.empty_note) << "</text>\n";
+        << "\" text-anchor=\"middle\">" << xml_escaped(spec.empty_note) << "</text>\n";
   if (spec.time_axis)
     out << "<line class=\"cursor\" x1=\"0\" x2=\"0\" y1=\"" << top - 4 << "\" y2=\"" << H - bottom
         << "\" visibility=\"hidden\"/>\n";
@@ -343,10 +321,10 @@ std::string report_page(const ReportInput& input) {
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-       << "<title>animpak report: " << escaped(input.title) << "</title><style>" << kStyle
+       << "<title>animpak report: " << xml_escaped(input.title) << "</title><style>" << kStyle
        << "</style></head>\n<body>\n";
-  page << "<h1>" << escaped(input.title) << "</h1>\n<p class=\"sub\">" << text_of(stats, "elements") << " elements, "
-       << stat(stats, "vertices", 0) << " vertices, packed in " << stat(stats, "iterations", 0)
+  page << "<h1>" << xml_escaped(input.title) << "</h1>\n<p class=\"sub\">" << text_of(stats, "elements")
+       << " elements, " << stat(stats, "vertices", 0) << " vertices, packed in " << stat(stats, "iterations", 0)
        << " iterations by animpak " << text_of(stats, "animpak") << " on " << text_of(stats, "device") << "</p>\n";
 
   // The animation and the slider.
@@ -358,7 +336,7 @@ std::string report_page(const ReportInput& input) {
        << "\n</div>\n"
        << (input.animation_note.empty()
                ? ""
-               : "<p class=\"note\" id=\"animation-note\">" + escaped(input.animation_note) + "</p>")
+               : "<p class=\"note\" id=\"animation-note\">" + xml_escaped(input.animation_note) + "</p>")
        << "<div class=\"controls\"><button id=\"play\" type=\"button\">Pause</button>"
        << "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"" << n - 1 << "\" value=\"0\" aria-label=\"frame\">"
        << "</div><div id=\"readout\"></div></div>\n";
@@ -459,8 +437,8 @@ std::string report_page(const ReportInput& input) {
   for (std::size_t e = 0; e < input.elements.size(); ++e) {
     const ReportElement& el = input.elements[e];
     const std::string g = "final_growth." + std::to_string(e) + ".";
-    page << "<tr><td>" << el.thumbnail << "</td><td>" << escaped(el.name) << "</td><td>" << escaped(el.library)
-         << " <span class=\"note\">" << escaped(el.art) << "</span></td><td>" << escaped(el.kind) << "</td><td>"
+    page << "<tr><td>" << el.thumbnail << "</td><td>" << xml_escaped(el.name) << "</td><td>" << xml_escaped(el.library)
+         << " <span class=\"note\">" << xml_escaped(el.art) << "</span></td><td>" << xml_escaped(el.kind) << "</td><td>"
          << stat(stats, g + "min", 2) << " – " << stat(stats, g + "max", 2) << "</td><td>"
          << stat(stats, "motion.size_over_script." + std::to_string(e) + ".ratio", 2, 1.0, "×") << "</td></tr>\n";
   }

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "animpak/render.hpp"
+#include "animpak/xml_text.hpp"  // xml_escaped, for the ids and names the writers put in SVG
 
 namespace animpak::frame_writers {
 
 /// "#rrggbb" of a colour's channels (its alpha is written apart).
 std::string hex(Rgba c);
-std::string xml_escaped(const std::string& text);
 /// One id per element, its name, unique among the SVG's ids ("container", "background" taken).
 std::vector<std::string> element_ids(const World& world);
 

@@ -9,6 +9,7 @@
 
 #include "animpak/error.hpp"
 #include "animpak/render.hpp"
+#include "animpak/xml_text.hpp"
 #include "frame_writers.hpp"
 
 namespace animpak {
@@ -19,32 +20,6 @@ std::string hex(Rgba c) {
   auto channel = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
   std::snprintf(s, sizeof s, "#%02x%02x%02x", channel(c.r), channel(c.g), channel(c.b));
   return s;
-}
-
-std::string xml_escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 // One id per element, its name: unguided copies are named "star#3" and guided elements get unique
@@ -82,7 +57,6 @@ namespace {
 
 using frame_writers::hex;
 using frame_writers::svg_paint;
-using frame_writers::xml_escaped;
 
 std::string frame_name(int i, const char* ext) {
   char name[32];
