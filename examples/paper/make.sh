@@ -5,6 +5,7 @@
 # docs/images/gallery/FIGURE.png, the picture the gallery shows.
 #
 #   bash examples/paper/make.sh fig13            # one figure
+#   bash examples/paper/make.sh fig16            # Fig. 1 beside Fig. 16b, and one fish's path in both
 #   bash examples/paper/make.sh all              # every figure, one after another (hours on two cores)
 #
 # ANIMPAK names the animpak executable (default build/release/animpak, built by scripts/quickstart.sh);
@@ -13,8 +14,8 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 animpak=${ANIMPAK:-build/release/animpak}
 if [ $# -lt 1 ]; then
-  sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
-  echo "figures: fig1 fig11 fig12 fig13 fig14 fig16a fig16b fig17, or all" >&2
+  sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+  echo "figures: fig1 fig11 fig12 fig13 fig14 fig16a fig16b fig16 fig17, or all" >&2
   exit 1
 fi
 [ -x "$animpak" ] || { echo "make.sh: $animpak not found; run bash scripts/quickstart.sh first (or set ANIMPAK)" >&2; exit 2; }
@@ -70,9 +71,29 @@ make_figure() {
   echo "make.sh: $figure: done in $((SECONDS - start)) s: $out/report.html, docs/images/gallery/$figure.png" >&2
 }
 
+# Fig. 16: the Fig. 1 scene (a) beside the same with time springs 1 % as stiff (b), each packed unless its
+# folder holds a packing already; frame 0 of each side by side, and the spacetime path of one fish in both
+# (`animpak trajectory`), the paper's Fig. 16c.
+fig16_fish=fish#4
+make_fig16() {
+  for figure in fig1 fig16b; do
+    [ -f "out/paper/$figure/state.bin" ] || make_figure "$figure" "$@"
+  done
+  ffmpeg -nostdin -hide_banner -loglevel error -y -i out/paper/fig1/frames/frame_0000.png \
+    -i out/paper/fig16b/frames/frame_0000.png -filter_complex "[0:v]scale=-2:320[a];[1:v]scale=-2:320[b];[a][b]hstack=inputs=2" \
+    -frames:v 1 docs/images/gallery/fig16.png
+  "$animpak" trajectory out/paper/fig1 out/paper/fig16b --element "$fig16_fish" \
+    --out docs/images/gallery/fig16-trajectory.svg
+  echo "make.sh: fig16: docs/images/gallery/fig16.png, docs/images/gallery/fig16-trajectory.svg" >&2
+}
+
 if [ "$1" = all ]; then
   shift
   for figure in fig1 fig11 fig12 fig13 fig14 fig16b fig17; do make_figure "$figure" "$@"; done
+  make_fig16 "$@"
+elif [ "$1" = fig16 ]; then
+  shift
+  make_fig16 "$@"
 else
   make_figure "$@"
 fi

@@ -133,6 +133,15 @@ struct ElementArt {
 /// Element `element`'s art replayed on these slice vertex positions, and its stroke scale there.
 ElementArt element_art(const World& world, int element, const std::vector<Vec2>& positions);
 
+/// The mean of the art's drawn points: where the motion measures (measure_motion) and the trajectory
+/// figure (`animpak trajectory`) place an element. The origin for art without points.
+Vec2 art_centroid(const ElementArt& art);
+
+/// Element `element`'s art centroid at each of `times`: its path through spacetime, on the same curve
+/// between slices the frames are drawn from (element_at, element_art).
+std::vector<Vec2> element_path(const World& world, const SimState& state, int element,
+                               const std::vector<double>& times);
+
 /// Every element's art at frame time tf, in element order (drawn_count entries: the reflections after
 /// the elements): the one geometry every frame writer (PNG, SVG frames, Lottie, animated SVG) and the
 /// frame metrics use.
@@ -310,6 +319,14 @@ struct PackingQuality {
   std::vector<FrameMetrics> between_slices;
   MotionMetrics motion;
 };
+
+/// Across a looping scene's seam an element continues as the element it loops into (§5.2's loop pairs: two
+/// guided elements that swap places): `into` is that element, `from` the one that loops into this one;
+/// both the element itself when it loops into itself.
+struct LoopNeighbours {
+  int from, into;
+};
+LoopNeighbours loop_neighbours(const World& world, int element);
 
 /// MotionMetrics from each element's art centroid at each frame (centroids[element][frame]) at `times`,
 /// and the packed state's slices.

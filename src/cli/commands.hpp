@@ -106,6 +106,17 @@ struct ReportOptions {
 /// Writes the packing in `dir` as one self-contained HTML page (report_page.hpp).
 int report(const ReportOptions& options);
 
+struct TrajectoryOptions {
+  std::vector<std::filesystem::path> dirs;   ///< folders `animpak pack` wrote, all of one container
+  std::string element;                       ///< the element's name in each of them
+  int samples = 400;                         ///< times along the loop, evenly spaced
+  std::optional<std::filesystem::path> out;  ///< default dirs[0]/trajectory.svg
+};
+
+/// Draws element `element`'s path through the loop in every folder into one SVG (trajectory_figure.hpp),
+/// and prints each path's length and acceleration.
+int trajectory(const TrajectoryOptions& options);
+
 struct BenchOptions {
   std::vector<std::string> devices{"reference"};
   std::vector<int> sizes{10000, 50000, 100000};  ///< target vertex counts of the synthetic worlds

@@ -21,7 +21,7 @@ constexpr int kManifestVersion = 1;
 // a render: a name missing here is neither swapped in nor removed, and would outlive the render it came
 // from.
 const char* const kAnimationFiles[] = {"animation.gif", "animation.mp4", "animation.json", "animation.lottie",
-                                       "animation.svg", "contact.png",   "report.html"};
+                                       "animation.svg", "contact.png",   "report.html",    "trajectory.svg"};
 
 void write_bytes(const fs::path& file, const std::string& bytes) {
   fs::create_directories(file.parent_path());

@@ -49,7 +49,7 @@ PackedScene packed_scene(const std::filesystem::path& dir, const Checkpoint& che
                          const std::optional<std::filesystem::path>& scene = {}, bool force = false);
 
 /// Removes the files a render writes (frames/frame_NNNN.png and .svg, animation.gif, .mp4, .json, .lottie,
-/// .svg, contact.png) and the report page made from them (report.html)
+/// .svg, contact.png) and the pictures made from them (report.html, trajectory.svg)
 /// from `dir`, and frames/ when that leaves it empty; nothing else.
 void remove_rendered(const std::filesystem::path& dir);
 

@@ -206,6 +206,17 @@ class RenderingFrontend final : public Frontend {
     report_cmd_->add_option("DIR", report_.dir, "folder written by animpak pack (rendered)")->required();
     report_cmd_->add_option("--out", report_.out, "the page's file (default DIR/report.html)");
 
+    trajectory_cmd_ = app.add_subcommand(
+        "trajectory",
+        "Draw one element's path through the loop in one or more packings of the same container, as one SVG");
+    trajectory_cmd_->add_option("DIR", trajectory_.dirs, "folders written by animpak pack, drawn in this order")
+        ->required();
+    trajectory_cmd_->add_option("--element", trajectory_.element, "the element's name, as stats.json names it")
+        ->required();
+    trajectory_cmd_->add_option("--samples", trajectory_.samples, "times along the loop the path is measured at")
+        ->check(CLI::Range(8, 20000));
+    trajectory_cmd_->add_option("--out", trajectory_.out, "the SVG's file (default: the first DIR's trajectory.svg)");
+
     pack.add_flag("!--no-render", pack_render_, "do not render frames");
     add_frame_options(pack, pack_frames_);
 
@@ -217,6 +228,7 @@ class RenderingFrontend final : public Frontend {
     if (check_cmd_->parsed()) return check(check_);
     if (render_cmd_->parsed()) return render(render_);
     if (report_cmd_->parsed()) return report(report_);
+    if (trajectory_cmd_->parsed()) return trajectory(trajectory_);
     return std::nullopt;
   }
 
@@ -239,6 +251,8 @@ class RenderingFrontend final : public Frontend {
   CLI::App* render_cmd_ = nullptr;
   CLI::App* report_cmd_ = nullptr;
   ReportOptions report_;
+  CLI::App* trajectory_cmd_ = nullptr;
+  TrajectoryOptions trajectory_;
   InspectOptions inspect_;
   CheckOptions check_;
   RenderOptions render_;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "svg_plot.hpp"  // report_number
+
 namespace animpak::cli {
 
 /// One row of the page's table of elements.
@@ -47,8 +49,5 @@ std::string report_page(const ReportInput& input);
 
 /// RFC 4648 base64 of `bytes` (the GIF's data URI).
 std::string base64(const std::string& bytes);
-
-/// `value` with `decimals` decimals, thousands separated by commas ("5,400", "43.5").
-std::string report_number(double value, int decimals);
 
 }  // namespace animpak::cli

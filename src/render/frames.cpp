@@ -105,6 +105,25 @@ ElementArt element_art(const World& world, int element, const std::vector<Vec2>&
   return {replay_art(lib.binding, lib.slice, positions), element_scale(world, element, positions)};
 }
 
+Vec2 art_centroid(const ElementArt& art) {
+  Vec2 sum;
+  std::size_t n = 0;
+  for (const auto& path : art.points)
+    for (const auto& line : path)
+      for (const Vec2& p : line) sum = sum + p, ++n;
+  return n > 0 ? sum * (1.0 / double(n)) : sum;
+}
+
+std::vector<Vec2> element_path(const World& world, const SimState& state, int element,
+                               const std::vector<double>& times) {
+  const std::vector<Vec2> tangents = element_tangents(world, state, element);
+  std::vector<Vec2> path;
+  path.reserve(times.size());
+  for (double t : times)
+    path.push_back(art_centroid(element_art(world, element, element_at(world, state, element, t, tangents))));
+  return path;
+}
+
 std::vector<std::vector<Vec2>> frame_tangents(const World& world, const SimState& state) {
   std::vector<std::vector<Vec2>> tangents(world.elements.size());
   for (std::size_t i = 0; i < world.elements.size(); ++i) tangents[i] = element_tangents(world, state, int(i));

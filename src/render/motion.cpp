@@ -22,6 +22,17 @@ double polygon_area(const std::vector<float>& x, const std::vector<float>& y, st
 
 }  // namespace
 
+LoopNeighbours loop_neighbours(const World& world, int element) {
+  const Topology& topo = world.topology;
+  LoopNeighbours n{element, element};
+  for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
+    const int from = topo.element[topo.loop_end[i]], to = topo.element[topo.loop_start[i]];
+    if (from == element) n.into = to;
+    if (to == element) n.from = from;
+  }
+  return n;
+}
+
 MotionMetrics measure_motion(const World& world, const SimState& state, const std::vector<std::vector<Vec2>>& centroids,
                              const std::vector<double>& times) {
   MotionMetrics m;
@@ -31,11 +42,10 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
   // two guided elements that swap places), so frame N − 1's next frame is that element's frame 0, and
   // frame 0's previous frame is frame N − 1 of the element that loops into this one.
   std::vector<std::size_t> loops_into(centroids.size()), loops_from(centroids.size());
-  for (std::size_t e = 0; e < centroids.size(); ++e) loops_into[e] = loops_from[e] = e;
-  for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
-    const std::size_t from = std::size_t(topo.element[topo.loop_end[i]]),
-                      to = std::size_t(topo.element[topo.loop_start[i]]);
-    if (from < centroids.size() && to < centroids.size()) loops_into[from] = to, loops_from[to] = from;
+  for (std::size_t e = 0; e < centroids.size(); ++e) {
+    const LoopNeighbours loop = loop_neighbours(world, int(e));
+    loops_into[e] = std::size_t(loop.into) < centroids.size() ? std::size_t(loop.into) : e;
+    loops_from[e] = std::size_t(loop.from) < centroids.size() ? std::size_t(loop.from) : e;
   }
   std::vector<double> all, at_slice, elsewhere;
   m.frame_peak.assign(n, std::numeric_limits<double>::quiet_NaN());

@@ -260,14 +260,7 @@ PackingQuality write_frames(const World& world, const SimState& state, const Fra
   for (int i = 0; i < out.count; ++i) {
     // One replay per frame, drawn, written and measured by every format alike.
     const std::vector<ElementArt> art = frame_art(world, state, times[i], tangents);
-    for (std::size_t e = 0; e < centroids.size(); ++e) {
-      Vec2 sum;
-      std::size_t n = 0;
-      for (const auto& path : art[e].points)
-        for (const auto& line : path)
-          for (const Vec2& p : line) sum = sum + p, ++n;
-      centroids[e].push_back(n > 0 ? sum * (1.0 / double(n)) : sum);
-    }
+    for (std::size_t e = 0; e < centroids.size(); ++e) centroids[e].push_back(art_centroid(art[e]));
     if (raster) draw_frame(world, art, out.style).write(frames / frame_name(i, "png"));
     if (wants(FrameFormat::svg)) write_svg(world, art, out.style, ids, frames / frame_name(i, "svg"));
     quality.frames.push_back(measure_frame(world, art, times[i]));

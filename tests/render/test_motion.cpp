@@ -80,3 +80,46 @@ TEST_CASE("measure_motion: with a slice next to every frame the slices' visibili
     for (const double t : times) c.push_back({0.5 + 0.1 * t * t, 0.5});
   CHECK(std::isnan(measure_motion(world, world.state, moving, times).slice_ratio));
 }
+
+TEST_CASE("element_path: the art centroid the frames are measured at, following the slices as they move") {
+  World world = tiny_star_world();  // 4 slices at t 0, 1/3, 2/3, 1
+  const std::vector<double> times = frame_times(12, true);
+  const std::vector<Vec2> before = element_path(world, world.state, 1, times);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const Vec2 framed = art_centroid(frame_art(world, world.state, times[i])[1]);
+    CHECK(before[i].x == Approx(framed.x).margin(1e-9));
+    CHECK(before[i].y == Approx(framed.y).margin(1e-9));
+  }
+  // Slice s of element 1 moved s · (6, −4): at the slice times its path moves with it.
+  const Topology& topo = world.topology;
+  std::vector<double> slice_times;
+  for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s) {
+    const int k = s - topo.element_slice_begin[1];
+    slice_times.push_back(world.state.t[topo.slice_begin[s]]);
+    for (std::int32_t v = topo.slice_begin[s]; v < topo.slice_begin[s + 1]; ++v)
+      world.state.x[v] += 6.0f * float(k), world.state.y[v] -= 4.0f * float(k);
+  }
+  slice_times.pop_back();  // the last slice is t = 1, where a looping path is back at frame 0's slice
+  const World base = tiny_star_world();
+  const std::vector<Vec2> still = element_path(base, base.state, 1, slice_times),
+                          moved = element_path(world, world.state, 1, slice_times);
+  for (std::size_t k = 0; k < slice_times.size(); ++k) {
+    CHECK(moved[k].x - still[k].x == Approx(6.0 * double(k)).margin(1e-3));
+    CHECK(moved[k].y - still[k].y == Approx(-4.0 * double(k)).margin(1e-3));
+  }
+}
+
+TEST_CASE("loop_neighbours: a swapping pair loops into each other, any other element into itself") {
+  const World pair =
+      make_world(parse_scene(animpak::test::star_scene(1, 5, 3, animpak::test::swapping_pair()), "tiny.json", "/"));
+  REQUIRE(pair.elements.size() == 3);
+  int up = -1, down = -1, star = -1;
+  for (std::size_t e = 0; e < pair.elements.size(); ++e)
+    (pair.elements[e].name == "up" ? up : pair.elements[e].name == "down" ? down : star) = int(e);
+  REQUIRE((up >= 0 && down >= 0 && star >= 0));
+  CHECK(loop_neighbours(pair, up).into == down);
+  CHECK(loop_neighbours(pair, up).from == down);
+  CHECK(loop_neighbours(pair, down).into == up);
+  CHECK(loop_neighbours(pair, star).into == star);
+  CHECK(loop_neighbours(pair, star).from == star);
+}
