@@ -74,7 +74,7 @@ make_figure() {
 # Fig. 16: the Fig. 1 scene (a) beside the same with time springs 1 % as stiff (b), each packed unless its
 # folder holds a packing already; frame 0 of each side by side, and the spacetime path of one fish in both
 # (`animpak trajectory`), the paper's Fig. 16c.
-fig16_fish=fish#4
+fig16_fish=fish#10
 make_fig16() {
   for figure in fig1 fig16b; do
     [ -f "out/paper/$figure/state.bin" ] || make_figure "$figure" "$@"

@@ -126,13 +126,13 @@ TEST_CASE("mirror: frames symmetric to a pixel, each element on its side of the 
     for (int k = 1; k <= 4; ++k) {
       const std::string id = "star#" + std::to_string(k);
       const auto& own = points[id];
-      const auto& image = points[id + " mirrored"];
-      REQUIRE(own.size() == image.size());
+      const auto& reflected = points[id + " mirrored"];
+      REQUIRE(own.size() == reflected.size());
       REQUIRE_FALSE(own.empty());
       double off_by = 0.0;
-      for (std::size_t i = 0; i < own.size(); ++i)
-        off_by = std::max({off_by, std::abs(image[i].first - (2 * 250.02 - own[i].first)),
-                           std::abs(image[i].second - own[i].second)});
+      for (std::size_t p = 0; p < own.size(); ++p)
+        off_by = std::max({off_by, std::abs(reflected[p].first - (2 * 250.02 - own[p].first)),
+                           std::abs(reflected[p].second - own[p].second)});
       INFO(id);
       CHECK(off_by < 1e-5);
     }
