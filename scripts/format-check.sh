@@ -6,7 +6,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null ||
   { echo "format-check: clang-format is not installed (Debian package clang-format; scripts/install-deps.sh)" >&2; exit 1; }
-mapfile -t files < <(git ls-files '*.cpp' '*.hpp' '*.h' '*.cl')
+# Tracked files and new ones not yet added (but not ignored ones: build/ holds generated sources), so that a
+# file written since the last `git add` is formatted before it is committed.
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.cpp' '*.hpp' '*.h' '*.cl')
 if [ "${1:-}" = "--fix" ]; then
   clang-format -i "${files[@]}"
   echo "format-check: formatted ${#files[@]} files"
