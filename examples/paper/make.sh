@@ -6,6 +6,7 @@
 #
 #   bash examples/paper/make.sh fig13            # one figure
 #   bash examples/paper/make.sh fig16            # Fig. 1 beside Fig. 16b, and one fish's path in both
+#   bash examples/paper/make.sh fig11 --redraw   # the report and picture again from the packing there
 #   bash examples/paper/make.sh all              # every figure, one after another (hours on two cores)
 #
 # ANIMPAK names the animpak executable (default build/release/animpak, built by scripts/quickstart.sh);
@@ -14,7 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 animpak=${ANIMPAK:-build/release/animpak}
 if [ $# -lt 1 ]; then
-  sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
   echo "figures: fig1 fig11 fig12 fig13 fig14 fig16a fig16b fig16 fig17, or all" >&2
   exit 1
 fi
@@ -36,6 +37,7 @@ scene_of() {
 }
 frames_of() {
   case "$1" in
+    fig11) echo "0 20 40" ;;        # t = 0, 0.25, 0.5: the chase a quarter turn at a time
     fig12) echo "0 10 20 30 40" ;;  # t = 0, 0.125, 0.25, 0.375, 0.5
     fig13) echo "0 40" ;;           # t = 0 and 0.5
     fig17) echo "0 10 20 30" ;;     # an eighth of the beam's turn apart
@@ -49,9 +51,14 @@ make_figure() {
   local scene
   scene=$(scene_of "$figure") || { echo "make.sh: unknown figure $figure" >&2; exit 1; }
   local out=out/paper/$figure
-  echo "make.sh: $figure: packing $scene into $out" >&2
   local start=$SECONDS
-  "$animpak" pack "$scene" --out "$out" --force --frames 80 --size 480 --format png,gif,svg-anim "$@"
+  if [ "${1:-}" = --redraw ]; then
+    [ -f "$out/state.bin" ] || { echo "make.sh: $out holds no packing to redraw; run make.sh $figure" >&2; exit 1; }
+    echo "make.sh: $figure: redrawing from $out" >&2
+  else
+    echo "make.sh: $figure: packing $scene into $out" >&2
+    "$animpak" pack "$scene" --out "$out" --force --frames 80 --size 480 --format png,gif,svg-anim "$@"
+  fi
   "$animpak" report "$out"
   mkdir -p docs/images/gallery
   local inputs=() filter="" n=0
