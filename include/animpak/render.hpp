@@ -326,7 +326,8 @@ struct PackingQuality {
 struct LoopNeighbours {
   int from, into;
 };
-LoopNeighbours loop_neighbours(const World& world, int element);
+/// Every element's LoopNeighbours, in element order, from one pass over the loop pairs.
+std::vector<LoopNeighbours> loop_neighbours(const World& world);
 
 /// MotionMetrics from each element's art centroid at each frame (centroids[element][frame]) at `times`,
 /// and the packed state's slices.

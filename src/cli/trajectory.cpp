@@ -54,7 +54,7 @@ int trajectory(const TrajectoryOptions& options) {
     run.t = frame_times(options.samples, world.loop);
     run.path = element_path(world, world.state, element, run.t);
     if (world.loop) {
-      const LoopNeighbours loop = loop_neighbours(world, element);
+      const LoopNeighbours loop = loop_neighbours(world)[std::size_t(element)];
       run.after = loop.into == element ? run.path.front() : element_path(world, world.state, loop.into, {0.0})[0];
       run.before =
           loop.from == element ? run.path.back() : element_path(world, world.state, loop.from, {run.t.back()})[0];

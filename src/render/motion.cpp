@@ -22,13 +22,14 @@ double polygon_area(const std::vector<float>& x, const std::vector<float>& y, st
 
 }  // namespace
 
-LoopNeighbours loop_neighbours(const World& world, int element) {
+std::vector<LoopNeighbours> loop_neighbours(const World& world) {
   const Topology& topo = world.topology;
-  LoopNeighbours n{element, element};
+  std::vector<LoopNeighbours> n(world.elements.size());
+  for (std::size_t e = 0; e < n.size(); ++e) n[e] = {int(e), int(e)};
+  // One entry per loop pair of vertices: every pair of two elements names the same two.
   for (std::size_t i = 0; i < topo.loop_end.size(); ++i) {
     const int from = topo.element[topo.loop_end[i]], to = topo.element[topo.loop_start[i]];
-    if (from == element) n.into = to;
-    if (to == element) n.from = from;
+    n[std::size_t(from)].into = to, n[std::size_t(to)].from = from;
   }
   return n;
 }
@@ -42,8 +43,9 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
   // two guided elements that swap places), so frame N − 1's next frame is that element's frame 0, and
   // frame 0's previous frame is frame N − 1 of the element that loops into this one.
   std::vector<std::size_t> loops_into(centroids.size()), loops_from(centroids.size());
+  const std::vector<LoopNeighbours> loops = loop_neighbours(world);
   for (std::size_t e = 0; e < centroids.size(); ++e) {
-    const LoopNeighbours loop = loop_neighbours(world, int(e));
+    const LoopNeighbours loop = e < loops.size() ? loops[e] : LoopNeighbours{int(e), int(e)};
     loops_into[e] = std::size_t(loop.into) < centroids.size() ? std::size_t(loop.into) : e;
     loops_from[e] = std::size_t(loop.from) < centroids.size() ? std::size_t(loop.from) : e;
   }
