@@ -3,7 +3,8 @@
  * element's boundary polygon on its curve at their t (curve.cl), at any depth, with the boundary edge tested for
  * crossings on the same walk; the force adds a pull along the way out of the other element. The
  * elements tried are the broadphase's candidates (OverlapGridInfo, built on the host by
- * reference::build_overlap_grid; docs/architecture.md, "The overlap test"): the merged lists of the
+ * reference::build_overlap_grid or on the device by overlap_grid.cl; docs/architecture.md, "The
+ * overlap test"): the merged lists of the
  * cells the query edge's box meets, in increasing element order, exactly as
  * reference::overlap_candidates. */
 

@@ -248,10 +248,10 @@ __kernel void repulsion_force(const GridInfo grid,
                               __global float* closest, /* output: per vertex */
                               __global uchar* contact, /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
                               __global float* depth_x,
-                              __global float* depth_y,                /* output: the way out when inside */
-                              const OverlapGridInfo overlap_grid,     /* the overlap test's broadphase */
-                              __global const int* overlap_start,      /* input: its cells + 1 */
-                              __global const int* overlap_elements) { /* input: its element lists */
+                              __global float* depth_y,                      /* output: the way out when inside */
+                              __global const OverlapGridInfo* overlap_grid, /* the overlap test's broadphase */
+                              __global const int* overlap_start,            /* input: its cells + 1 */
+                              __global const int* overlap_elements) {       /* input: its element lists */
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];
@@ -261,7 +261,7 @@ __kernel void repulsion_force(const GridInfo grid,
   const uchar bits =
       overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
                    box_x0, box_y0, box_x1, box_y1, x, y, t, tangent_x, tangent_y, p.motion_curve, growth,
-                   element_secondary, overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
+                   element_secondary, *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx, sy, st, closest2;

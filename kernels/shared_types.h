@@ -69,8 +69,8 @@ typedef struct {
   ap_int far_cells; /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
 } GridInfo;
 
-/* The overlap test's broadphase (reference::OverlapGrid without its arrays), built on the host each
- * step and passed to the repulsion kernel. nx == 0: no grid, every query tries every element. */
+/* The overlap test's broadphase (reference::OverlapGrid without its arrays), built each step on the
+ * host or on the device (overlap_grid.cl) into a one-element buffer the repulsion kernel reads. nx == 0: no grid, every query tries every element. */
 typedef struct {
   ap_int nx, ny, nt;     /* cells per axis */
   ap_float x0, y0, t0;   /* low corner */

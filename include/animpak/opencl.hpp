@@ -74,9 +74,10 @@ struct DeviceChoice {
 /// `request` (case-insensitive). UsageError when nothing or more than one device matches.
 DeviceChoice choose_device(std::string_view request);
 
-/// Where the collision grid's stable counting sort runs. `automatic`: on the device for GPUs (reading
-/// the cell ids back and the cell ranges over costs more there than the sort), on the host for CPU
-/// devices such as PoCL (no atomics, and the host's single pass is cheap). Both give the same arrays.
+/// Where the two grids are built: the collision grid's stable counting sort and the overlap test's
+/// broadphase. `automatic`: on the device for GPUs (a step then never waits for the host: reading the
+/// cell ids or slice boxes back stops the queue), on the host for CPU devices such as PoCL (no atomics,
+/// and the host's single pass is cheap). Both give the same forces, bit for bit.
 enum class GridSort { automatic, host, device };
 
 /// "auto", "host" or "device"; UsageError naming `option` for anything else.
@@ -94,8 +95,16 @@ class OpenclBackend : public Backend {
   /// The collision grid built on the device from the current state.
   virtual reference::CollisionGrid build_and_read_grid() = 0;
   virtual const DeviceInfo& device() const = 0;
-  /// Where this backend sorts the grid: host or device, never automatic.
+  /// Where this backend builds the grids: host or device, never automatic.
   virtual GridSort grid_sort() const = 0;
+  /// The overlap test's broadphase as the repulsion kernel reads it, built from the current state (its
+  /// tangents and slice boxes first), on the host or the device as grid_sort() says.
+  virtual reference::OverlapGrid build_and_read_overlap_grid() = 0;
+  /// Room for `entries` entries in a device-built broadphase's lists from now on. A build that outgrows
+  /// its room drops the grid for that step (every query tries every element: the same forces, slower)
+  /// and the room grows at the next statistics; the tests shrink it to reach that path. No effect on a
+  /// host build.
+  virtual void set_overlap_room(std::size_t entries) = 0;
 };
 
 /// Copies topology and state to `choice.device` and builds the kernels. OpenclError on any failure

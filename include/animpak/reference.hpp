@@ -133,7 +133,7 @@ void slice_boxes(const Topology& topo, const SimState& state, const CurveTangent
 /// The overlap test's broadphase (docs/architecture.md, "The overlap test"): a uniform (x, y, t) cell
 /// grid over every slice pair's box (the union of its two slices' boxes, from t of one slice to t of
 /// the other), listing per cell the elements owning a pair whose box meets the cell, in increasing
-/// element order, each once. A grid without cells (nx = 0: a box or slice t is NaN) sends every query
+/// element order, each once. A grid without cells (nx = 0: a box or slice t is not finite) sends every query
 /// to every element.
 struct OverlapGrid {
   std::int32_t nx = 0, ny = 0, nt = 0;    ///< cells per axis
@@ -145,8 +145,9 @@ struct OverlapGrid {
 };
 
 /// Builds the broadphase from this step's slice boxes: the pairs in increasing slice order, each in
-/// every cell its box meets, then the stable counting sort (src/solver/counting_sort.cpp). Runs on
-/// the host for both backends (the OpenCL backend reads the boxes back). overlap.cpp.
+/// every cell its box meets, then the stable counting sort (src/solver/counting_sort.cpp). The OpenCL
+/// backend runs it on the boxes read back when it builds its grids on the host; on the device,
+/// kernels/overlap_grid.cl builds a grid of its own rule, which gives the same forces. overlap.cpp.
 void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGrid& grid);
 
 /// The elements, in increasing order and each once, whose slice-pair boxes may meet the query box

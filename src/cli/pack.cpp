@@ -114,7 +114,7 @@ std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort,
     try {
       auto backend = make_opencl_backend(world.topology, world.state, world.params, choice, sort);
       driver = choice.device.driver + " (" + choice.device.platform_version + ")";
-      std::cerr << "animpak: collision grid sorted on the " << grid_sort_name(backend->grid_sort()) << "\n";
+      std::cerr << "animpak: grids built on the " << grid_sort_name(backend->grid_sort()) << "\n";
       return backend;
     } catch (const OpenclError& e) {
       if (choice.explicit_request) throw;

@@ -59,8 +59,8 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
       "default: the first GPU, else PoCL, else the reference");
   cl.pack_cmd
       ->add_option("--grid-sort", cl.pack.grid_sort,
-                   "where the collision grid is sorted on an OpenCL device: auto (device on GPUs, host on CPU "
-                   "devices), host or device; the results are identical")
+                   "where an OpenCL device's grids are built (the collision grid's sort, the overlap test's "
+                   "broadphase): auto (device on GPUs, host on CPU devices), host or device; the results are identical")
       ->check(CLI::IsMember({"auto", "host", "device"}));
 }
 

@@ -19,8 +19,9 @@
 
 namespace animpak::test {
 
-/// Both places the grid's counting sort can run; every device is tested with each, since a device
-/// may use either (automatic picks by device type, --grid-sort overrides).
+/// Both places the grids (the collision grid's counting sort, the overlap test's broadphase) can be
+/// built; every device is tested with each, since a device may use either (automatic picks by device
+/// type, --grid-sort overrides).
 inline constexpr GridSort grid_sorts[] = {GridSort::host, GridSort::device};
 
 /// The OpenCL devices to test: the one ANIMPAK_TEST_DEVICE names, or every device present but

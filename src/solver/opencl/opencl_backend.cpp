@@ -1,10 +1,10 @@
 // The OpenCL backend: the reference backend's step (src/solver/reference/backend.cpp) with the state
-// on the device. The grid's stable counting sort (count → exclusive scan → scatter) runs either on the
-// device (GPUs) or on the host from the cell ids read back (CPU devices); the overlap test's broadphase
-// is built on the host every step from the slice boxes read back (reference::build_overlap_grid), so
-// each step crosses the bus once each way for it; statistics are per-slice reductions read on demand,
-// and the full state comes back only in state(). The topology and scratch buffers are made in
-// device_buffers.cpp.
+// on the device. The two grids are built either on the device (GPUs: a step then never waits for the
+// host) or on the host (CPU devices): the collision grid's stable counting sort (count → exclusive scan
+// → scatter) from the cell ids read back, and the overlap test's broadphase from the slice boxes read
+// back every step (overlap_broadphase.cpp). Statistics are per-slice reductions read on demand (every
+// check_interval steps), and the full state comes back only in state(). The topology and scratch
+// buffers are made in device_buffers.cpp.
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -14,6 +14,7 @@
 #include "animpak/error.hpp"
 #include "device_buffers.hpp"
 #include "kernel.hpp"
+#include "overlap_broadphase.hpp"
 
 namespace animpak {
 
@@ -81,6 +82,7 @@ class DeviceBackend final : public OpenclBackend {
     upload_state(initial);
     topo_buf_ = opencl::upload_topology(context_, queue_, topo_);
     allocate_scratch();
+    broadphase_ = opencl::OverlapBroadphase(context_, queue_, program, topo_, scratch_, sort_ == GridSort::device);
     bind_grid_kernels(program);
     bind_step_kernels(program, opencl::force_params(params));
     check(queue_.finish(), "clFinish(upload)");
@@ -110,9 +112,11 @@ class DeviceBackend final : public OpenclBackend {
     std::vector<KernelTime> out;
     for (const Kernel* kernel : profiled_)
       out.push_back({kernel->name(), kernel->phase(), kernel->seconds(), kernel->launches()});
-    // The host's share of a step: the overlap broadphase (built from the slice boxes read back every
-    // step), the grid's counting sort when it runs on the host, the repulsion order's refresh.
-    out.push_back({"host: overlap broadphase", "forces", host_overlap_grid_, host_overlap_builds_});
+    // The host's share of a step: the grids when they are built on the host (the overlap broadphase
+    // from the slice boxes read back every step, the counting sort at every rebuild), the repulsion
+    // order's refresh.
+    if (host_overlap_builds_ > 0)
+      out.push_back({"host: overlap broadphase", "forces", host_overlap_grid_, host_overlap_builds_});
     if (host_sorts_ > 0) out.push_back({"host: grid counting sort", "grid", host_sort_, host_sorts_});
     out.push_back({"host: repulsion order", "transfer", host_reorder_, host_reorders_});
     return out;
@@ -151,8 +155,11 @@ class DeviceBackend final : public OpenclBackend {
     read(slice_outside_, per_slice.outside, "slice_outside");
     read(slice_bad_, per_slice.first_bad, "slice_bad");
     read(growth_, growth, "growth");
+    std::vector<std::int32_t> lists(broadphase_.on_device() ? 1 : 0, -1);
+    read(broadphase_.total(), lists, "overlap_total");
     read(changed_, changed, "growth_changed", true);
     settle_times();
+    if (!lists.empty()) broadphase_.make_room(lists.front());
     PhaseStopwatch w(times_.statistics);
     StepStatistics st;
     st.iteration = iteration_;
@@ -254,6 +261,16 @@ class DeviceBackend final : public OpenclBackend {
     if (grid_.far_cells != 0) reference::build_far_runs(g);
     return g;
   }
+
+  reference::OverlapGrid build_and_read_overlap_grid() override {
+    curve_tangents_kernel().run(queue_, curve_tangents_items());
+    slice_boxes_.run(queue_, world_.slices);
+    build_overlap_grid();
+    settle_times();
+    return broadphase_.read(queue_);
+  }
+
+  void set_overlap_room(std::size_t entries) override { broadphase_.set_capacity(entries); }
 
  private:
   // The context and an in-order, profiling queue on the chosen device; returns the built program.
@@ -525,35 +542,23 @@ class DeviceBackend final : public OpenclBackend {
             "clEnqueueWriteBuffer(sorted_triangles)");
   }
 
-  // The overlap test's broadphase (reference::build_overlap_grid) from this step's slice boxes, read
-  // back; its lists go up into buffers that grow as needed.
+  // The overlap test's broadphase from this step's slice boxes: on the device, or on the host from the
+  // boxes read back.
   void build_overlap_grid() {
-    ScratchBuffers& w = scratch_;
-    read(w.box_x0, boxes_.x0, "slice_box_x0"), read(w.box_y0, boxes_.y0, "slice_box_y0");
-    read(w.box_x1, boxes_.x1, "slice_box_x1"), read(w.box_y1, boxes_.y1, "slice_box_y1");
-    read(w.box_t, boxes_.t, "slice_t", true);
-    settle_times();
-    PhaseStopwatch watch(times_.forces), own(host_overlap_grid_);
-    ++host_overlap_builds_;
-    reference::build_overlap_grid(topo_, boxes_, overlap_grid_);
-    const auto grow = [&](cl::Buffer& buffer, std::size_t& capacity, const std::vector<std::int32_t>& data,
-                          const char* name) {
-      if (data.size() > capacity || capacity == 0) {
-        capacity = std::max<std::size_t>(data.size() + data.size() / 2, 1);
-        buffer = scratch(sizeof(std::int32_t) * capacity, name);
-      }
-      // The host vectors stay untouched until the next build, which first waits on this queue.
-      if (!data.empty())
-        check(queue_.enqueueWriteBuffer(buffer, CL_FALSE, 0, sizeof(std::int32_t) * data.size(), data.data()),
-              std::string("clEnqueueWriteBuffer(") + name + ")");
-    };
-    grow(w.overlap_start, overlap_start_capacity_, overlap_grid_.cell_start, "overlap_cell_start");
-    grow(w.overlap_elements, overlap_elements_capacity_, overlap_grid_.elements, "overlap_elements");
-    const OverlapGridInfo info{overlap_grid_.nx, overlap_grid_.ny, overlap_grid_.nt,   overlap_grid_.x0,
-                               overlap_grid_.y0, overlap_grid_.t0, overlap_grid_.cell, overlap_grid_.cell_t};
-    repulsion_force_.set(overlap_grid_arg_, info);
-    repulsion_force_.set(overlap_grid_arg_ + 1, w.overlap_start);
-    repulsion_force_.set(overlap_grid_arg_ + 2, w.overlap_elements);
+    if (broadphase_.on_device()) {
+      for (const opencl::OverlapBroadphase::Launch& l : broadphase_.launches())
+        timed(times_.forces, *l.kernel, l.items);
+    } else {
+      ScratchBuffers& w = scratch_;
+      read(w.box_x0, boxes_.x0, "slice_box_x0"), read(w.box_y0, boxes_.y0, "slice_box_y0");
+      read(w.box_x1, boxes_.x1, "slice_box_x1"), read(w.box_y1, boxes_.y1, "slice_box_y1");
+      read(w.box_t, boxes_.t, "slice_t", true);
+      settle_times();
+      PhaseStopwatch watch(times_.forces), own(host_overlap_grid_);
+      ++host_overlap_builds_;
+      broadphase_.upload(queue_, topo_, boxes_);
+    }
+    broadphase_.bind(repulsion_force_, overlap_grid_arg_);
   }
 
   Topology topo_;
@@ -589,11 +594,10 @@ class DeviceBackend final : public OpenclBackend {
       loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
-  bool mirror_ = false;    ///< wall_mirror is on: wall_mirror_force runs before step_forces
-  cl_int curve_mode_ = 0;  ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
-  reference::SliceBoxes boxes_;
-  reference::OverlapGrid overlap_grid_;
-  std::size_t overlap_start_capacity_ = 0, overlap_elements_capacity_ = 0;
+  bool mirror_ = false;          ///< wall_mirror is on: wall_mirror_force runs before step_forces
+  cl_int curve_mode_ = 0;        ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
+  reference::SliceBoxes boxes_;  ///< read back for a host build of the broadphase
+  opencl::OverlapBroadphase broadphase_;
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
   struct Pending {
     double* sink;  // the phase's total

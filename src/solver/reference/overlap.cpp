@@ -99,15 +99,16 @@ void build_overlap_grid(const Topology& topo, const SliceBoxes& boxes, OverlapGr
       owner.push_back(e);
     }
   if (pairs.empty()) return;
-  // The grid spans the pairs' boxes; its cell is their mean extent, so a box meets a few cells. A NaN
-  // (a blown-up state) leaves the grid without cells: every query then tries every element, as the
-  // box test, which a NaN never fails, would.
+  // The grid spans the pairs' boxes; its cell is their mean extent, so a box meets a few cells. A box
+  // that is not finite (a blown-up state) leaves the grid without cells: every query then tries every
+  // element, as the box test, which a NaN never fails, would (and an infinite span could not be cut
+  // into cells: the doubling below would never end).
   PairBox all = pair_box(boxes, pairs.front());
   double w = 0.0, h = 0.0, d = 0.0;
   for (const std::int32_t s : pairs) {
     const PairBox b = pair_box(boxes, s);
-    if (std::isnan(b.x0) || std::isnan(b.y0) || std::isnan(b.x1) || std::isnan(b.y1) || std::isnan(b.t0) ||
-        std::isnan(b.t1))
+    if (!std::isfinite(b.x0) || !std::isfinite(b.y0) || !std::isfinite(b.x1) || !std::isfinite(b.y1) ||
+        !std::isfinite(b.t0) || !std::isfinite(b.t1))
       return;
     all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1),
            std::max(all.y1, b.y1), std::min(all.t0, b.t0), std::max(all.t1, b.t1)};

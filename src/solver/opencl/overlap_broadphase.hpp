@@ -1,0 +1,81 @@
+// The overlap test's broadphase for the OpenCL backend (docs/architecture.md, "The overlap test"): the
+// three buffers the repulsion kernel reads (the grid's shape, its cell ranges, its element lists),
+// filled every step either on the host from the slice boxes read back (reference::build_overlap_grid:
+// CPU devices, where the read costs little) or on the device (kernels/overlap_grid.cl: GPUs, where a
+// blocking read stops the queue). Both give the same forces: the broadphase only chooses which
+// elements the exact box test tries.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "animpak/reference.hpp"
+#include "device_buffers.hpp"
+#include "kernel.hpp"
+
+namespace animpak::opencl {
+
+class OverlapBroadphase {
+ public:
+  /// One kernel launch of a device build.
+  struct Launch {
+    Kernel* kernel;
+    std::int32_t items;
+  };
+
+  OverlapBroadphase() = default;
+  /// The buffers for `topo`'s slice pairs, and on the device its kernels bound to the slice boxes in
+  /// `scratch` (slice_boxes fills them before each build).
+  OverlapBroadphase(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
+                    const Topology& topo, const ScratchBuffers& scratch, bool on_device);
+  OverlapBroadphase(const OverlapBroadphase&) = delete;
+  OverlapBroadphase& operator=(const OverlapBroadphase&) = delete;
+  OverlapBroadphase(OverlapBroadphase&&) = default;
+  OverlapBroadphase& operator=(OverlapBroadphase&&) = default;
+
+  bool on_device() const { return on_device_; }
+
+  /// A device build's launches, in order (none on the host).
+  std::vector<Launch> launches();
+
+  /// A host build: the broadphase of `boxes` (this step's, read back), uploaded without waiting; the
+  /// host copies stay untouched until the next build, which the caller starts after waiting on the queue.
+  void upload(const cl::CommandQueue& queue, const Topology& topo, const reference::SliceBoxes& boxes);
+
+  /// Sets the repulsion kernel's arguments first, first + 1, first + 2 to the grid's shape, cell ranges
+  /// and element lists (the buffers change when they grow, so every step).
+  void bind(Kernel& repulsion, cl_uint first) const;
+
+  /// A device build's element lists in all, as of the last build (read with the statistics).
+  const cl::Buffer& total() const { return total_; }
+  /// Given the total read back: when the lists came within a quarter of their room or over it, the
+  /// room for twice the total. An overgrown build drops its grid (every query tries every element:
+  /// the same forces, slower); `dropped` counts the totals read back that had overgrown.
+  void make_room(std::int32_t total);
+  /// Room for `entries` list entries from now on (the tests shrink it to make a build overgrow).
+  void set_capacity(std::size_t entries);
+  std::uint64_t dropped() const { return dropped_; }
+
+  /// The broadphase as the last build left it (read with a blocking read).
+  reference::OverlapGrid read(const cl::CommandQueue& queue) const;
+
+ private:
+  void bind_lists();
+
+  bool on_device_ = false;
+  cl::Context context_;
+  std::int32_t pairs_ = 0, cell_capacity_ = 0;
+  std::size_t capacity_ = 0;        ///< element list entries the buffer holds
+  std::size_t start_capacity_ = 0;  ///< cell range entries the buffer holds
+  cl::Buffer info_, start_, elements_;
+  cl::Buffer boxes_[5];  ///< the slice boxes (x0, y0, x1, y1, t): the device build's input
+  // Device build only:
+  cl::Buffer pair_slice_, pair_element_, count_, cursor_, block_sum_, total_;
+  Kernel extent_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_;
+  std::uint64_t dropped_ = 0;
+  // Host build only: what the last upload sent, kept alive for its non-blocking writes.
+  reference::OverlapGrid host_;
+  OverlapGridInfo host_info_{};
+};
+
+}  // namespace animpak::opencl
