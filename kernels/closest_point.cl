@@ -124,6 +124,10 @@ typedef float16 ap_floatv;
 typedef int16 ap_intv;
 #define ap_vloadf(k, p) vload16((k), (p))
 #define ap_vloadi(k, p) vload16((k), (p))
+typedef uint16 ap_uintv;
+/** Each lane's own number, 0 … AP_LANES − 1. */
+ap_uintv ap_lane_index(void) { return (ap_uintv)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
+ap_intv ap_lane_index_int(void) { return (ap_intv)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
 #define AP_FOR_LANES(M) M(0) M(1) M(2) M(3) M(4) M(5) M(6) M(7) M(8) M(9) M(a) M(b) M(c) M(d) M(e) M(f)
 
 /** How many lanes of a comparison's result are set (-1). */

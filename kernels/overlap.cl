@@ -173,7 +173,8 @@ int overlap_next_candidate(int e,
 /** Element e's slice pair around pt, searched from slice index `start` (slices stay near their rest
  * times), whose boxes meet the query box: its lower global slice, with *w the weight of pt between the
  * two (0 for a flat pair); -1 when pt is outside the pair or the boxes miss (reference
- * overlap_slice_pair). */
+ * overlap_slice_pair). The slice times come from slice_boxes' copy (slice_t[s] = t of the slice's
+ * first vertex, the same values, one load fewer each). */
 int overlap_slice_pair(int e,
                        int start,
                        float pt,
@@ -182,8 +183,7 @@ int overlap_slice_pair(int e,
                        float ey0,
                        float ey1,
                        __global const int* element_slice_begin,
-                       __global const int* slice_begin,
-                       __global const float* t,
+                       __global const float* slice_t,
                        __global const float* box_x0,
                        __global const float* box_y0,
                        __global const float* box_x1,
@@ -192,10 +192,10 @@ int overlap_slice_pair(int e,
   const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
   if (count < 2) return -1;
   int k = start < count - 2 ? start : count - 2;
-  while (k > 0 && pt < t[slice_begin[first + k]]) --k;
-  while (k < count - 2 && pt > t[slice_begin[first + k + 1]]) ++k;
+  while (k > 0 && pt < slice_t[first + k]) --k;
+  while (k < count - 2 && pt > slice_t[first + k + 1]) ++k;
   const int s = first + k;
-  const float t0 = t[slice_begin[s]], t1 = t[slice_begin[s + 1]];
+  const float t0 = slice_t[s], t1 = slice_t[s + 1];
   if (!(ap_min(t0, t1) <= pt && pt <= ap_max(t0, t1))) return -1;
   const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
   const float by0 = ap_min(box_y0[s], box_y0[s + 1]), by1 = ap_max(box_y1[s], box_y1[s + 1]);
@@ -257,14 +257,47 @@ void overlap_polygon_walk(__global const float* x,
                           ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
     crosses = any(box && cross);
   }
+  /* The rest in one more round when the polygon has AP_LANES edges or more: its last AP_LANES edges, the
+   * lanes already walked masked out. Each edge's end is the next lane's start, the last edge's end
+   * vertex 0 (its curve point in one lane's operations), so nothing past the polygon is read. */
+  if (i < edges && edges >= AP_LANES) {
+    const int base = edges - AP_LANES;
+    const ap_floatv ax = curve_value_lanes(ap_vloadf(0, x + lo + base), ap_vloadf(0, x + hi + base),
+                                           ap_vloadf(0, mx + lo + base), ap_vloadf(0, mx + hi + base), b);
+    const ap_floatv ay = curve_value_lanes(ap_vloadf(0, y + lo + base), ap_vloadf(0, y + hi + base),
+                                           ap_vloadf(0, my + lo + base), ap_vloadf(0, my + hi + base), b);
+    float first_x, first_y;
+    curve_point(x, y, mx, my, lo, hi, 0, b, &first_x, &first_y);
+    const ap_uintv next = ap_lane_index() + 1u; /* lane AP_LANES: the second operand's lane 0 */
+    const ap_floatv bx = shuffle2(ax, (ap_floatv)(first_x), next), by = shuffle2(ay, (ap_floatv)(first_y), next);
+    const ap_intv fresh = ap_lane_index_int() + base >= i;
+    const ap_intv ray = fresh && ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
+    inside = inside != ((ap_lane_count(ray) & 1) != 0);
+    if (!crosses) {
+      const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
+                          select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
+      const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+      const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
+      const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
+      const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
+      const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
+                            ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
+      crosses = any(fresh && box && cross);
+    }
+    i = edges;
+  }
 #endif
+  /* Each edge's end is the next one's start: one curve point per vertex (the same value either way). */
+  float ax = 0.0f, ay = 0.0f;
+  if (i < edges) curve_point(x, y, mx, my, lo, hi, i, b, &ax, &ay);
   for (; i < edges; ++i) {
-    float ax, ay, bx, by;
-    overlap_edge(x, y, mx, my, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
+    float bx, by;
+    curve_point(x, y, mx, my, lo, hi, i + 1 == edges ? 0 : i + 1, b, &bx, &by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
     if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 && ap_min(ay, by) <= ey1 &&
         segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
       crosses = true;
+    ax = bx, ay = by;
   }
   *inside_out = inside;
   *crosses_out = crosses;
@@ -319,6 +352,7 @@ uchar overlap_point(int own,
                     __global const float* box_y0,
                     __global const float* box_x1,
                     __global const float* box_y1,
+                    __global const float* slice_t,
                     __global const float* x,
                     __global const float* y,
                     __global const float* t,
@@ -346,11 +380,11 @@ uchar overlap_point(int own,
        e = overlap_next_candidate(e, elements, every, lists, begin, end, grid_elements)) {
     if (e == own) continue;
     float w;
-    const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_begin, t, box_x0,
-                                     box_y0, box_x1, box_y1, &w);
+    const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_t, box_x0, box_y0,
+                                     box_x1, box_y1, &w);
     if (s < 0) continue;
     const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
-    const CurveBasis b = curve_basis(w, t[hi] - t[lo], mode);
+    const CurveBasis b = curve_basis(w, slice_t[s + 1] - slice_t[s], mode);
     bool inside, crosses;
     overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
     /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
@@ -414,6 +448,7 @@ uchar overlap_test(int v,
                    __global const float* box_y0,
                    __global const float* box_x1,
                    __global const float* box_y1,
+                   __global const float* slice_t,
                    __global const float* x,
                    __global const float* y,
                    __global const float* t,
@@ -439,7 +474,7 @@ uchar overlap_test(int v,
   *out_y = 0.0f;
   const float own_g = growth[own_slice];
   uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
-                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t, mx, my, mode,
+                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, t, mx, my, mode,
                               growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
   overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
   const float denominator = (float)(interval_points + 1);
@@ -458,7 +493,7 @@ uchar overlap_test(int v,
       curve_point(x, y, mx, my, lo, hi, k, b, &px, &py);
       curve_point(x, y, mx, my, lo, hi, kn, b, &nx, &ny);
       found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, px, py, mt, nx, ny, elements,
-                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, x, y, t,
+                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, t,
                             mx, my, mode, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
       overlap_fold(found, near2, qx, qy, px, py, &bits, &depth2, out_x, out_y);
     }

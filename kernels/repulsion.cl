@@ -238,6 +238,7 @@ __kernel void repulsion_force(const GridInfo grid,
                               __global const float* box_y0, /* input: slice_boxes */
                               __global const float* box_x1,
                               __global const float* box_y1,            /* input */
+                              __global const float* box_t,             /* input: slice_boxes' slice t */
                               __global const float* tangent_x,         /* input: curve_tangents, per vertex */
                               __global const float* tangent_y,         /* input: curve_tangents, per vertex */
                               __global const float* growth,            /* input: g per slice */
@@ -260,7 +261,7 @@ __kernel void repulsion_force(const GridInfo grid,
   float way_out_x, way_out_y;
   const uchar bits =
       overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                   box_x0, box_y0, box_x1, box_y1, x, y, t, tangent_x, tangent_y, p.motion_curve, growth,
+                   box_x0, box_y0, box_x1, box_y1, box_t, x, y, t, tangent_x, tangent_y, p.motion_curve, growth,
                    element_secondary, *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;

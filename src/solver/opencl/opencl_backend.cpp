@@ -375,8 +375,8 @@ class DeviceBackend final : public OpenclBackend {
     overlap_grid_arg_ = repulsion_force_.bind(
         grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice, w.cell_start,
         w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
-        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.tangent_x,
-        w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x,
+        b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t,
+        w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x,
         w.depth_y);
     mirror_ = p.k_mirror != 0.0f;
     wall_mirror_ = Kernel(program, "wall_mirror_force");
