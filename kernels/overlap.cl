@@ -122,37 +122,6 @@ __kernel void slice_boxes(const WorldInfo world,
   box_x0[s] = x0, box_y0[s] = y0, box_x1[s] = x1, box_y1[s] = y1;
 }
 
-/** The candidate lists of the broadphase cells a query box meets at time pt: up to four cells' lists in
- * begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells) for every element
- * (reference overlap_candidates). */
-int overlap_candidate_lists(const OverlapGridInfo grid,
-                            __global const int* grid_start,
-                            float ex0,
-                            float ex1,
-                            float ey0,
-                            float ey1,
-                            float pt,
-                            int* begin,
-                            int* end,
-                            bool* every) {
-  *every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(pt);
-  int lists = 0;
-  if (*every) return 0;
-  const int ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx);
-  const int ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
-  const int iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny);
-  const int iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
-  const int it = grid_axis_cell(pt - grid.t0, grid.cell_t, grid.nt);
-  *every = (ix1 - ix0 + 1) * (iy1 - iy0 + 1) > 4;
-  for (int iy = iy0; !*every && iy <= iy1; ++iy)
-    for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
-      const int c = (it * grid.ny + iy) * grid.nx + ix;
-      begin[lists] = grid_start[c];
-      end[lists] = grid_start[c + 1];
-    }
-  return lists;
-}
-
 /** The candidate after e: e + 1, or the smallest listed element above e; `elements` when none is left. */
 int overlap_next_candidate(int e,
                            int elements,
@@ -168,6 +137,18 @@ int overlap_next_candidate(int e,
     if (begin[l] < end[l] && grid_elements[begin[l]] < next) next = grid_elements[begin[l]];
   }
   return next;
+}
+
+/** The search of overlap_slice_pair: from slice index `start` of an element whose `count` (≥ 2)
+ * slices begin at global slice `first`, down while pt is before the slice, then up while it is after
+ * the next one. The index found never decreases as pt grows (NaN times included: a comparison with
+ * NaN stops either walk whatever pt is), so points whose times lie between two that find the same
+ * index find it too. */
+int overlap_pair_search(int first, int count, int start, float pt, __global const float* slice_t) {
+  int k = start < count - 2 ? start : count - 2;
+  while (k > 0 && pt < slice_t[first + k]) --k;
+  while (k < count - 2 && pt > slice_t[first + k + 1]) ++k;
+  return k;
 }
 
 /** Element e's slice pair around pt, searched from slice index `start` (slices stay near their rest
@@ -191,10 +172,7 @@ int overlap_slice_pair(int e,
                        float* w) {
   const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
   if (count < 2) return -1;
-  int k = start < count - 2 ? start : count - 2;
-  while (k > 0 && pt < slice_t[first + k]) --k;
-  while (k < count - 2 && pt > slice_t[first + k + 1]) ++k;
-  const int s = first + k;
+  const int s = first + overlap_pair_search(first, count, start, pt, slice_t);
   const float t0 = slice_t[s], t1 = slice_t[s + 1];
   if (!(ap_min(t0, t1) <= pt && pt <= ap_max(t0, t1))) return -1;
   const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
@@ -329,21 +307,147 @@ float overlap_way_out(__global const float* x,
   return near2;
 }
 
-/** One query point (px, py) at time pt with its boundary edge to (nx, ny) against every element but
- * `own` that the broadphase lists, in increasing order, each one's slice pair around pt searched from
- * slice index `start` (reference overlap_point and overlap_candidates).
- * Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with *near2 and the nearest way out (*qx, *qy),
- * plus AP_CONTACT_BLOCK when an element it overlaps does not give way to `own` (any, except a secondary
- * one when `own` is primary), and AP_CONTACT_YIELD when such an element is no larger (g at pt) than
- * own_g or is primary while `own` is secondary. */
-uchar overlap_point(int own,
+/* At most this many query points share one candidate walk (overlap_points). */
+#define AP_OVERLAP_BATCH 8
+
+/** What one query point found so far (reference PointOverlap). */
+typedef struct {
+  uchar overlap, inside, yield, block;
+  float near2, qx, qy;
+} OverlapFound;
+
+/** One query point (px, py) at time pt with its boundary edge to (nx, ny), its edge's box ex0…ey1,
+ * against element e's slice pair around pt searched from slice index `start`, folded into *r in the
+ * reference overlap_point's order: any crossing or inside is an overlap; e blocks unless it is
+ * secondary and `own` primary, and then yields when it is no larger (g at pt) than own_g or `own` is
+ * secondary while e is primary; of the elements it is inside, the nearest way out, the first reaching
+ * it winning. */
+void overlap_point_element(int e,
+                           bool own_secondary,
+                           float own_g,
+                           int start,
+                           float px,
+                           float py,
+                           float pt,
+                           float nx,
+                           float ny,
+                           float ex0,
+                           float ex1,
+                           float ey0,
+                           float ey1,
+                           __global const int* element_slice_begin,
+                           __global const int* slice_begin,
+                           __global const int* slice_boundary,
+                           __global const float* box_x0,
+                           __global const float* box_y0,
+                           __global const float* box_x1,
+                           __global const float* box_y1,
+                           __global const float* slice_t,
+                           __global const float* x,
+                           __global const float* y,
+                           __global const float* mx,
+                           __global const float* my,
+                           int mode,
+                           __global const float* growth,
+                           __global const uchar* element_secondary,
+                           OverlapFound* r) {
+  float w;
+  const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_t, box_x0, box_y0,
+                                   box_x1, box_y1, &w);
+  if (s < 0) return;
+  const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
+  const CurveBasis b = curve_basis(w, slice_t[s + 1] - slice_t[s], mode);
+  bool inside, crosses;
+  overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
+  /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
+   * entered. */
+  float cqx = px, cqy = py;
+  const float near2 = inside ? overlap_way_out(x, y, mx, my, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
+  if (crosses) r->overlap = 1;
+  const bool other_secondary = element_secondary[e] != 0;
+  if ((crosses || inside) && !(other_secondary && !own_secondary)) {
+    r->block = 1;
+    if ((own_secondary && !other_secondary) || !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g)) r->yield = 1;
+  }
+  if (inside && (!r->inside || near2 < r->near2)) {
+    r->overlap = 1;
+    r->inside = 1;
+    r->near2 = near2;
+    r->qx = cqx;
+    r->qy = cqy;
+  }
+}
+
+/** The broadphase lists of the cells a query box meets over the times t0 … t1: up to
+ * AP_OVERLAP_BATCH lists in begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells,
+ * more cells than lists) for every element. Every element whose slice-pair box meets the query box
+ * somewhere in t0 … t1 is listed (the cell of each coordinate never decreases as it grows). */
+int overlap_span_lists(const OverlapGridInfo grid,
+                       __global const int* grid_start,
+                       float ex0,
+                       float ex1,
+                       float ey0,
+                       float ey1,
+                       float t0,
+                       float t1,
+                       int* begin,
+                       int* end,
+                       bool* every) {
+  *every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(t0) || isnan(t1);
+  int lists = 0;
+  if (*every) return 0;
+  const int ix0 = grid_axis_cell(ex0 - grid.x0, grid.cell, grid.nx);
+  const int ix1 = grid_axis_cell(ex1 - grid.x0, grid.cell, grid.nx);
+  const int iy0 = grid_axis_cell(ey0 - grid.y0, grid.cell, grid.ny);
+  const int iy1 = grid_axis_cell(ey1 - grid.y0, grid.cell, grid.ny);
+  const int it0 = grid_axis_cell(t0 - grid.t0, grid.cell_t, grid.nt);
+  const int it1 = grid_axis_cell(t1 - grid.t0, grid.cell_t, grid.nt);
+  const int xy = (ix1 - ix0 + 1) * (iy1 - iy0 + 1);
+  *every = xy > 4 || xy * (it1 - it0 + 1) > AP_OVERLAP_BATCH;
+  for (int it = it0; !*every && it <= it1; ++it)
+    for (int iy = iy0; iy <= iy1; ++iy)
+      for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
+        const int c = (it * grid.ny + iy) * grid.nx + ix;
+        begin[lists] = grid_start[c];
+        end[lists] = grid_start[c + 1];
+      }
+  return lists;
+}
+
+/** Folds one query point's findings into v's (reference overlap_fold): the deepest point inside gives the way out. */
+void overlap_fold(const OverlapFound found,
+                  float px,
+                  float py,
+                  uchar* bits,
+                  float* depth2,
+                  float* out_x,
+                  float* out_y) {
+  if (found.overlap) *bits |= AP_CONTACT_OVERLAP;
+  if (found.yield) *bits |= AP_CONTACT_YIELD;
+  if (found.block) *bits |= AP_CONTACT_BLOCK;
+  if (!found.inside || ((*bits & AP_CONTACT_INSIDE) != 0 && !(found.near2 > *depth2))) return;
+  *bits |= AP_CONTACT_INSIDE;
+  *depth2 = found.near2;
+  *out_x = found.qx - px;
+  *out_y = found.qy - py;
+}
+
+/** `count` (≤ AP_OVERLAP_BATCH) query points of one boundary vertex, each with its edge to (nx, ny),
+ * its time pt and its pair search's start, against every element but `own` (reference overlap_point
+ * for each), folded in order into v's bits (overlap_fold). The points share one walk over the
+ * broadphase's candidates for the union of their edges' boxes over their times: an element is tried
+ * for a point only if it passes that point's own box test, and every such element is among the
+ * shared candidates, so each point finds what its own walk would, element by element in the same
+ * increasing order. */
+void overlap_points(int count,
+                    const float* px,
+                    const float* py,
+                    const float* pt,
+                    const float* nx,
+                    const float* ny,
+                    const int* start,
+                    int own,
                     float own_g,
-                    int start,
-                    float px,
-                    float py,
-                    float pt,
-                    float nx,
-                    float ny,
                     int elements,
                     __global const int* element_slice_begin,
                     __global const int* slice_begin,
@@ -355,7 +459,6 @@ uchar overlap_point(int own,
                     __global const float* slice_t,
                     __global const float* x,
                     __global const float* y,
-                    __global const float* t,
                     __global const float* mx,
                     __global const float* my,
                     int mode,
@@ -364,78 +467,59 @@ uchar overlap_point(int own,
                     const OverlapGridInfo grid,
                     __global const int* grid_start,
                     __global const int* grid_elements,
-                    float* near2_out,
-                    float* qx_out,
-                    float* qy_out) {
+                    uchar* bits,
+                    float* depth2,
+                    float* out_x,
+                    float* out_y) {
   const bool own_secondary = element_secondary[own] != 0;
-  const float ex0 = ap_min(px, nx), ex1 = ap_max(px, nx), ey0 = ap_min(py, ny), ey1 = ap_max(py, ny);
-  bool overlap = false, found_inside = false, yield = false, block = false;
-  *near2_out = 0.0f;
-  *qx_out = 0.0f;
-  *qy_out = 0.0f;
-  int begin[4], end[4];
+  float ex0[AP_OVERLAP_BATCH], ex1[AP_OVERLAP_BATCH], ey0[AP_OVERLAP_BATCH], ey1[AP_OVERLAP_BATCH];
+  OverlapFound found[AP_OVERLAP_BATCH];
+  /* The union of the edges' boxes and times; NaN anywhere makes it NaN (every element is tried). */
+  float ux0 = INFINITY, ux1 = -INFINITY, uy0 = INFINITY, uy1 = -INFINITY, ut0 = INFINITY, ut1 = -INFINITY;
+  bool nan = false;
+  for (int j = 0; j < count; ++j) {
+    ex0[j] = ap_min(px[j], nx[j]), ex1[j] = ap_max(px[j], nx[j]);
+    ey0[j] = ap_min(py[j], ny[j]), ey1[j] = ap_max(py[j], ny[j]);
+    nan = nan || isnan(ex0[j]) || isnan(ex1[j]) || isnan(ey0[j]) || isnan(ey1[j]) || isnan(pt[j]);
+    ux0 = fmin(ux0, ex0[j]), ux1 = fmax(ux1, ex1[j]), uy0 = fmin(uy0, ey0[j]), uy1 = fmax(uy1, ey1[j]);
+    ut0 = fmin(ut0, pt[j]), ut1 = fmax(ut1, pt[j]);
+    found[j].overlap = found[j].inside = found[j].yield = found[j].block = 0;
+    found[j].near2 = 0.0f, found[j].qx = 0.0f, found[j].qy = 0.0f;
+  }
+  if (nan) ux0 = NAN;
+  bool one_start = true;
+  for (int j = 1; j < count; ++j) one_start = one_start && start[j] == start[0];
+  int begin[AP_OVERLAP_BATCH], end[AP_OVERLAP_BATCH];
   bool every;
-  const int lists = overlap_candidate_lists(grid, grid_start, ex0, ex1, ey0, ey1, pt, begin, end, &every);
+  const int lists = overlap_span_lists(grid, grid_start, ux0, ux1, uy0, uy1, ut0, ut1, begin, end, &every);
   for (int e = overlap_next_candidate(-1, elements, every, lists, begin, end, grid_elements); e < elements;
        e = overlap_next_candidate(e, elements, every, lists, begin, end, grid_elements)) {
     if (e == own) continue;
-    float w;
-    const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_t, box_x0, box_y0,
-                                     box_x1, box_y1, &w);
-    if (s < 0) continue;
-    const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
-    const CurveBasis b = curve_basis(w, slice_t[s + 1] - slice_t[s], mode);
-    bool inside, crosses;
-    overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
-    /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
-     * entered. */
-    float cqx = px, cqy = py;
-    const float near2 = inside ? overlap_way_out(x, y, mx, my, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
-    if (crosses) overlap = true;
-    const bool other_secondary = element_secondary[e] != 0;
-    if ((crosses || inside) && !(other_secondary && !own_secondary)) {
-      block = true;
-      if ((own_secondary && !other_secondary) || !(growth[s] + (growth[s + 1] - growth[s]) * w > own_g)) yield = true;
+    /* When every point's pair search ends on one pair (it does at the earliest and the latest time),
+     * the union of the edges' boxes missing that pair's box means each point's box test fails. */
+    if (one_start && !nan) {
+      const int first = element_slice_begin[e], slices = element_slice_begin[e + 1] - first;
+      if (slices < 2) continue;
+      const int k = overlap_pair_search(first, slices, start[0], ut0, slice_t);
+      if (k == overlap_pair_search(first, slices, start[0], ut1, slice_t)) {
+        const int s = first + k;
+        const float bx0 = ap_min(box_x0[s], box_x0[s + 1]), bx1 = ap_max(box_x1[s], box_x1[s + 1]);
+        const float by0 = ap_min(box_y0[s], box_y0[s + 1]), by1 = ap_max(box_y1[s], box_y1[s + 1]);
+        if (ux1 < bx0 || ux0 > bx1 || uy1 < by0 || uy0 > by1) continue;
+      }
     }
-    if (inside && (!found_inside || near2 < *near2_out)) {
-      overlap = true;
-      found_inside = true;
-      *near2_out = near2;
-      *qx_out = cqx;
-      *qy_out = cqy;
-    }
+    for (int j = 0; j < count; ++j)
+      overlap_point_element(e, own_secondary, own_g, start[j], px[j], py[j], pt[j], nx[j], ny[j], ex0[j], ex1[j],
+                            ey0[j], ey1[j], element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1,
+                            box_y1, slice_t, x, y, mx, my, mode, growth, element_secondary, &found[j]);
   }
-  uchar bits = overlap ? AP_CONTACT_OVERLAP : 0;
-  if (found_inside) bits |= AP_CONTACT_INSIDE;
-  if (yield) bits |= AP_CONTACT_YIELD;
-  if (block) bits |= AP_CONTACT_BLOCK;
-  return bits;
-}
-
-/** Folds one query point's bits into v's (reference overlap_fold): the deepest point inside gives the way out. */
-void overlap_fold(uchar found,
-                  float near2,
-                  float qx,
-                  float qy,
-                  float px,
-                  float py,
-                  uchar* bits,
-                  float* depth2,
-                  float* out_x,
-                  float* out_y) {
-  if ((found & AP_CONTACT_OVERLAP) != 0) *bits |= AP_CONTACT_OVERLAP;
-  if ((found & AP_CONTACT_YIELD) != 0) *bits |= AP_CONTACT_YIELD;
-  if ((found & AP_CONTACT_BLOCK) != 0) *bits |= AP_CONTACT_BLOCK;
-  if ((found & AP_CONTACT_INSIDE) == 0 || ((*bits & AP_CONTACT_INSIDE) != 0 && !(near2 > *depth2))) return;
-  *bits |= AP_CONTACT_INSIDE;
-  *depth2 = near2;
-  *out_x = qx - px;
-  *out_y = qy - py;
+  for (int j = 0; j < count; ++j) overlap_fold(found[j], px[j], py[j], bits, depth2, out_x, out_y);
 }
 
 /** The overlap test of boundary vertex v (reference overlap_test): v, then the interval_points times
- * of each slice interval next to v that lie in the half nearer to v. Returns AP_CONTACT_OVERLAP, plus
- * AP_CONTACT_INSIDE with the way out (*out_x, *out_y) of the deepest point inside another element. */
+ * of each slice interval next to v that lie in the half nearer to v, in that order, in batches of up
+ * to AP_OVERLAP_BATCH points (overlap_points). Returns AP_CONTACT_OVERLAP, plus AP_CONTACT_INSIDE with
+ * the way out (*out_x, *out_y) of the deepest point inside another element. */
 uchar overlap_test(int v,
                    int interval_points,
                    int elements,
@@ -469,14 +553,15 @@ uchar overlap_test(int v,
   const int own_slices = element_slice_begin[own + 1] - element_slice_begin[own];
   const int per_slice = slice_begin[own_slice + 1] - own_lo;
   uchar bits = 0;
-  float depth2 = 0.0f, near2, qx, qy;
+  float depth2 = 0.0f;
   *out_x = 0.0f;
   *out_y = 0.0f;
   const float own_g = growth[own_slice];
-  uchar found = overlap_point(own, own_g, own_index, x[v], y[v], t[v], x[next], y[next], elements, element_slice_begin,
-                              slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, t, mx, my, mode,
-                              growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
-  overlap_fold(found, near2, qx, qy, x[v], y[v], &bits, &depth2, out_x, out_y);
+  float px[AP_OVERLAP_BATCH], py[AP_OVERLAP_BATCH], pt[AP_OVERLAP_BATCH], nx[AP_OVERLAP_BATCH], ny[AP_OVERLAP_BATCH];
+  int start[AP_OVERLAP_BATCH];
+  /* v itself first, sharing a batch with the points after it. */
+  px[0] = x[v], py[0] = y[v], pt[0] = t[v], nx[0] = x[next], ny[0] = y[next], start[0] = own_index;
+  int count = 1;
   const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
     const int step = side == 0 ? 1 : -1;
@@ -486,18 +571,30 @@ uchar overlap_test(int v,
     const int lo = step > 0 ? own_lo : own_lo - per_slice, hi = lo + per_slice;
     const int k = v - own_lo, kn = next - own_lo;
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
+      if (count == AP_OVERLAP_BATCH) {
+        overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
+                       slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
+                       element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+        count = 0;
+      }
       const float f = (float)j / denominator;
-      const float mt = t[v] + (t[w] - t[v]) * f;
+      pt[count] = t[v] + (t[w] - t[v]) * f;
       const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, t[hi] - t[lo], mode);
-      float px, py, nx, ny;
-      curve_point(x, y, mx, my, lo, hi, k, b, &px, &py);
-      curve_point(x, y, mx, my, lo, hi, kn, b, &nx, &ny);
-      found = overlap_point(own, own_g, step > 0 ? own_index : own_index - 1, px, py, mt, nx, ny, elements,
-                            element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, t,
-                            mx, my, mode, growth, element_secondary, grid, grid_start, grid_elements, &near2, &qx, &qy);
-      overlap_fold(found, near2, qx, qy, px, py, &bits, &depth2, out_x, out_y);
+      curve_point(x, y, mx, my, lo, hi, k, b, &px[count], &py[count]);
+      curve_point(x, y, mx, my, lo, hi, kn, b, &nx[count], &ny[count]);
+      start[count] = step > 0 ? own_index : own_index - 1;
+      ++count;
     }
+    /* A side's points lie near v and each other: one batch each, v's with the first side's. */
+    overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
+                   element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+    count = 0;
   }
+  if (count > 0)
+    overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
+                   element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
   return bits;
 }
 
