@@ -159,7 +159,9 @@ __kernel void apply_containment(const WorldInfo world,
 /** The wall as the mirror image of the element (reference wall_mirror_force): for a boundary vertex
  * inside within wall_range of its nearest wall point q, Eq. 1 at the reflection 2q − x from the element's
  * own triangles (repulsion_sum with own_only), reflected back across the wall's tangent at q and weighted
- * k_mirror; zero otherwise. One work-item per boundary vertex; step_forces adds it to the wall's force. */
+ * k_mirror; zero otherwise. One work-item per boundary vertex; step_forces adds it to the wall's force,
+ * and takes the container query made here (the one it would make itself: the same point, nearest
+ * point included) instead of making it again. */
 __kernel void wall_mirror_force(const GridInfo grid,
                                 const ForceParams p,
                                 const WorldInfo world,
@@ -187,7 +189,11 @@ __kernel void wall_mirror_force(const GridInfo grid,
                                 __global const int* container_lists,      /* input: its lists */
                                 __global float* mirror_x,
                                 __global float* mirror_y,
-                                __global float* mirror_t) { /* output: per boundary vertex */
+                                __global float* mirror_t,    /* output: per boundary vertex */
+                                __global uchar* wall_inside, /* output: its container query, per boundary vertex */
+                                __global float* wall_d2,
+                                __global float* wall_qx,
+                                __global float* wall_qy) {
   const int i = get_global_id(0);
   if (i >= boundary_count) return;
   const int v = boundary_vertices[i];
@@ -210,4 +216,8 @@ __kernel void wall_mirror_force(const GridInfo grid,
   mirror_x[v] = mx;
   mirror_y[v] = my;
   mirror_t[v] = mt;
+  wall_inside[v] = inside ? 1 : 0;
+  wall_d2[v] = d2;
+  wall_qx[v] = qx;
+  wall_qy[v] = qy;
 }

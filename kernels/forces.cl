@@ -52,6 +52,10 @@ __kernel void step_forces(const WorldInfo world,
                           __global const float* mirror_x,
                           __global const float* mirror_y,
                           __global const float* mirror_t, /* input: wall_mirror_force, when k_mirror != 0 */
+                          __global const uchar* mirror_wall_inside, /* input: its container query, the same */
+                          __global const float* mirror_wall_d2,
+                          __global const float* mirror_wall_qx,
+                          __global const float* mirror_wall_qy,
                           __global float* fx,
                           __global float* fy,
                           __global float* ft,          /* output: Eq. 7 per vertex */
@@ -68,8 +72,14 @@ __kernel void step_forces(const WorldInfo world,
   const float rpl_x = boundary ? rpl_x_in[v] : 0.0f, rpl_y = boundary ? rpl_y_in[v] : 0.0f,
               rpl_t = boundary ? rpl_t_in[v] : 0.0f, dist = boundary ? rpl_closest[v] : INFINITY;
   float wall2, wall_qx, wall_qy;
-  const bool in_container = container_query(world.segments, container_index, container_lists, px, py, boundary, seg_ax,
-                                            seg_ay, seg_bx, seg_by, &wall2, &wall_qx, &wall_qy);
+  bool in_container;
+  if (boundary && p.k_mirror != 0.0f) { /* wall_mirror_force made this query, nearest point included */
+    in_container = mirror_wall_inside[v] != 0;
+    wall2 = mirror_wall_d2[v], wall_qx = mirror_wall_qx[v], wall_qy = mirror_wall_qy[v];
+  } else {
+    in_container = container_query(world.segments, container_index, container_lists, px, py, boundary, seg_ax, seg_ay,
+                                   seg_bx, seg_by, &wall2, &wall_qx, &wall_qy);
+  }
   float edg_x, edg_y, edg_t;
   spring_force(p, v, spring_begin, spring_other, spring_class, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
   { /* F_edg = springs + the fold guard (reference step_forces) */

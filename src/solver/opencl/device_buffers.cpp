@@ -72,6 +72,8 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(vertices, "repulsion_contact");
   w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");
   w.mirror_x = scratch(fn, "mirror_x"), w.mirror_y = scratch(fn, "mirror_y"), w.mirror_t = scratch(fn, "mirror_t");
+  w.wall_inside = scratch(vertices, "wall_inside"), w.wall_d2 = scratch(fn, "wall_d2");
+  w.wall_qx = scratch(fn, "wall_qx"), w.wall_qy = scratch(fn, "wall_qy");
   w.slice_cx = scratch(fs, "slice_cx"), w.slice_cy = scratch(fs, "slice_cy");
   w.box_x0 = scratch(fs, "slice_box_x0"), w.box_y0 = scratch(fs, "slice_box_y0");
   w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");

@@ -384,7 +384,7 @@ class DeviceBackend final : public OpenclBackend {
                       w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy,
                       w.run_ct, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                       opencl::container_index_info(topo_.container.index), b.container_index, w.mirror_x, w.mirror_y,
-                      w.mirror_t);
+                      w.mirror_t, w.wall_inside, w.wall_d2, w.wall_qx, w.wall_qy);
     curve_tangents_ = Kernel(program, "curve_tangents");
     curve_tangents_.bind(world_, b.slice, b.slice_begin, b.slice_element, b.element_slice_begin, b.curve_prev,
                          b.curve_next, x_, y_, t_, w.tangent_x, w.tangent_y);
@@ -401,7 +401,8 @@ class DeviceBackend final : public OpenclBackend {
                      b.tri_c, b.tri_begin, b.tri_list, b.rest_copy_x, b.rest_copy_y, growth_, w.rpl_x, w.rpl_y, w.rpl_t,
                      w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax,
                      b.seg_ay, b.seg_bx, b.seg_by, opencl::container_index_info(topo_.container.index),
-                     b.container_index, w.slice_cx, w.slice_cy, w.mirror_x, w.mirror_y, w.mirror_t, fx_, fy_, ft_,
+                     b.container_index, w.slice_cx, w.slice_cy, w.mirror_x, w.mirror_y, w.mirror_t, w.wall_inside, w.wall_d2, w.wall_qx,
+                     w.wall_qy, fx_, fy_, ft_,
                      closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
