@@ -51,7 +51,7 @@ __kernel void step_forces(const WorldInfo world,
                           __global const float* slice_cy, /* input: slice centroids */
                           __global const float* mirror_x,
                           __global const float* mirror_y,
-                          __global const float* mirror_t, /* input: wall_mirror_force, when k_mirror != 0 */
+                          __global const float* mirror_t,           /* input: wall_mirror_force, when k_mirror != 0 */
                           __global const uchar* mirror_wall_inside, /* input: its container query, the same */
                           __global const float* mirror_wall_d2,
                           __global const float* mirror_wall_qx,

@@ -307,8 +307,10 @@ float overlap_way_out(__global const float* x,
   return near2;
 }
 
-/* At most this many query points share one candidate walk (overlap_points). */
+/* At most this many query points share one candidate walk (overlap_points), and at most this many
+ * cells' lists make up its candidates (overlap_span_lists). */
 #define AP_OVERLAP_BATCH 8
+#define AP_SPAN_LISTS 8
 
 /** What one query point found so far (reference PointOverlap). */
 typedef struct {
@@ -379,7 +381,7 @@ void overlap_point_element(int e,
 }
 
 /** The broadphase lists of the cells a query box meets over the times t0 … t1: up to
- * AP_OVERLAP_BATCH lists in begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells,
+ * AP_SPAN_LISTS lists in begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells,
  * more cells than lists) for every element. Every element whose slice-pair box meets the query box
  * somewhere in t0 … t1 is listed (the cell of each coordinate never decreases as it grows). */
 int overlap_span_lists(const OverlapGridInfo grid,
@@ -403,7 +405,7 @@ int overlap_span_lists(const OverlapGridInfo grid,
   const int it0 = grid_axis_cell(t0 - grid.t0, grid.cell_t, grid.nt);
   const int it1 = grid_axis_cell(t1 - grid.t0, grid.cell_t, grid.nt);
   const int xy = (ix1 - ix0 + 1) * (iy1 - iy0 + 1);
-  *every = xy > 4 || xy * (it1 - it0 + 1) > AP_OVERLAP_BATCH;
+  *every = xy > 4 || xy * (it1 - it0 + 1) > AP_SPAN_LISTS;
   for (int it = it0; !*every && it <= it1; ++it)
     for (int iy = iy0; iy <= iy1; ++iy)
       for (int ix = ix0; ix <= ix1; ++ix, ++lists) {
@@ -489,7 +491,7 @@ void overlap_points(int count,
   if (nan) ux0 = NAN;
   bool one_start = true;
   for (int j = 1; j < count; ++j) one_start = one_start && start[j] == start[0];
-  int begin[AP_OVERLAP_BATCH], end[AP_OVERLAP_BATCH];
+  int begin[AP_SPAN_LISTS], end[AP_SPAN_LISTS];
   bool every;
   const int lists = overlap_span_lists(grid, grid_start, ux0, ux1, uy0, uy1, ut0, ut1, begin, end, &every);
   for (int e = overlap_next_candidate(-1, elements, every, lists, begin, end, grid_elements); e < elements;

@@ -419,6 +419,29 @@ TEST_CASE("forces: folded and squeezed slice triangles, the fold guard", "[equiv
   }
 }
 
+TEST_CASE("forces: more points between slices than one batch of the kernel's shared candidate walk",
+          "[equivalence][opencl]") {
+  if (!have_devices()) return;
+  // The kernel's overlap test takes a vertex's query points in batches of at most eight (overlap_points
+  // in kernels/overlap.cl): with the most points per interval (15), 8 on each side of a slice, the vertex
+  // and the first side's points fill one batch and start another; with the fewest (1), one per side.
+  Coverage total;
+  for (const int points : {15, 1}) {
+    Params params;
+    params.forces.interval_points = points;
+    for (std::uint64_t seed = 1; seed <= 6; seed += seed_stride()) {
+      RandomWorldShape shape;
+      shape.elements = 3 + static_cast<int>(seed % 4);
+      shape.max_radius = 0.2f;
+      const Coverage c = check_forces(random_world(seed, shape), params,
+                                      std::to_string(points) + " points per interval, seed " + std::to_string(seed));
+      total.inside += c.inside, total.crossing += c.crossing;
+    }
+  }
+  CHECK(total.inside > 0);
+  CHECK(total.crossing > 0);
+}
+
 TEST_CASE("forces: one element alone", "[equivalence][opencl]") {
   if (!have_devices()) return;
   WorldBuilder b;

@@ -55,7 +55,7 @@ struct ScratchBuffers {
   cl::Buffer tangent_x, tangent_y, spline_cp, spline_z;                        // the curve between slices
   cl::Buffer mirror_x, mirror_y, mirror_t;                                     // the wall's mirror image
   cl::Buffer wall_inside, wall_d2, wall_qx, wall_qy;  // its container query, which step_forces reuses
-  cl::Buffer proposed;                                                         // growth proposals
+  cl::Buffer proposed;                                // growth proposals
 };
 
 /// Allocates the scratch for a world of `vertices` and `slices` and the collision grid `grid`.

@@ -376,8 +376,8 @@ class DeviceBackend final : public OpenclBackend {
         grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice, w.cell_start,
         w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
         b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t,
-        w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x,
-        w.depth_y);
+        w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
+        w.depth_x, w.depth_y);
     mirror_ = p.k_mirror != 0.0f;
     wall_mirror_ = Kernel(program, "wall_mirror_force");
     wall_mirror_.bind(grid_, p, world_, boundary_count_, boundary_buf_, x_, y_, t_, b.element, w.cell_start,
@@ -401,9 +401,8 @@ class DeviceBackend final : public OpenclBackend {
                      b.tri_c, b.tri_begin, b.tri_list, b.rest_copy_x, b.rest_copy_y, growth_, w.rpl_x, w.rpl_y, w.rpl_t,
                      w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y, b.target_x, b.target_y, b.target_t, b.seg_ax,
                      b.seg_ay, b.seg_bx, b.seg_by, opencl::container_index_info(topo_.container.index),
-                     b.container_index, w.slice_cx, w.slice_cy, w.mirror_x, w.mirror_y, w.mirror_t, w.wall_inside, w.wall_d2, w.wall_qx,
-                     w.wall_qy, fx_, fy_, ft_,
-                     closest_, contact_, breakdown_) -
+                     b.container_index, w.slice_cx, w.slice_cy, w.mirror_x, w.mirror_y, w.mirror_t, w.wall_inside,
+                     w.wall_d2, w.wall_qx, w.wall_qy, fx_, fy_, ft_, closest_, contact_, breakdown_) -
         1;
     integrate_ = Kernel(program, "integrate");
     integrate_.bind(world_, p, fx_, fy_, ft_, vx_, vy_, vt_, x_, y_, t_);
