@@ -125,22 +125,26 @@ __kernel void grid_scatter(const GridInfo grid,
   sorted_triangles[atomic_inc(&cursor[triangle_cell[i]])] = i;
 }
 
-/** Orders one cell's range by triangle id (insertion sort: a cell holds a few dozen triangles). */
+/** Puts ids[begin, end) in increasing order (insertion sort: a grid cell's list is a few dozen long). */
+void grid_sort_range(__global int* ids, int begin, int end) {
+  for (int k = begin + 1; k < end; ++k) {
+    const int id = ids[k];
+    int j = k - 1;
+    while (j >= begin && ids[j] > id) {
+      ids[j + 1] = ids[j];
+      --j;
+    }
+    ids[j + 1] = id;
+  }
+}
+
+/** Orders one cell's range by triangle id. */
 __kernel void grid_order_cells(const GridInfo grid,
                                __global const int* cell_start,   /* input: cells + 1 */
                                __global int* sorted_triangles) { /* in/out */
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
-  const int begin = cell_start[c], end = cell_start[c + 1];
-  for (int k = begin + 1; k < end; ++k) {
-    const int id = sorted_triangles[k];
-    int j = k - 1;
-    while (j >= begin && sorted_triangles[j] > id) {
-      sorted_triangles[j + 1] = sorted_triangles[j];
-      --j;
-    }
-    sorted_triangles[j + 1] = id;
-  }
+  grid_sort_range(sorted_triangles, cell_start[c], cell_start[c + 1]);
 }
 
 /** What the force kernels read per grid slot, copied into sorted order once per rebuild so a cell's

@@ -162,8 +162,7 @@ __kernel void overlap_grid_scatter(const int pairs,
       for (int ix = c0[0]; ix <= c1[0]; ++ix) elements[atomic_inc(&cursor[(it * g.ny + iy) * g.nx + ix])] = e;
 }
 
-/** Puts each cell's list in increasing element order (insertion sort: a cell lists a few dozen);
- * one work-item per cell. Item 0 leaves the lists' total in *total and, when it outgrew `capacity`
+/** Puts each cell's list in increasing element order (grid_sort_range); one work-item per cell. Item 0 leaves the lists' total in *total and, when it outgrew `capacity`
  * (nothing was listed), drops the grid for this step (nx = 0: every query tries every element). */
 __kernel void overlap_grid_order(const int cell_capacity,
                                  const int capacity,
@@ -178,15 +177,5 @@ __kernel void overlap_grid_order(const int cell_capacity,
     *total = all;
     if (all > capacity) grid_info->nx = 0;
   }
-  if (all > capacity) return;
-  const int begin = cell_start[c], end = cell_start[c + 1];
-  for (int k = begin + 1; k < end; ++k) {
-    const int id = elements[k];
-    int j = k - 1;
-    while (j >= begin && elements[j] > id) {
-      elements[j + 1] = elements[j];
-      --j;
-    }
-    elements[j + 1] = id;
-  }
+  if (all <= capacity) grid_sort_range(elements, cell_start[c], cell_start[c + 1]);
 }

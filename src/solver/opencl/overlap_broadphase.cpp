@@ -112,7 +112,6 @@ void OverlapBroadphase::bind(Kernel& repulsion, cl_uint first) const {
 void OverlapBroadphase::make_room(std::int32_t total) {
   if (!on_device_ || total < 0) return;
   const std::size_t need = static_cast<std::size_t>(total);
-  if (need > capacity_) ++dropped_;
   if (need + need / 3 > capacity_) set_capacity(2 * need);
 }
 

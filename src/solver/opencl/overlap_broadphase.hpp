@@ -50,11 +50,10 @@ class OverlapBroadphase {
   const cl::Buffer& total() const { return total_; }
   /// Given the total read back: when the lists came within a quarter of their room or over it, the
   /// room for twice the total. An overgrown build drops its grid (every query tries every element:
-  /// the same forces, slower); `dropped` counts the totals read back that had overgrown.
+  /// the same forces, slower).
   void make_room(std::int32_t total);
   /// Room for `entries` list entries from now on (the tests shrink it to make a build overgrow).
   void set_capacity(std::size_t entries);
-  std::uint64_t dropped() const { return dropped_; }
 
   /// The broadphase as the last build left it (read with a blocking read).
   reference::OverlapGrid read(const cl::CommandQueue& queue) const;
@@ -72,7 +71,6 @@ class OverlapBroadphase {
   // Device build only:
   cl::Buffer pair_slice_, pair_element_, count_, cursor_, block_sum_, total_;
   Kernel extent_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_;
-  std::uint64_t dropped_ = 0;
   // Host build only: what the last upload sent, kept alive for its non-blocking writes.
   reference::OverlapGrid host_;
   OverlapGridInfo host_info_{};
