@@ -73,13 +73,16 @@ void OverlapBroadphase::bind_lists() {
   order_.bind(cell_capacity_, capacity, start_, elements_, info_, total_);
 }
 
-std::vector<OverlapBroadphase::Launch> OverlapBroadphase::launches() {
-  if (!on_device_) return {};
+std::array<OverlapBroadphase::Launch, 8> OverlapBroadphase::launches() {
   const std::int32_t blocks = (cell_capacity_ + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-  return {{&extent_, AP_LOCAL_SIZE},  // one work-group
-          {&clear_, cell_capacity_},      {&count_kernel_, pairs_}, {&block_sums_, blocks},
-          {&scan_blocks_, AP_LOCAL_SIZE},  // one work-group
-          {&scan_cells_, blocks},         {&scatter_, pairs_},      {&order_, cell_capacity_}};
+  return {{{&extent_, AP_LOCAL_SIZE},  // one work-group
+           {&clear_, cell_capacity_},
+           {&count_kernel_, pairs_},
+           {&block_sums_, blocks},
+           {&scan_blocks_, AP_LOCAL_SIZE},  // one work-group
+           {&scan_cells_, blocks},
+           {&scatter_, pairs_},
+           {&order_, cell_capacity_}}};
 }
 
 void OverlapBroadphase::upload(const cl::CommandQueue& queue, const Topology& topo,

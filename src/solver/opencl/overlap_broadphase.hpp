@@ -6,6 +6,7 @@
 // elements the exact box test tries.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,8 +36,8 @@ class OverlapBroadphase {
 
   bool on_device() const { return on_device_; }
 
-  /// A device build's launches, in order (none on the host).
-  std::vector<Launch> launches();
+  /// A device build's launches, in order (on_device() only): a fixed array, so a step allocates nothing.
+  std::array<Launch, 8> launches();
 
   /// A host build: the broadphase of `boxes` (this step's, read back), uploaded without waiting; the
   /// host copies stay untouched until the next build, which the caller starts after waiting on the queue.
