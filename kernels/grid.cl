@@ -239,6 +239,39 @@ __kernel void grid_runs(const GridInfo grid,
   }
 }
 
+/* The repulsion kernel's work order on the device (src/solver/opencl/boundary_order.cpp): the boundary
+ * vertices sorted by the cell they are in, by the counting sort above run over a GridInfo whose
+ * `triangles` is the boundary vertex count. Any order gives the same forces. */
+
+/** Each boundary vertex's linear cell (as envelope_cells gives a centroid's) and a copy of the order
+ * it is sorted from; one work-item per boundary vertex. */
+__kernel void boundary_cells(const GridInfo grid,       /* grid.triangles: the boundary vertices */
+                             __global const int* order, /* input: the boundary vertices, last order */
+                             __global const float* x,
+                             __global const float* y,
+                             __global const float* t,  /* input: positions per vertex */
+                             __global int* cell,       /* output: per boundary vertex */
+                             __global int* previous) { /* output: a copy of order */
+  const int i = get_global_id(0);
+  if (i >= grid.triangles) return;
+  const int v = order[i];
+  previous[i] = v;
+  const int ix = grid_axis_cell(x[v], grid.cell, grid.n);
+  const int iy = grid_axis_cell(y[v], grid.cell, grid.n);
+  const int it = grid_axis_cell(t[v], grid.cell, grid.n);
+  cell[i] = (it * grid.n + iy) * grid.n + ix;
+}
+
+/** The new order: the vertex at each sorted index (grid_scatter and grid_order_cells sorted the indices
+ * into `previous` by cell, increasing within a cell); one work-item per boundary vertex. */
+__kernel void boundary_gather(const GridInfo grid,          /* grid.triangles: the boundary vertices */
+                              __global const int* sorted,   /* input: indices into previous, by cell */
+                              __global const int* previous, /* input: from boundary_cells */
+                              __global int* order) {        /* output: the boundary vertices */
+  const int j = get_global_id(0);
+  if (j < grid.triangles) order[j] = previous[sorted[j]];
+}
+
 /** The range of grid slots of the cells cx_lo..cx_hi in row (cy, ct), empty when the row is outside
  * the grid. Cells of one row are consecutive in the linear order, so visiting the range front to back
  * visits the cells in dx order and each cell's triangles in sorted order, as the reference's per-cell

@@ -105,6 +105,9 @@ class OpenclBackend : public Backend {
   /// and the room grows at the next statistics; the tests shrink it to reach that path. No effect on a
   /// host build.
   virtual void set_overlap_room(std::size_t entries) = 0;
+  /// The repulsion kernel's work order refreshed from the current state (on the host or the device as
+  /// grid_sort() says) and read back: the boundary vertices sorted by grid cell.
+  virtual std::vector<std::int32_t> refresh_and_read_boundary_order() = 0;
 };
 
 /// Copies topology and state to `choice.device` and builds the kernels. OpenclError on any failure

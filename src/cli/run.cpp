@@ -60,7 +60,8 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd
       ->add_option("--grid-sort", cl.pack.grid_sort,
                    "where an OpenCL device's grids are built (the collision grid's sort, the overlap test's "
-                   "broadphase): auto (device on GPUs, host on CPU devices), host or device; the results are identical")
+                   "broadphase, the repulsion order): auto (device on GPUs, host on CPU devices), host or device; the "
+                   "results are identical")
       ->check(CLI::IsMember({"auto", "host", "device"}));
 }
 

@@ -12,7 +12,10 @@ namespace animpak::opencl {
 class Kernel {
  public:
   Kernel() = default;
-  Kernel(const cl::Program& program, const char* name) : name_(name) {
+  /// `label`, when given, names it in the profile (pack --profile) in place of its OpenCL name: one
+  /// kernel bound twice, to different buffers, then shows as two rows.
+  Kernel(const cl::Program& program, const char* name, const char* label = nullptr)
+      : name_(label != nullptr ? label : name) {
     cl_int err = CL_SUCCESS;
     kernel_ = cl::Kernel(program, name, &err);
     check(err, std::string("clCreateKernel(") + name + ")");
@@ -57,6 +60,12 @@ class Kernel {
   double seconds_ = 0.0;
   std::uint64_t launches_ = 0;
   const char* phase_ = nullptr;
+};
+
+/// One launch of a fixed sequence (a device build of a grid): the kernel and its work-items.
+struct Launch {
+  Kernel* kernel;
+  std::int32_t items;
 };
 
 }  // namespace animpak::opencl

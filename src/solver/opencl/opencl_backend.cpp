@@ -2,7 +2,8 @@
 // on the device. The two grids are built either on the device (GPUs: a step then never waits for the
 // host) or on the host (CPU devices): the collision grid's stable counting sort (count → exclusive scan
 // → scatter) from the cell ids read back, and the overlap test's broadphase from the slice boxes read
-// back every step (overlap_broadphase.cpp). Statistics are per-slice reductions read on demand (every
+// back every step (overlap_broadphase.cpp), and the repulsion kernel's work order by cell, refreshed every
+// 100 steps (boundary_order.cpp). Statistics are per-slice reductions read on demand (every
 // check_interval steps), and the full state comes back only in state(). The topology and scratch
 // buffers are made in device_buffers.cpp.
 #include <algorithm>
@@ -12,6 +13,7 @@
 
 #include "../counting_sort.hpp"
 #include "animpak/error.hpp"
+#include "boundary_order.hpp"
 #include "device_buffers.hpp"
 #include "kernel.hpp"
 #include "overlap_broadphase.hpp"
@@ -83,6 +85,11 @@ class DeviceBackend final : public OpenclBackend {
     topo_buf_ = opencl::upload_topology(context_, queue_, topo_);
     allocate_scratch();
     broadphase_ = opencl::OverlapBroadphase(context_, queue_, program, topo_, scratch_, sort_ == GridSort::device);
+    std::vector<std::int32_t> boundary;
+    for (std::int32_t v = 0; v < world_.vertices; ++v)
+      if ((topo_.flags[v] & vertex_boundary) != 0) boundary.push_back(v);
+    boundary_ = opencl::BoundaryOrder(context_, queue_, program, std::move(boundary), grid_, x_, y_, t_,
+                                      sort_ == GridSort::device);
     bind_grid_kernels(program);
     bind_step_kernels(program, opencl::force_params(params));
     check(queue_.finish(), "clFinish(upload)");
@@ -113,25 +120,26 @@ class DeviceBackend final : public OpenclBackend {
     for (const Kernel* kernel : profiled_)
       out.push_back({kernel->name(), kernel->phase(), kernel->seconds(), kernel->launches()});
     // The host's share of a step: the grids when they are built on the host (the overlap broadphase
-    // from the slice boxes read back every step, the counting sort at every rebuild), the repulsion
-    // order's refresh.
+    // from the slice boxes read back every step, the counting sort at every rebuild, the repulsion
+    // order's refresh every 100 steps).
     if (host_overlap_builds_ > 0)
       out.push_back({"host: overlap broadphase", "forces", host_overlap_grid_, host_overlap_builds_});
     if (host_sorts_ > 0) out.push_back({"host: grid counting sort", "grid", host_sort_, host_sorts_});
-    out.push_back({"host: repulsion order", "transfer", host_reorder_, host_reorders_});
+    if (host_reorders_ > 0) out.push_back({"host: repulsion order", "transfer", host_reorder_, host_reorders_});
     return out;
   }
 
   void step() override {
     if (iteration_ % static_cast<std::uint64_t>(rebuild_) == 0 || !grid_built_) build_grid();
-    if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= boundary_reorder_interval) order_boundary_by_cell();
+    if (!boundary_ordered_ || iteration_ - boundary_ordered_at_ >= opencl::BoundaryOrder::interval())
+      order_boundary_by_cell();
     timed(times_.grid, slot_positions_, grid_.triangles);
     timed(times_.forces, slice_centroids_, world_.slices);
     timed(times_.forces, curve_tangents_kernel(), curve_tangents_items());
     timed(times_.forces, slice_boxes_, world_.slices);
     build_overlap_grid();
-    timed(times_.forces, repulsion_force_, boundary_count_);
-    if (mirror_) timed(times_.forces, wall_mirror_, boundary_count_);
+    timed(times_.forces, repulsion_force_, boundary_.count());
+    if (mirror_) timed(times_.forces, wall_mirror_, boundary_.count());
     timed(times_.forces, forces_, world_.vertices);
     timed(times_.integrate, integrate_, world_.vertices);
     timed(times_.constraints, constraints_, world_.slices);
@@ -205,8 +213,8 @@ class DeviceBackend final : public OpenclBackend {
     curve_tangents_kernel().run(queue_, curve_tangents_items());
     slice_boxes_.run(queue_, world_.slices);
     build_overlap_grid();
-    repulsion_force_.run(queue_, boundary_count_);
-    if (mirror_) wall_mirror_.run(queue_, boundary_count_);
+    repulsion_force_.run(queue_, boundary_.count());
+    if (mirror_) wall_mirror_.run(queue_, boundary_.count());
     forces_.run(queue_, n);
     forces_.set(0, world_);
     reference::StepForces r;
@@ -272,6 +280,14 @@ class DeviceBackend final : public OpenclBackend {
 
   void set_overlap_room(std::size_t entries) override { broadphase_.set_capacity(entries); }
 
+  std::vector<std::int32_t> refresh_and_read_boundary_order() override {
+    if (!grid_built_) build_grid();  // the grid's shape is fixed; built first as a step would
+    order_boundary_by_cell();
+    std::vector<std::int32_t> order = boundary_.read(queue_);
+    settle_times();
+    return order;
+  }
+
  private:
   // The context and an in-order, profiling queue on the chosen device; returns the built program.
   cl::Program create_queue() {
@@ -304,11 +320,6 @@ class DeviceBackend final : public OpenclBackend {
     slice_overlap_ = scratch(is, "slice_overlap");
     slice_outside_ = scratch(is, "slice_outside");
     slice_bad_ = scratch(is, "slice_bad");
-    for (std::int32_t v = 0; v < n; ++v)
-      if ((topo_.flags[v] & vertex_boundary) != 0) boundary_order_.push_back(v);
-    boundary_count_ = static_cast<std::int32_t>(boundary_order_.size());
-    boundary_key_.resize(boundary_order_.size());
-    boundary_buf_ = upload(boundary_order_, "boundary_vertices");
   }
 
   // The device scratch (device_buffers.cpp) and the host arrays the host sort and the broadphase fill.
@@ -373,14 +384,14 @@ class DeviceBackend final : public OpenclBackend {
     repulsion_force_ = Kernel(program, "repulsion_force");
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ = repulsion_force_.bind(
-        grid_, p, boundary_count_, world_.elements, boundary_buf_, x_, y_, t_, b.element, b.slice, w.cell_start,
+        grid_, p, boundary_.count(), world_.elements, boundary_.buffer(), x_, y_, t_, b.element, b.slice, w.cell_start,
         w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
         b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t,
         w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
         w.depth_x, w.depth_y);
     mirror_ = p.k_mirror != 0.0f;
     wall_mirror_ = Kernel(program, "wall_mirror_force");
-    wall_mirror_.bind(grid_, p, world_, boundary_count_, boundary_buf_, x_, y_, t_, b.element, w.cell_start,
+    wall_mirror_.bind(grid_, p, world_, boundary_.count(), boundary_.buffer(), x_, y_, t_, b.element, w.cell_start,
                       w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy,
                       w.run_ct, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                       opencl::container_index_info(topo_.container.index), b.container_index, w.mirror_x, w.mirror_y,
@@ -477,30 +488,20 @@ class DeviceBackend final : public OpenclBackend {
     pending_.clear();
   }
 
-  // The repulsion kernel's work-items in the order of their vertices' grid cells, so that the items of
-  // one work-group (a GPU warp) walk the same cell rows in step instead of diverging. Any order gives
-  // the same forces, since each item writes only its own vertex; the positions read back for this
-  // cost one transfer every boundary_reorder_interval steps.
+  // The repulsion kernel's work-items in the order of their vertices' grid cells (boundary_order.hpp):
+  // on the device, or on the host from the positions read back (one transfer every 100 steps).
   void order_boundary_by_cell() {
-    const std::size_t n = static_cast<std::size_t>(world_.vertices);
-    std::vector<float> px(n), py(n), pt(n);
-    read(x_, px, "x"), read(y_, py, "y"), read(t_, pt, "t", true);
-    settle_times();
-    PhaseStopwatch w(times_.transfer), own(host_reorder_);
-    ++host_reorders_;
-    for (std::size_t i = 0; i < boundary_order_.size(); ++i) {
-      const std::int32_t v = boundary_order_[i];
-      const std::int32_t cx = reference::grid_axis_cell(px[v], grid_.cell, grid_.n),
-                         cy = reference::grid_axis_cell(py[v], grid_.cell, grid_.n),
-                         ct = reference::grid_axis_cell(pt[v], grid_.cell, grid_.n);
-      boundary_key_[i] = {(ct * grid_.n + cy) * grid_.n + cx, v};
+    if (boundary_.on_device()) {
+      for (const opencl::Launch& l : boundary_.launches()) timed(times_.grid, *l.kernel, l.items);
+    } else {
+      const std::size_t n = static_cast<std::size_t>(world_.vertices);
+      std::vector<float> px(n), py(n), pt(n);
+      read(x_, px, "x"), read(y_, py, "y"), read(t_, pt, "t", true);
+      settle_times();
+      PhaseStopwatch w(times_.transfer), own(host_reorder_);
+      ++host_reorders_;
+      boundary_.sort_on_host(queue_, px, py, pt);
     }
-    std::sort(boundary_key_.begin(), boundary_key_.end());
-    for (std::size_t i = 0; i < boundary_key_.size(); ++i) boundary_order_[i] = boundary_key_[i].second;
-    if (!boundary_order_.empty())
-      check(queue_.enqueueWriteBuffer(boundary_buf_, CL_FALSE, 0, sizeof(std::int32_t) * boundary_order_.size(),
-                                      boundary_order_.data()),
-            "clEnqueueWriteBuffer(boundary_vertices)");
     boundary_ordered_ = true;
     boundary_ordered_at_ = iteration_;
   }
@@ -546,8 +547,7 @@ class DeviceBackend final : public OpenclBackend {
   // boxes read back.
   void build_overlap_grid() {
     if (broadphase_.on_device()) {
-      for (const opencl::OverlapBroadphase::Launch& l : broadphase_.launches())
-        timed(times_.forces, *l.kernel, l.items);
+      for (const opencl::Launch& l : broadphase_.launches()) timed(times_.forces, *l.kernel, l.items);
     } else {
       ScratchBuffers& w = scratch_;
       read(w.box_x0, boxes_.x0, "slice_box_x0"), read(w.box_y0, boxes_.y0, "slice_box_y0");
@@ -571,12 +571,8 @@ class DeviceBackend final : public OpenclBackend {
   int rebuild_;
   GridSort sort_;
   bool grid_built_ = false;
-  std::int32_t boundary_count_ = 0;
-  static constexpr std::uint64_t boundary_reorder_interval = 100;
   bool boundary_ordered_ = false;
   std::uint64_t boundary_ordered_at_ = 0;
-  std::vector<std::int32_t> boundary_order_;  ///< host copy of boundary_buf_, kept alive for its async upload
-  std::vector<std::pair<std::int32_t, std::int32_t>> boundary_key_;
   WorldInfo world_{};
   GridInfo grid_{};
   std::size_t spring_count_ = 0;
@@ -585,7 +581,6 @@ class DeviceBackend final : public OpenclBackend {
   TopologyBuffers topo_buf_;  ///< held here: clSetKernelArg does not retain a buffer
   ScratchBuffers scratch_;
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
-  cl::Buffer boundary_buf_;
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
@@ -598,6 +593,7 @@ class DeviceBackend final : public OpenclBackend {
   cl_int curve_mode_ = 0;        ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
   reference::SliceBoxes boxes_;  ///< read back for a host build of the broadphase
   opencl::OverlapBroadphase broadphase_;
+  opencl::BoundaryOrder boundary_;  ///< the repulsion kernel's work order
   std::vector<std::int32_t> cells_, cell_start_, sorted_;
   struct Pending {
     double* sink;  // the phase's total

@@ -73,7 +73,7 @@ void OverlapBroadphase::bind_lists() {
   order_.bind(cell_capacity_, capacity, start_, elements_, info_, total_);
 }
 
-std::array<OverlapBroadphase::Launch, 8> OverlapBroadphase::launches() {
+std::array<Launch, 8> OverlapBroadphase::launches() {
   const std::int32_t blocks = (cell_capacity_ + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
   return {{{&extent_, AP_LOCAL_SIZE},  // one work-group
            {&clear_, cell_capacity_},

@@ -18,12 +18,6 @@ namespace animpak::opencl {
 
 class OverlapBroadphase {
  public:
-  /// One kernel launch of a device build.
-  struct Launch {
-    Kernel* kernel;
-    std::int32_t items;
-  };
-
   OverlapBroadphase() = default;
   /// The buffers for `topo`'s slice pairs, and on the device its kernels bound to the slice boxes in
   /// `scratch` (slice_boxes fills them before each build).

@@ -1,0 +1,64 @@
+// The repulsion kernel's work order for the OpenCL backend (docs/architecture.md, "The repulsion
+// order"): the boundary vertices sorted by the collision-grid cell they are in, so that the work-items
+// of one work-group (a GPU warp) walk the same cell rows in step instead of diverging, refreshed every
+// `interval()` steps as the vertices move. Any order gives the same forces, since each work-item writes
+// only its own vertex. Sorted either on the host from the positions read back (CPU devices, where the
+// read costs little) or on the device by the collision grid's counting-sort kernels (GPUs, where a
+// blocking read stops the queue).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "kernel.hpp"
+
+namespace animpak::opencl {
+
+class BoundaryOrder {
+ public:
+  BoundaryOrder() = default;
+  /// The boundary vertices in `boundary`'s order, uploaded; on the device, its sort's kernels bound to
+  /// the positions x, y, t and the collision grid's shape `grid`.
+  BoundaryOrder(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
+                std::vector<std::int32_t> boundary, const GridInfo& grid, const cl::Buffer& x, const cl::Buffer& y,
+                const cl::Buffer& t, bool on_device);
+  BoundaryOrder(const BoundaryOrder&) = delete;
+  BoundaryOrder& operator=(const BoundaryOrder&) = delete;
+  BoundaryOrder(BoundaryOrder&&) = default;
+  BoundaryOrder& operator=(BoundaryOrder&&) = default;
+
+  /// Steps between refreshes: the vertices move little in that many steps.
+  static constexpr std::uint64_t interval() { return 100; }
+
+  bool on_device() const { return on_device_; }
+  std::int32_t count() const { return count_; }
+  /// The boundary vertices in the current order: the repulsion and wall-image kernels' work list.
+  const cl::Buffer& buffer() const { return order_; }
+
+  /// A device refresh's launches, in order (on_device() only): a fixed array, so nothing is allocated.
+  std::array<Launch, 9> launches();
+
+  /// A host refresh from every vertex's position (read back), uploaded without waiting; the host copy
+  /// stays untouched until the next refresh, which the caller starts after waiting on the queue.
+  void sort_on_host(const cl::CommandQueue& queue, const std::vector<float>& x, const std::vector<float>& y,
+                    const std::vector<float>& t);
+
+  /// The current order (a blocking read).
+  std::vector<std::int32_t> read(const cl::CommandQueue& queue) const;
+
+ private:
+  bool on_device_ = false;
+  std::int32_t count_ = 0;
+  GridInfo grid_{};  ///< the collision grid's shape, with `triangles` the boundary vertex count
+  cl::Buffer order_;
+  // Host refresh only: the order last uploaded, kept alive for its non-blocking write, and the keys.
+  std::vector<std::int32_t> host_;
+  std::vector<std::pair<std::int32_t, std::int32_t>> keys_;
+  // Device refresh only:
+  cl::Buffer cell_, previous_, sorted_, count_buf_, block_sum_, cell_start_, cursor_;
+  Kernel cells_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_kernel_, gather_;
+};
+
+}  // namespace animpak::opencl
