@@ -14,7 +14,7 @@
 
 namespace animpak {
 
-inline constexpr std::uint32_t checkpoint_version = 3;
+inline constexpr std::uint32_t checkpoint_version = 4;
 
 struct Checkpoint {
   std::string scene_text;            ///< the scene file's contents when the packing started

@@ -70,9 +70,9 @@ struct NamedStateScalar {
   double value(const SimState& s) const;
 };
 
-/// Every scalar of a SimState: iteration, settling_since, secondary_since, mark_iteration, mark_growth.
-/// With state_arrays it covers every member: compare.cpp fails to compile when one is added to SimState
-/// but to neither table.
-extern const std::array<NamedStateScalar, 5> state_scalars;
+/// Every scalar of a SimState: iteration, settling_since, secondary_since, mark_iteration, mark_growth,
+/// mark_growth_1 … 3. With state_arrays it covers every member: compare.cpp fails to compile when one is
+/// added to SimState but to neither table.
+extern const std::array<NamedStateScalar, 8> state_scalars;
 
 }  // namespace animpak

@@ -88,8 +88,9 @@ struct Params {
     double stop_growth = 0.0;      ///< also stop when every slice's g exceeds this (0: off)
     int max_iterations = 100000;   ///< hard cap on steps
     int settle_iterations = 3000;  ///< after the gap test passes, steps without growth to clear overlaps
-    int stall_window = 1000;       ///< the stall test compares the mean g this many steps apart (0: off)
-    double stall_growth = 0.01;    ///< growth has stalled when the mean g rose by less than this share in a window
+    int stall_window = 400;        ///< the stall test compares the mean g this many steps apart (0: off)
+    double stall_growth = 0.004;   ///< growth has stalled when the mean g rose by less than this share in a window
+    int stall_tests = 4;           ///< the stall test runs this many times per window (1 to 4)
     int check_interval = 10;       ///< NaN/Inf check and statistics every k steps
   };
 

@@ -31,7 +31,7 @@ struct StopEstimate {
 /// left"). While most slices grow freely, from the container's share the meshes fill at g = 1
 /// (unit_mesh_density): they grow until they fill about 0.6 of it. Once they meet, from the stall test's
 /// own windows: each window's rise of the mean g decays by the ratio of the last two, until one rises by
-/// less than stall_growth. Either way §5.3's gap test can come first (the largest gap's exponential fall
+/// less than stall_growth (the test itself replayed at its stall_tests marks per window). Either way §5.3's gap test can come first (the largest gap's exponential fall
 /// over the last two windows, to stop_gap), and settling adds a share. The pace of the last half window, scaled by the growth still to
 /// come, gives the seconds. Nothing (nullopt) until enough samples.
 class StopModel {

@@ -106,9 +106,9 @@ class Backend {
   /// Lets the secondary elements grow (docs/parameters.md, "Secondary elements"), recorded in the state's
   /// secondary_since. False, changing nothing, when the world has none or they already grow.
   virtual bool start_secondary_growth() = 0;
-  /// Records the stall test's progress mark in the state (mark_iteration, mark_growth), so a resumed
-  /// run tests at the same iterations.
-  virtual void set_progress_mark(std::uint64_t iteration, double mean_growth) = 0;
+  /// Records the stall test's progress marks in the state (mark_iteration, mark_growth and
+  /// mark_growth_1 … 3 from `marks`), so a resumed run tests at the same iterations against the same marks.
+  virtual void set_progress_mark(const SimState& marks) = 0;
   /// Phase times so far. A device backend adds a launch's time once it has completed: call finish()
   /// before reading them (statistics() and state() finish too).
   virtual const PhaseTimes& times() const = 0;

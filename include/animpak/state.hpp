@@ -151,10 +151,23 @@ struct SimState {
   /// elements"), or 0 while they are held at their start size (or the world has none).
   std::uint64_t secondary_since = 0;
   /// The run's last progress mark (docs/parameters.md, "Stop test"): the iteration (0: none yet) and the
-  /// mean g of all slices then. The stall test compares the mean g a window later with it.
+  /// mean g of all slices then. The stall test runs stall_tests times per stall_window, one test's
+  /// spacing after the last mark, and compares the mean g with the mark one window back.
   std::uint64_t mark_iteration = 0;
   double mark_growth = 0.0;
+  /// The mean g at the marks one, two and three tests before the last (0: no such mark yet).
+  double mark_growth_1 = 0.0, mark_growth_2 = 0.0, mark_growth_3 = 0.0;
 };
+
+/// Copies the stall test's progress marks (mark_iteration, mark_growth, mark_growth_1 … 3) of `from`
+/// into `to`, the rest of `to` as it is.
+inline void copy_progress_marks(const SimState& from, SimState& to) {
+  to.mark_iteration = from.mark_iteration;
+  to.mark_growth = from.mark_growth;
+  to.mark_growth_1 = from.mark_growth_1;
+  to.mark_growth_2 = from.mark_growth_2;
+  to.mark_growth_3 = from.mark_growth_3;
+}
 
 /// §5.3: the rest length of CSR slot `slot` of vertex `v`: the distance between the spring's two ends
 /// in the rest copy, each end's slice scaled by its g about that slice's rest copy centroid. Time

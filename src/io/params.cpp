@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 51> table{{
+const std::array<ParamInfo, 52> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -136,9 +136,12 @@ const std::array<ParamInfo, 51> table{{
     {"settle_iterations", "stop", field<&Params::stop, &Params::Stop::settle_iterations>(), 0, 100000000,
      "steps without growth to clear overlaps at the end", "not in the paper"},
     {"stall_window", "stop", field<&Params::stop, &Params::Stop::stall_window>(), 0, 100000000,
-     "steps between the stall test's comparisons; 0 turns it off", "not in the paper"},
+     "steps over which the stall test measures the rise of the mean g; 0 turns it off", "not in the paper"},
     {"stall_growth", "stop", field<&Params::stop, &Params::Stop::stall_growth>(), 0.0, inf,
-     "mean g must rise by this share per window, or growth has stalled", "not in the paper"},
+     "mean g must rise by this share over a window, or growth has stalled", "not in the paper"},
+    {"stall_tests", "stop", field<&Params::stop, &Params::Stop::stall_tests>(), 1, 4,
+     "the stall test runs this many times per window, each over the last stall_window steps; 1: once per window",
+     "not in the paper"},
     {"check_interval", "stop", field<&Params::stop, &Params::Stop::check_interval>(), 1, 100000,
      "NaN check and statistics every k steps", "none"},
 }};

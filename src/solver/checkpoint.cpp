@@ -101,6 +101,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c) {
   w.put<std::uint64_t>(c.state.secondary_since);
   w.put<std::uint64_t>(c.state.mark_iteration);
   w.put<double>(c.state.mark_growth);
+  for (const double m : {c.state.mark_growth_1, c.state.mark_growth_2, c.state.mark_growth_3}) w.put<double>(m);
   for (const auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
                         &c.state.growth})
     w.put_array(*a);
@@ -128,10 +129,12 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
     throw InputError(name + ": ends early (truncated); the state file is damaged, pack the scene again");
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
-  // Version 2 is version 3 without secondary_since (it had no secondary elements).
-  if (version != checkpoint_version && version != 2)
-    throw InputError(name + ": state format version " + std::to_string(version) + ", this animpak reads version " +
-                     std::to_string(checkpoint_version) + "; pack the scene again with this version");
+  // Version 2 is version 3 without secondary_since (it had no secondary elements); version 3 is version 4
+  // without the stall test's earlier marks (it tested once per window: a resumed run starts them afresh).
+  if (version < 2 || version > checkpoint_version)
+    throw InputError(name + ": state format version " + std::to_string(version) +
+                     ", this animpak reads versions 2 to " + std::to_string(checkpoint_version) +
+                     "; pack the scene again with this version");
   const std::size_t body = bytes.size() - sizeof(std::uint64_t);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + body, sizeof stored);
@@ -150,6 +153,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& file) {
   if (version >= 3) c.state.secondary_since = r.get<std::uint64_t>();
   c.state.mark_iteration = r.get<std::uint64_t>();
   c.state.mark_growth = r.get<double>();
+  if (version >= 4)
+    for (double* m : {&c.state.mark_growth_1, &c.state.mark_growth_2, &c.state.mark_growth_3}) *m = r.get<double>();
   for (auto* a : {&c.state.x, &c.state.y, &c.state.t, &c.state.vx, &c.state.vy, &c.state.vt, &c.state.spring_rest,
                   &c.state.growth})
     *a = r.get_array<float>();

@@ -60,11 +60,14 @@ const std::array<NamedStateArray, 8> state_arrays = {{{"x", &SimState::x, "verte
                                                       {"spring_rest", &SimState::spring_rest, "slot"},
                                                       {"growth", &SimState::growth, "slice"}}};
 
-const std::array<NamedStateScalar, 5> state_scalars = {{{"iteration", &SimState::iteration},
+const std::array<NamedStateScalar, 8> state_scalars = {{{"iteration", &SimState::iteration},
                                                         {"settling_since", &SimState::settling_since},
                                                         {"secondary_since", &SimState::secondary_since},
                                                         {"mark_iteration", &SimState::mark_iteration},
-                                                        {"mark_growth", &SimState::mark_growth}}};
+                                                        {"mark_growth", &SimState::mark_growth},
+                                                        {"mark_growth_1", &SimState::mark_growth_1},
+                                                        {"mark_growth_2", &SimState::mark_growth_2},
+                                                        {"mark_growth_3", &SimState::mark_growth_3}}};
 
 // SimState's members are all 8-byte aligned, so it has no padding and its size is the sum of its
 // members': a member added to it, and to neither table above, breaks this sum.

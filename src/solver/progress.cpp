@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace animpak {
 namespace {
@@ -61,23 +62,31 @@ std::optional<StopEstimate> StopModel::estimate() const {
   const ProgressSample& last = samples_.back();
   const auto window = static_cast<std::uint64_t>(stop_.stall_window);
   const double now = double(last.iteration);
-  // Replay the stall test over the samples seen (run_simulation's marks: one window in, then one window
-  // after each mark), keeping each mark's mean g.
+  // Replay the stall test over the samples seen (run_simulation's: stall_tests marks per window, each
+  // test against the mark a window back), keeping the marks a whole window apart for the model below.
+  const std::size_t tests = static_cast<std::size_t>(std::clamp(stop_.stall_tests, 1, 4));
+  const std::uint64_t spacing = std::max<std::uint64_t>(1, window / tests);
   std::vector<std::pair<std::uint64_t, double>> marks;
-  std::uint64_t mark = 0, secondary_since = 0;
-  double mark_growth = 0.0;
+  std::vector<double> recent;  // the mean g at the marks since a window ago, oldest first
+  std::uint64_t last_test = 0, secondary_since = 0;
+  std::uint64_t contact_since = std::numeric_limits<std::uint64_t>::max();  // the first sample not free
   bool secondary_started = false;
   for (const ProgressSample& s : samples_) {
-    if (s.iteration < mark + window) continue;
-    const bool stalled = mark != 0 && !(s.mean_growth > mark_growth * (1.0 + stop_.stall_growth));
+    if (s.growing_share < kFreeGrowingShare) contact_since = std::min(contact_since, s.iteration);
+    if (s.iteration < last_test + spacing) continue;
+    const bool stalled = recent.size() == tests && !(s.mean_growth > recent.front() * (1.0 + stop_.stall_growth));
     if (stalled && has_secondary_ && !secondary_started) {
-      secondary_started = true, secondary_since = s.iteration, marks.clear();
+      secondary_started = true, secondary_since = s.iteration, marks.clear(), recent.clear();
     } else if (stalled) {
       return StopEstimate{last.iteration, 0.0, false};  // settling now
     }
-    mark = s.iteration, mark_growth = s.mean_growth;
-    marks.emplace_back(mark, mark_growth);
+    last_test = s.iteration;
+    recent.push_back(s.mean_growth);
+    if (recent.size() > tests) recent.erase(recent.begin());
+    if (marks.empty() || s.iteration >= marks.back().first + window) marks.emplace_back(s.iteration, s.mean_growth);
   }
+  const std::uint64_t mark = marks.empty() ? 0 : marks.back().first;
+  const double mark_growth = marks.empty() ? 0.0 : marks.back().second;
   const bool secondary_pending = has_secondary_ && !secondary_started;
   const ProgressSample& p = samples_[samples_back(samples_, window / 2)];
   const double pace =
@@ -116,11 +125,18 @@ std::optional<StopEstimate> StopModel::estimate() const {
   }
   if (stop < 0 && (marks.size() >= 2 || secondary_started)) {
     // Contact: each stall window's rise of ln g is the last one's times a decay q, stepped forward until
-    // one rises by less than stall_growth. The current window counts once it is a third done.
+    // one rises by less than stall_growth. The current window counts once it is a third done. q comes
+    // from the last two windows once the elements are in contact: a window of free growth rises at the
+    // growth rate, not at a rate that decays (with windows of 400 steps, the default example's 0.13.0
+    // trace put the end at 1.6 of the real one from the last free windows' ratio).
     std::vector<double> rises;
-    for (std::size_t i = 1; i < marks.size(); ++i) rises.push_back(std::log(marks[i].second / marks[i - 1].second));
+    std::size_t contact_rises = 0;
+    for (std::size_t i = 1; i < marks.size(); ++i) {
+      rises.push_back(std::log(marks[i].second / marks[i - 1].second));
+      contact_rises = marks[i - 1].first >= contact_since ? contact_rises + 1 : 0;
+    }
     const bool current = into >= 0.3 * double(window);
-    double q = rises.size() >= 2 && rises[rises.size() - 2] > 0 ? rises.back() / rises[rises.size() - 2] : 0;
+    double q = contact_rises >= 2 && rises[rises.size() - 2] > 0 ? rises.back() / rises[rises.size() - 2] : 0;
     if (!(q > 0)) q = kDefaultWindowDecay;
     q = std::min(q, kMaxWindowDecay);
     double rise = current ? std::log(last.mean_growth / mark_growth) * double(window) / into

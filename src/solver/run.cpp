@@ -1,5 +1,6 @@
 #include "animpak/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace animpak {
@@ -59,21 +60,32 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     // spills (docs/parameters.md, "Stop test"), so a packing that stops is one the solver sees as correct.
     const bool clean = result.last.overlapping_vertices == 0 && result.last.outside_vertices == 0;
     std::uint64_t settling_since = result.last_good.settling_since;
-    // The stall test's progress mark, here and in the state the backend saves.
-    const auto mark_progress = [&] {
-      backend.set_progress_mark(iteration, result.last.mean_growth);
-      result.last_good.mark_iteration = iteration;
-      result.last_good.mark_growth = result.last.mean_growth;
+    // The stall test's progress mark, here and in the state the backend saves: the mean g now, the
+    // marks before it moved one back (`fresh`: none before it, as when the secondary elements start).
+    const auto mark_progress = [&](bool fresh) {
+      SimState& m = result.last_good;
+      m.mark_growth_3 = fresh ? 0.0 : m.mark_growth_2;
+      m.mark_growth_2 = fresh ? 0.0 : m.mark_growth_1;
+      m.mark_growth_1 = fresh || m.mark_iteration == 0 ? 0.0 : m.mark_growth;
+      m.mark_iteration = iteration;
+      m.mark_growth = result.last.mean_growth;
+      backend.set_progress_mark(m);
     };
     // Growth can also stall short of the gap test, in a steady exchange of slices that grow into a
     // neighbour and shrink back: the mean g then no longer rises over a window of stall_window steps.
+    // The test runs stall_tests times per window, a mark each time, and compares the mean g with the
+    // mark one window back (docs/parameters.md, "Stop test").
     bool stalled = false;
     const auto window = static_cast<std::uint64_t>(params.stop.stall_window);
-    if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + window) {
-      const SimState& mark = result.last_good;
-      stalled =
-          mark.mark_iteration != 0 && !(result.last.mean_growth > mark.mark_growth * (1.0 + params.stop.stall_growth));
-      if (!stalled) mark_progress();
+    const int tests = std::clamp(params.stop.stall_tests, 1, 4);
+    const std::uint64_t spacing = std::max<std::uint64_t>(1, window / static_cast<std::uint64_t>(tests));
+    if (settling_since == 0 && window > 0 && iteration >= result.last_good.mark_iteration + spacing) {
+      const SimState& m = result.last_good;
+      const double back[4] = {m.mark_iteration != 0 ? m.mark_growth : 0.0, m.mark_growth_1, m.mark_growth_2,
+                              m.mark_growth_3};
+      const double window_ago = back[tests - 1];  // 0: the run is not a window in yet
+      stalled = window_ago > 0.0 && !(result.last.mean_growth > window_ago * (1.0 + params.stop.stall_growth));
+      if (!stalled) mark_progress(false);
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
     const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop.stop_gap);
@@ -82,7 +94,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       // then they grow, and the stall test starts a fresh window for them.
       if (backend.start_secondary_growth()) {
         result.last_good.secondary_since = iteration;
-        mark_progress();
+        mark_progress(true);
         continue;
       }
       if (clean) {

@@ -102,10 +102,10 @@ TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer 
   CHECK_THAT(checksum.err, Contains("checksum mismatch"));
 
   std::string newer = good;
-  newer[8] = 4;  // the little-endian u32 version right after the 8 magic bytes
+  newer[8] = 5;  // the little-endian u32 version right after the 8 magic bytes
   const CommandResult version = render_state(box, newer);
   CHECK(version.code == 2);
-  CHECK_THAT(version.err, Contains("state format version 4") && Contains("reads version 3"));
+  CHECK_THAT(version.err, Contains("state format version 5") && Contains("reads versions 2 to 4"));
 }
 
 TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them, no SCENE nor --resume exits 1") {

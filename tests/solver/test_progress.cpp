@@ -26,18 +26,20 @@ struct Trace {
   std::vector<ProgressSample> rows;
 };
 
-// The stop test with this stall window and growth. Before 0.10.0 the stall test compared windows of
-// 1,000 steps against a 1 % rise: the traces recorded then carry no "# stall:" line, and the model's
-// arithmetic below is worked out by hand for those windows.
-Params::Stop stall_test(int window, double growth) {
+// The stop test with this stall window, growth and tests per window. Before 0.10.0 the stall test
+// compared windows of 1,000 steps against a 1 % rise: the traces recorded then carry no "# stall:" line,
+// and the model's arithmetic below is worked out by hand for those windows. Before 0.13.0 it tested once
+// per window: the traces recorded then give no third number.
+Params::Stop stall_test(int window, double growth, int tests = 1) {
   Params::Stop stop;
   stop.stall_window = window;
   stop.stall_growth = growth;
+  stop.stall_tests = tests;
   return stop;
 }
 
 // A trace: comment lines (the command, "# unit_mesh_density: D" of its world, and "# stall: WINDOW
-// GROWTH", the run's stall_window and stall_growth), the columns of stats.json's "progress" rows, then
+// GROWTH [TESTS]", the run's stall_window, stall_growth and stall_tests), the columns of stats.json's "progress" rows, then
 // the rows.
 Trace read_trace(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -53,10 +55,11 @@ Trace read_trace(const std::filesystem::path& file) {
     if (line.rfind("# secondary: ", 0) == 0) trace.secondary = true;
     if (line.rfind("# stall: ", 0) == 0) {
       std::istringstream stall(line.substr(9));
-      int window = 0;
+      int window = 0, tests = 1;
       double growth = 0;
       REQUIRE(stall >> window >> growth);
-      trace.stop = stall_test(window, growth);
+      if (!(stall >> tests)) tests = 1;
+      trace.stop = stall_test(window, growth, tests);
     }
     if (line.empty() || line[0] == '#') continue;
     if (!header) {
@@ -174,6 +177,27 @@ TEST_CASE("progress: once the elements meet, the stall windows' rises decay unti
   const std::optional<StopEstimate> c = closing.estimate();
   REQUIRE(c.has_value());
   CHECK(double(c->iteration) == Approx((2100 + 1000 * std::log(0.02 / 0.006)) * 1.04).epsilon(0.002));
+}
+
+TEST_CASE("progress: a stall test run four times a window is replayed at its own marks") {
+  // g rises 0.001 a step to 3.05 at 2050, then stays. Four tests per 400-step window test every 100
+  // steps against the mark 400 back: 2400 against 2000's 3.0 (a 1.7 % rise) grows on, 2500 against
+  // 2100's 3.05 stalls. One test per window tests at 2400 (against 2000) and next at 2800.
+  auto sample = [](std::uint64_t i) {
+    return ProgressSample{i, 0.01 * double(i), 1.0 + 0.001 * double(std::min<std::uint64_t>(i, 2050)), 0.5, 0.02, 0, 0};
+  };
+  StopModel quarters(stall_test(400, 0.004, 4), false, 0.1);
+  StopModel once(stall_test(400, 0.004, 1), false, 0.1);
+  for (std::uint64_t i = 10; i <= 2490; i += 10) quarters.observe(sample(i)), once.observe(sample(i));
+  REQUIRE(quarters.estimate().has_value());
+  CHECK(quarters.estimate()->iteration > 2490);  // not stalled yet
+  quarters.observe(sample(2500)), once.observe(sample(2500));
+  const std::optional<StopEstimate> q = quarters.estimate(), o = once.estimate();
+  REQUIRE(q.has_value());
+  REQUIRE(o.has_value());
+  CHECK(q->iteration == 2500);  // settling now
+  CHECK(q->seconds_left == 0.0);
+  CHECK(o->iteration > 2500);
 }
 
 TEST_CASE("progress: once growth has stopped, the settling left") {

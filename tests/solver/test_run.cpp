@@ -35,10 +35,7 @@ class ScriptedBackend final : public Backend {
     state_.secondary_since = state_.iteration;
     return true;
   }
-  void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
-    state_.mark_iteration = iteration;
-    state_.mark_growth = mean_growth;
-  }
+  void set_progress_mark(const SimState& marks) override { copy_progress_marks(marks, state_); }
   const PhaseTimes& times() const override { return times_; }
   const SimState& current() const { return state_; }
 
@@ -62,6 +59,7 @@ Params run_params() {
   p.stop.check_interval = 10;
   p.stop.stall_window = 100;
   p.stop.stall_growth = 0.01;
+  p.stop.stall_tests = 1;
   p.stop.settle_iterations = 300;
   return p;
 }
@@ -98,6 +96,50 @@ TEST_CASE("run: growth that stalls short of the gap test settles and stops as st
   CHECK(r.last_good.settling_since == 500);
   CHECK(r.last_good.iteration == 560);
   CHECK(r.last_good.secondary_since == 0);  // no secondary elements: the stall settles at once
+}
+
+TEST_CASE("run: a stall test run four times a window stalls sooner after the rise ends") {
+  // Mean g rises 0.01 a step to 5.3 at 430, then stays; windows of 80 steps, a 1 % rise. Four tests per
+  // window test every 20 steps against the mark 80 back: 500 against 420's 5.2 (1.9 %) grows on, 520
+  // against 440's 5.3 stalls. One test per window tests at 480 (against 400's 5.0) and 560 (480's 5.3).
+  for (const int tests : {4, 1}) {
+    Params p = run_params();
+    p.stop.stall_window = 80;
+    p.stop.stall_tests = tests;
+    ScriptedBackend b([](std::uint64_t i, bool settling) {
+      return growing(1.0 + 0.01 * double(std::min<std::uint64_t>(i, 430)), 0.02f, settling ? 0 : 3);
+    });
+    const RunResult r = run(b, p);
+    INFO(tests << " tests per window");
+    CHECK(r.reason == StopReason::stalled);
+    CHECK(r.last_good.settling_since == (tests == 4 ? 520u : 560u));
+  }
+}
+
+TEST_CASE("run: the stall test's marks are saved, so a resumed run tests against the same marks") {
+  Params p = run_params();
+  p.stop.stall_window = 80;
+  p.stop.stall_tests = 4;
+  auto script = [](std::uint64_t i, bool settling) {
+    return growing(1.0 + 0.01 * double(std::min<std::uint64_t>(i, 430)), 0.02f, settling ? 0 : 3);
+  };
+  ScriptedBackend first(script);
+  RunControl control;
+  control.max_iterations = 470;
+  const RunResult part = run_simulation(first, p, control);
+  REQUIRE(part.reason == StopReason::max_iterations);
+  // Marks at 400, 420, 440, 460: the newest and the three before it.
+  CHECK(part.last_good.mark_iteration == 460);
+  CHECK(part.last_good.mark_growth == Approx(5.3));
+  CHECK(part.last_good.mark_growth_1 == Approx(5.3));
+  CHECK(part.last_good.mark_growth_2 == Approx(5.2));
+  CHECK(part.last_good.mark_growth_3 == Approx(5.0));
+  CHECK(first.current().mark_growth_3 == part.last_good.mark_growth_3);  // the backend holds them for its state
+  ScriptedBackend resumed(script);
+  resumed.set_progress_mark(part.last_good);
+  for (std::uint64_t i = 0; i < 470; ++i) resumed.step();
+  const RunResult r = run(resumed, p);
+  CHECK(r.last_good.settling_since == 520);  // as without the interruption
 }
 
 TEST_CASE("run: settling that never comes clean ends as unsettled after settle_iterations") {

@@ -66,13 +66,13 @@ class DeviceBackend final : public OpenclBackend {
         iteration_(initial.iteration),
         settling_since_(initial.settling_since),
         secondary_since_(initial.secondary_since),
-        mark_iteration_(initial.mark_iteration),
-        mark_growth_(initial.mark_growth),
+
         rebuild_(params.forces.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort
               : info.gpu                  ? GridSort::device
                                           : GridSort::host) {
     validate(topo_);
+    copy_progress_marks(initial, marks_);
     const cl::Program program = create_queue();
     world_ = {topo_.vertex_count(),
               topo_.slice_count(),
@@ -99,10 +99,7 @@ class DeviceBackend final : public OpenclBackend {
   const DeviceInfo& device() const override { return info_; }
   GridSort grid_sort() const override { return sort_; }
   void finish() override { settle_times(); }
-  void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
-    mark_iteration_ = iteration;
-    mark_growth_ = mean_growth;
-  }
+  void set_progress_mark(const SimState& marks) override { copy_progress_marks(marks, marks_); }
   void stop_growth() override {
     if (settling_since_ != 0) return;
     settling_since_ = iteration_;
@@ -191,8 +188,7 @@ class DeviceBackend final : public OpenclBackend {
     s.iteration = iteration_;
     s.settling_since = settling_since_;
     s.secondary_since = secondary_since_;
-    s.mark_iteration = mark_iteration_;
-    s.mark_growth = mark_growth_;
+    copy_progress_marks(marks_, s);
     return s;
   }
 
@@ -566,8 +562,7 @@ class DeviceBackend final : public OpenclBackend {
   std::uint64_t iteration_;
   std::uint64_t settling_since_;
   std::uint64_t secondary_since_;
-  std::uint64_t mark_iteration_;
-  double mark_growth_;
+  SimState marks_;  ///< holds the stall test's progress marks only (copy_progress_marks)
   int rebuild_;
   GridSort sort_;
   bool grid_built_ = false;

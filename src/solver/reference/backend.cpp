@@ -81,10 +81,7 @@ class ReferenceBackend final : public Backend {
     state_.secondary_since = state_.iteration;
     return true;
   }
-  void set_progress_mark(std::uint64_t iteration, double mean_growth) override {
-    state_.mark_iteration = iteration;
-    state_.mark_growth = mean_growth;
-  }
+  void set_progress_mark(const SimState& marks) override { copy_progress_marks(marks, state_); }
   const PhaseTimes& times() const override { return times_; }
 
  private:
