@@ -66,7 +66,6 @@ class DeviceBackend final : public OpenclBackend {
         iteration_(initial.iteration),
         settling_since_(initial.settling_since),
         secondary_since_(initial.secondary_since),
-
         rebuild_(params.forces.grid_rebuild_interval),
         sort_(sort != GridSort::automatic ? sort
               : info.gpu                  ? GridSort::device
@@ -277,8 +276,7 @@ class DeviceBackend final : public OpenclBackend {
   void set_overlap_room(std::size_t entries) override { broadphase_.set_capacity(entries); }
 
   std::vector<std::int32_t> refresh_and_read_boundary_order() override {
-    if (!grid_built_) build_grid();  // the grid's shape is fixed; built first as a step would
-    order_boundary_by_cell();
+    order_boundary_by_cell();  // from the positions and the grid's fixed shape
     std::vector<std::int32_t> order = boundary_.read(queue_);
     settle_times();
     return order;
