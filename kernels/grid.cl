@@ -11,6 +11,12 @@ int grid_axis_cell(float c, float cell, int n) {
   return (int)f;
 }
 
+/** Linear cell of point (x, y, t): t-major, then y, then x (state.hpp, grid_linear_cell). */
+int grid_linear_cell(const GridInfo grid, float x, float y, float t) {
+  return (grid_axis_cell(t, grid.cell, grid.n) * grid.n + grid_axis_cell(y, grid.cell, grid.n)) * grid.n +
+         grid_axis_cell(x, grid.cell, grid.n);
+}
+
 /** Centroid (a + b + c) / 3 and linear cell of every envelope triangle; one work-item per triangle. */
 __kernel void envelope_cells(const GridInfo grid,           /* input */
                              __global const int* env_a,     /* input: vertex ids per triangle */
@@ -32,10 +38,7 @@ __kernel void envelope_cells(const GridInfo grid,           /* input */
   cx[i] = px;
   cy[i] = py;
   ct[i] = pt;
-  const int ix = grid_axis_cell(px, grid.cell, grid.n);
-  const int iy = grid_axis_cell(py, grid.cell, grid.n);
-  const int it = grid_axis_cell(pt, grid.cell, grid.n);
-  triangle_cell[i] = (it * grid.n + iy) * grid.n + ix;
+  triangle_cell[i] = grid_linear_cell(grid, px, py, pt);
 }
 
 /* The stable counting sort on the device, for devices where reading the cell ids back to the host
@@ -256,10 +259,7 @@ __kernel void boundary_cells(const GridInfo grid,       /* grid.triangles: the b
   if (i >= grid.triangles) return;
   const int v = order[i];
   previous[i] = v;
-  const int ix = grid_axis_cell(x[v], grid.cell, grid.n);
-  const int iy = grid_axis_cell(y[v], grid.cell, grid.n);
-  const int it = grid_axis_cell(t[v], grid.cell, grid.n);
-  cell[i] = (it * grid.n + iy) * grid.n + ix;
+  cell[i] = grid_linear_cell(grid, x[v], y[v], t[v]);
 }
 
 /** The new order: the vertex at each sorted index (grid_scatter and grid_order_cells sorted the indices

@@ -73,6 +73,12 @@ inline std::int32_t grid_axis_cell(float c, float cell, std::int32_t n) {
   return static_cast<std::int32_t>(f);
 }
 
+/// The collision grid's linear cell of point (x, y, t) on its n × n × n cells of edge `cell`: t-major,
+/// then y, then x (grid.cl's grid_linear_cell).
+inline std::int32_t grid_linear_cell(float x, float y, float t, float cell, std::int32_t n) {
+  return (grid_axis_cell(t, cell, n) * n + grid_axis_cell(y, cell, n)) * n + grid_axis_cell(x, cell, n);
+}
+
 /// Everything that does not move during a simulation. Vertex ids are global (all elements).
 struct Topology {
   // per vertex

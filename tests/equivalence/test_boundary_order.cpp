@@ -21,11 +21,7 @@ std::string order_fault(const TinyWorld& w, const reference::CollisionGrid& grid
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::int32_t v = order[i];
     if (v < 0 || v >= w.topo.vertex_count()) return "entry " + std::to_string(i) + " is no vertex";
-    using reference::grid_axis_cell;
-    const std::int32_t cell =
-        (grid_axis_cell(w.state.t[v], grid.cell, grid.n) * grid.n + grid_axis_cell(w.state.y[v], grid.cell, grid.n)) *
-            grid.n +
-        grid_axis_cell(w.state.x[v], grid.cell, grid.n);
+    const std::int32_t cell = grid_linear_cell(w.state.x[v], w.state.y[v], w.state.t[v], grid.cell, grid.n);
     if (cell < last) out << "entry " << i << " (vertex " << v << ") in cell " << cell << " after cell " << last << "\n";
     last = cell;
   }

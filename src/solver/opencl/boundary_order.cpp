@@ -3,7 +3,8 @@
 
 #include <algorithm>
 
-#include "animpak/reference.hpp"
+#include "../counting_sort.hpp"
+#include "animpak/state.hpp"
 #include "device_buffers.hpp"
 
 namespace animpak::opencl {
@@ -24,60 +25,33 @@ BoundaryOrder::BoundaryOrder(const cl::Context& context, const cl::CommandQueue&
   const auto ints = [&](std::size_t n, const char* name) {
     return make_buffer(context, CL_MEM_READ_WRITE, sizeof(std::int32_t) * std::max<std::size_t>(n, 1), name);
   };
-  const std::size_t per_vertex = static_cast<std::size_t>(count_), cells = static_cast<std::size_t>(grid_.cells);
-  const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  const std::size_t per_vertex = static_cast<std::size_t>(count_);
   cell_ = ints(per_vertex, "boundary_cell");
   previous_ = ints(per_vertex, "boundary_previous");
-  sorted_ = ints(per_vertex, "boundary_sorted");
-  count_buf_ = ints(cells, "boundary_cell_count");
-  block_sum_ = ints(static_cast<std::size_t>(blocks), "boundary_scan_blocks");
-  cell_start_ = ints(cells + 1, "boundary_cell_start");
-  cursor_ = ints(cells, "boundary_cell_cursor");
-  // The collision grid's counting sort (grid.cl) over the boundary vertices' cells.
+  sorted_buf_ = ints(per_vertex, "boundary_sorted");
+  start_buf_ = ints(static_cast<std::size_t>(grid_.cells) + 1, "boundary_cell_start");
   cells_ = Kernel(program, "boundary_cells");
   cells_.bind(grid_, order_, x, y, t, cell_, previous_);
-  clear_ = Kernel(program, "grid_clear", "order: grid_clear");
-  clear_.bind(grid_, count_buf_);
-  count_kernel_ = Kernel(program, "grid_count", "order: grid_count");
-  count_kernel_.bind(grid_, cell_, count_buf_);
-  block_sums_ = Kernel(program, "grid_block_sums", "order: grid_block_sums");
-  block_sums_.bind(grid_, count_buf_, block_sum_);
-  scan_blocks_ = Kernel(program, "grid_scan_blocks", "order: grid_scan_blocks");
-  scan_blocks_.bind(grid_, block_sum_);
-  scan_cells_ = Kernel(program, "grid_scan_cells", "order: grid_scan_cells");
-  scan_cells_.bind(grid_, count_buf_, block_sum_, cell_start_, cursor_);
-  scatter_ = Kernel(program, "grid_scatter", "order: grid_scatter");
-  scatter_.bind(grid_, cell_, cursor_, sorted_);
-  order_kernel_ = Kernel(program, "grid_order_cells", "order: grid_order_cells");
-  order_kernel_.bind(grid_, cell_start_, sorted_);
+  sort_ = DeviceCountingSort(context, program, count_, grid_.cells, cell_, start_buf_, sorted_buf_, "order: ");
   gather_ = Kernel(program, "boundary_gather");
-  gather_.bind(grid_, sorted_, previous_, order_);
+  gather_.bind(grid_, sorted_buf_, previous_, order_);
 }
 
 std::array<Launch, 9> BoundaryOrder::launches() {
-  const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-  return {{{&cells_, count_},
-           {&clear_, grid_.cells},
-           {&count_kernel_, count_},
-           {&block_sums_, blocks},
-           {&scan_blocks_, AP_LOCAL_SIZE},  // one work-group
-           {&scan_cells_, blocks},
-           {&scatter_, count_},
-           {&order_kernel_, grid_.cells},
-           {&gather_, count_}}};
+  const std::array<Launch, 7> sort = sort_.launches();
+  return {{{&cells_, count_}, sort[0], sort[1], sort[2], sort[3], sort[4], sort[5], sort[6], {&gather_, count_}}};
 }
 
 void BoundaryOrder::sort_on_host(const cl::CommandQueue& queue, const std::vector<float>& x,
                                  const std::vector<float>& y, const std::vector<float>& t) {
-  for (std::size_t i = 0; i < host_.size(); ++i) {
-    const std::int32_t v = host_[i];
-    const std::int32_t cx = reference::grid_axis_cell(x[v], grid_.cell, grid_.n),
-                       cy = reference::grid_axis_cell(y[v], grid_.cell, grid_.n),
-                       ct = reference::grid_axis_cell(t[v], grid_.cell, grid_.n);
-    keys_[i] = {(ct * grid_.n + cy) * grid_.n + cx, v};
+  // As the device does: each vertex's cell, the stable counting sort, the vertices in sorted order.
+  const std::vector<std::int32_t> previous = host_;
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    const std::int32_t v = previous[i];
+    keys_[i] = grid_linear_cell(x[v], y[v], t[v], grid_.cell, grid_.n);
   }
-  std::sort(keys_.begin(), keys_.end());
-  for (std::size_t i = 0; i < keys_.size(); ++i) host_[i] = keys_[i].second;
+  counting_sort(keys_, grid_.cells, start_, sorted_);
+  for (std::size_t j = 0; j < sorted_.size(); ++j) host_[j] = previous[sorted_[j]];
   if (!host_.empty())
     check(queue.enqueueWriteBuffer(order_, CL_FALSE, 0, sizeof(std::int32_t) * host_.size(), host_.data()),
           "clEnqueueWriteBuffer(boundary_vertices)");

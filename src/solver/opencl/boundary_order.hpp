@@ -9,9 +9,9 @@
 
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
+#include "device_sort.hpp"
 #include "kernel.hpp"
 
 namespace animpak::opencl {
@@ -53,12 +53,14 @@ class BoundaryOrder {
   std::int32_t count_ = 0;
   GridInfo grid_{};  ///< the collision grid's shape, with `triangles` the boundary vertex count
   cl::Buffer order_;
-  // Host refresh only: the order last uploaded, kept alive for its non-blocking write, and the keys.
-  std::vector<std::int32_t> host_;
-  std::vector<std::pair<std::int32_t, std::int32_t>> keys_;
-  // Device refresh only:
-  cl::Buffer cell_, previous_, sorted_, count_buf_, block_sum_, cell_start_, cursor_;
-  Kernel cells_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_kernel_, gather_;
+  // Host refresh only: the order last uploaded, kept alive for its non-blocking write, and the sort's
+  // arrays (counting_sort.cpp).
+  std::vector<std::int32_t> host_, keys_, start_, sorted_;
+  // Device refresh only: each vertex's cell and the order it is sorted from, the collision grid's sort
+  // over them, the sort's outputs.
+  cl::Buffer cell_, previous_, sorted_buf_, start_buf_;
+  DeviceCountingSort sort_;
+  Kernel cells_, gather_;
 };
 
 }  // namespace animpak::opencl

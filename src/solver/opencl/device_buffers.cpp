@@ -54,13 +54,10 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
     return make_buffer(context, CL_MEM_READ_WRITE, bytes, name);
   };
   const std::size_t fn = sizeof(float) * vertices, fs = sizeof(float) * slices, ft = sizeof(float) * grid.triangles,
-                    it = sizeof(std::int32_t) * grid.triangles, ic = sizeof(std::int32_t) * grid.cells;
-  const std::int32_t blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+                    it = sizeof(std::int32_t) * grid.triangles;
   ScratchBuffers w;
   w.env_cx = scratch(ft, "env_cx"), w.env_cy = scratch(ft, "env_cy"), w.env_ct = scratch(ft, "env_ct");
   w.triangle_cell = scratch(it, "triangle_cell");
-  w.cell_count = scratch(ic, "cell_count"), w.cursor = scratch(ic, "cell_cursor");
-  w.block_sum = scratch(sizeof(std::int32_t) * blocks, "scan_blocks");
   w.cell_start = scratch(sizeof(std::int32_t) * (static_cast<std::size_t>(grid.cells) + 1), "cell_start");
   w.sorted = scratch(it, "sorted_triangles");
   w.slot_element = scratch(it, "slot_element");

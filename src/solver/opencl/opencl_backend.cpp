@@ -15,6 +15,7 @@
 #include "animpak/error.hpp"
 #include "boundary_order.hpp"
 #include "device_buffers.hpp"
+#include "device_sort.hpp"
 #include "kernel.hpp"
 #include "overlap_broadphase.hpp"
 
@@ -333,20 +334,9 @@ class DeviceBackend final : public OpenclBackend {
     const ScratchBuffers& w = scratch_;
     envelope_cells_ = Kernel(program, "envelope_cells");
     envelope_cells_.bind(grid_, b.env_a, b.env_b, b.env_c, x_, y_, t_, w.env_cx, w.env_cy, w.env_ct, w.triangle_cell);
-    grid_clear_ = Kernel(program, "grid_clear");
-    grid_clear_.bind(grid_, w.cell_count);
-    grid_count_ = Kernel(program, "grid_count");
-    grid_count_.bind(grid_, w.triangle_cell, w.cell_count);
-    grid_block_sums_ = Kernel(program, "grid_block_sums");
-    grid_block_sums_.bind(grid_, w.cell_count, w.block_sum);
-    grid_scan_blocks_ = Kernel(program, "grid_scan_blocks");
-    grid_scan_blocks_.bind(grid_, w.block_sum);
-    grid_scan_cells_ = Kernel(program, "grid_scan_cells");
-    grid_scan_cells_.bind(grid_, w.cell_count, w.block_sum, w.cell_start, w.cursor);
-    grid_scatter_ = Kernel(program, "grid_scatter");
-    grid_scatter_.bind(grid_, w.triangle_cell, w.cursor, w.sorted);
-    grid_order_ = Kernel(program, "grid_order_cells");
-    grid_order_.bind(grid_, w.cell_start, w.sorted);
+    if (sort_ == GridSort::device)
+      grid_sort_ = opencl::DeviceCountingSort(context_, program, grid_.triangles, grid_.cells, w.triangle_cell,
+                                              w.cell_start, w.sorted);
     grid_gather_ = Kernel(program, "grid_gather");
     grid_gather_.bind(grid_, w.sorted, b.env_element, w.env_cx, w.env_cy, w.env_ct, w.slot_element, w.slot_cx,
                       w.slot_cy, w.slot_ct);
@@ -505,14 +495,7 @@ class DeviceBackend final : public OpenclBackend {
   void build_grid() {
     timed(times_.grid, envelope_cells_, grid_.triangles);
     if (sort_ == GridSort::device) {
-      const std::int32_t blocks = (grid_.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-      timed(times_.grid, grid_clear_, grid_.cells);
-      timed(times_.grid, grid_count_, grid_.triangles);
-      timed(times_.grid, grid_block_sums_, blocks);
-      timed(times_.grid, grid_scan_blocks_, AP_LOCAL_SIZE);  // one work-group
-      timed(times_.grid, grid_scan_cells_, blocks);
-      timed(times_.grid, grid_scatter_, grid_.triangles);
-      timed(times_.grid, grid_order_, grid_.cells);
+      for (const opencl::Launch& l : grid_sort_.launches()) timed(times_.grid, *l.kernel, l.items);
     } else {
       host_sort();
     }
@@ -576,8 +559,8 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer x_, y_, t_, vx_, vy_, vt_, rest_, growth_;
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
-  Kernel envelope_cells_, grid_clear_, grid_count_, grid_block_sums_, grid_scan_blocks_, grid_scan_cells_,
-      grid_scatter_, grid_order_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
+  opencl::DeviceCountingSort grid_sort_;  ///< the collision grid's sort where the device builds it
+  Kernel envelope_cells_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
       curve_spline_tangents_, repulsion_force_, wall_mirror_, slice_centroids_, forces_, integrate_, constraints_,
       loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;

@@ -42,10 +42,7 @@ CollisionGrid build_collision_grid(const Topology& topo, const SimState& state, 
     g.cx[i] = c.x;
     g.cy[i] = c.y;
     g.ct[i] = c.t;
-    const std::int32_t ix = grid_axis_cell(c.x, g.cell, g.n);
-    const std::int32_t iy = grid_axis_cell(c.y, g.cell, g.n);
-    const std::int32_t it = grid_axis_cell(c.t, g.cell, g.n);
-    g.triangle_cell[i] = (it * g.n + iy) * g.n + ix;
+    g.triangle_cell[i] = grid_linear_cell(c.x, c.y, c.t, g.cell, g.n);
   }
   counting_sort(g.triangle_cell, cells, g.cell_start, g.sorted_triangles);
   fill_slot_elements(topo, g);
