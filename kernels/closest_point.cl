@@ -175,20 +175,27 @@ void closest_point_on_triangles(float px,
   const ap_floatv denom = 1.0f / sum;
   const ap_floatv v = vb * denom, w = vc * denom;
   ap_floatv rx = ax + abx * v + acx * w, ry = ay + aby * v + acy * w, rt = at + abt * v + act * w;
-  ap_intv m = !(sum > 0.0f);
-  rx = select(rx, ax, m), ry = select(ry, ay, m), rt = select(rt, at, m);
-  const ap_floatv s_bc = e43 / (e43 + e56);
-  m = va <= 0.0f && e43 >= 0.0f && e56 >= 0.0f;
-  rx = select(rx, bx + (cx - bx) * s_bc, m), ry = select(ry, by + (cy - by) * s_bc, m);
-  rt = select(rt, bt + (ct - bt) * s_bc, m);
-  const ap_floatv s_ac = d2 / (d2 - d6);
-  m = vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f;
-  rx = select(rx, ax + acx * s_ac, m), ry = select(ry, ay + acy * s_ac, m), rt = select(rt, at + act * s_ac, m);
+  rx = select(rx, ax, !(sum > 0.0f)), ry = select(ry, ay, !(sum > 0.0f)), rt = select(rt, at, !(sum > 0.0f));
+  /* The three edge regions share one division: each lane divides the numerator and denominator of the
+   * first edge that holds for it (ab, then ac, then bc), from the point of the edge's start along its
+   * direction, the scalar function's operands and operations, so its answer is the same bits. */
+  const ap_intv m_ab = vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f;
+  const ap_intv m_ac = vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f;
+  const ap_intv m_bc = va <= 0.0f && e43 >= 0.0f && e56 >= 0.0f;
+  ap_floatv num = select(select(e43, d2, m_ac), d1, m_ab);
+  ap_floatv den = select(select(e43 + e56, d2 - d6, m_ac), d1 - d3, m_ab);
+  const ap_floatv s_edge = num / den;
+  const ap_intv from_a = m_ab | m_ac;
+  const ap_floatv ox = select(bx, ax, from_a), oy = select(by, ay, from_a), ot = select(bt, at, from_a);
+  const ap_floatv ex = select(select(cx - bx, acx, m_ac), abx, m_ab);
+  const ap_floatv ey = select(select(cy - by, acy, m_ac), aby, m_ab);
+  const ap_floatv et = select(select(ct - bt, act, m_ac), abt, m_ab);
+  const ap_floatv edge_x = ox + ex * s_edge, edge_y = oy + ey * s_edge, edge_t = ot + et * s_edge;
+  ap_intv m = m_ac | m_bc;
+  rx = select(rx, edge_x, m), ry = select(ry, edge_y, m), rt = select(rt, edge_t, m);
   m = d6 >= 0.0f && d5 <= d6;
   rx = select(rx, cx, m), ry = select(ry, cy, m), rt = select(rt, ct, m);
-  const ap_floatv s_ab = d1 / (d1 - d3);
-  m = vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f;
-  rx = select(rx, ax + abx * s_ab, m), ry = select(ry, ay + aby * s_ab, m), rt = select(rt, at + abt * s_ab, m);
+  rx = select(rx, edge_x, m_ab), ry = select(ry, edge_y, m_ab), rt = select(rt, edge_t, m_ab);
   m = d3 >= 0.0f && d4 <= d3;
   rx = select(rx, bx, m), ry = select(ry, by, m), rt = select(rt, bt, m);
   m = d1 <= 0.0f && d2 <= 0.0f;

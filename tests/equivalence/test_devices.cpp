@@ -1,7 +1,9 @@
 // Device discovery and selection, error names and build failures: the host layer's contract.
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <unistd.h>
 
@@ -86,9 +88,15 @@ TEST_CASE("try_build_kernels: every device builds, a broken kernel reports its l
     std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
                                std::filesystem::copy_options::overwrite_existing);
   std::ofstream(dir / "temporal.cl", std::ios::app) << "\nthis is not OpenCL C;\n";
+  // The caller's own kernel folder, if any, is put back: the tests after this one check those kernels.
+  const char* before = std::getenv("ANIMPAK_KERNEL_DIR");
+  const std::string caller_kernels = before != nullptr ? before : "";
   ::setenv("ANIMPAK_KERNEL_DIR", dir.c_str(), 1);
   const KernelBuild broken = try_build_kernels(devices.front().device);
-  ::unsetenv("ANIMPAK_KERNEL_DIR");
+  if (before != nullptr)
+    ::setenv("ANIMPAK_KERNEL_DIR", caller_kernels.c_str(), 1);
+  else
+    ::unsetenv("ANIMPAK_KERNEL_DIR");
   CHECK_FALSE(broken.ok);
   INFO(broken.log);
   CHECK(broken.log.find("temporal.cl") != std::string::npos);
