@@ -68,13 +68,16 @@ void repulsion_near_slots(int2 range,
   float c2 = *closest2;
   int k = range.x;
 #ifdef AP_LANES
-  if (k + AP_LANES <= range.y) {
+  if (k < range.y) {
     const uint r = (uint)(k & 3);
     const uint4 turn = ((uint4)(0, 1, 2, 3) + r) & 3u, back = ((uint4)(4, 5, 6, 7) - r) & 3u;
     float4 lane_x = shuffle(sum_x, turn), lane_y = shuffle(sum_y, turn), lane_t = shuffle(sum_t, turn);
-    for (; k + AP_LANES <= range.y; k += AP_LANES) {
+    for (; k < range.y; k += AP_LANES) {
+      /* Lanes past the range's end read the next slots (the slot arrays end in AP_LANES spare slots) and
+       * add +0. */
+      const ap_intv past = ap_lane_index_int() >= (ap_intv)(range.y - k);
       const ap_intv own_lane = ap_vloadi(0, slot_element + k) == own;
-      const ap_intv skip = own_only != 0 ? ~own_lane : own_lane;
+      const ap_intv skip = (own_only != 0 ? ~own_lane : own_lane) | past;
       if (all(skip)) continue;
       ap_floatv qx, qy, qt;
       closest_point_on_triangles(px, py, pt, ap_vloadf(0, ax + k), ap_vloadf(0, ay + k), ap_vloadf(0, at + k),
@@ -97,6 +100,7 @@ void repulsion_near_slots(int2 range,
       const float4 m4 = fmin(m8.lo, m8.hi);
       c2 = fmin(c2, fmin(fmin(m4.x, m4.y), fmin(m4.z, m4.w)));
     }
+    k = range.y;
     sum_x = shuffle(lane_x, back), sum_y = shuffle(lane_y, back), sum_t = shuffle(lane_t, back);
   }
 #endif

@@ -60,8 +60,10 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.triangle_cell = scratch(it, "triangle_cell");
   w.cell_start = scratch(sizeof(std::int32_t) * (static_cast<std::size_t>(grid.cells) + 1), "cell_start");
   w.sorted = scratch(it, "sorted_triangles");
-  w.slot_element = scratch(it, "slot_element");
-  w.slot_vertices = scratch(9 * ft, "slot_vertices");  // nine planes: a.x, a.y, a.t, b.x, …, c.t
+  // Both end in 16 spare slots: the near block's lanes read a whole group past a row's end (repulsion.cl).
+  const std::size_t spare = 16;
+  w.slot_element = scratch(it + sizeof(std::int32_t) * spare, "slot_element");
+  w.slot_vertices = scratch(9 * ft + sizeof(float) * spare, "slot_vertices");  // nine planes: a.x, …, c.t
   w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
   w.run_next = scratch(it, "run_next");
   w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");
