@@ -47,13 +47,12 @@ CurveBasis curve_basis(float u, float h, int mode) {
 /** The Bézier handle of slice value x with tangent m over a step h (reference curve_handle). */
 float curve_handle(float x, float m, float h) { return x + (h * m) / 3.0f; }
 
-/** The curve's value between slice values x0 and x1: within [x0, x1], or on the spline within the
- * interval's four control points (reference curve_value). */
-float curve_value(float x0, float x1, float m0, float m1, const CurveBasis b) {
+/** curve_value with the Bézier handles p = curve_handle(x0, m0, b.h) and q = curve_handle(x1, m1, -b.h)
+ * given (read only on the spline): points of one interval at several times share them. */
+float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBasis b, float p, float q) {
   float x = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
   float lo = x1 < x0 ? x1 : x0, hi = x0 < x1 ? x1 : x0;
   if (b.spline) {
-    const float p = curve_handle(x0, m0, b.h), q = curve_handle(x1, m1, -b.h);
     lo = p < lo ? p : lo;
     lo = q < lo ? q : lo;
     hi = hi < p ? p : hi;
@@ -62,6 +61,13 @@ float curve_value(float x0, float x1, float m0, float m1, const CurveBasis b) {
   x = x < lo ? lo : x;
   x = hi < x ? hi : x;
   return x;
+}
+
+/** The curve's value between slice values x0 and x1: within [x0, x1], or on the spline within the
+ * interval's four control points (reference curve_value). */
+float curve_value(float x0, float x1, float m0, float m1, const CurveBasis b) {
+  if (!b.spline) return curve_value_handles(x0, x1, m0, m1, b, 0.0f, 0.0f);
+  return curve_value_handles(x0, x1, m0, m1, b, curve_handle(x0, m0, b.h), curve_handle(x1, m1, -b.h));
 }
 
 /** Every vertex's tangent at its slice from one snapshot, one work-item per vertex (reference

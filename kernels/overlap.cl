@@ -28,6 +28,42 @@ void curve_point(__global const float* x,
   *py = curve_value(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b);
 }
 
+/** Vertex k's Bézier handles between the slices whose first vertices are lo and hi, h apart in t: from
+ * lo's value towards hi (p) and from hi's towards lo (q), in x and y (curve_value's p and q). */
+typedef struct {
+  float px, qx, py, qy;
+} CurveHandles;
+
+CurveHandles curve_handles(__global const float* x,
+                           __global const float* y,
+                           __global const float* mx,
+                           __global const float* my,
+                           int lo,
+                           int hi,
+                           int k,
+                           float h) {
+  CurveHandles c;
+  c.px = curve_handle(x[lo + k], mx[lo + k], h), c.qx = curve_handle(x[hi + k], mx[hi + k], -h);
+  c.py = curve_handle(y[lo + k], my[lo + k], h), c.qy = curve_handle(y[hi + k], my[hi + k], -h);
+  return c;
+}
+
+/** curve_point with vertex k's handles given (curve_handles over b.h; read only on the spline). */
+void curve_point_handles(__global const float* x,
+                         __global const float* y,
+                         __global const float* mx,
+                         __global const float* my,
+                         int lo,
+                         int hi,
+                         int k,
+                         const CurveBasis b,
+                         const CurveHandles c,
+                         float* px,
+                         float* py) {
+  *px = curve_value_handles(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b, c.px, c.qx);
+  *py = curve_value_handles(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b, c.py, c.qy);
+}
+
 /** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon on the curve at weights b between the
  * slices whose first vertices are lo and hi (reference overlap_edge). */
 void overlap_edge(__global const float* x,
@@ -572,6 +608,12 @@ uchar overlap_test(int v,
     /* The interval's lower and upper slices, and v's side of it. */
     const int lo = step > 0 ? own_lo : own_lo - per_slice, hi = lo + per_slice;
     const int k = v - own_lo, kn = next - own_lo;
+    /* Every point of this side lies in one interval: the handles once (on the spline). */
+    const float h = t[hi] - t[lo];
+    const bool spline = mode == AP_CURVE_SPLINE;
+    const CurveHandles none = {0.0f, 0.0f, 0.0f, 0.0f};
+    const CurveHandles hk = spline ? curve_handles(x, y, mx, my, lo, hi, k, h) : none;
+    const CurveHandles hn = spline ? curve_handles(x, y, mx, my, lo, hi, kn, h) : none;
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
       if (count == AP_OVERLAP_BATCH) {
         overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
@@ -581,9 +623,9 @@ uchar overlap_test(int v,
       }
       const float f = (float)j / denominator;
       pt[count] = t[v] + (t[w] - t[v]) * f;
-      const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, t[hi] - t[lo], mode);
-      curve_point(x, y, mx, my, lo, hi, k, b, &px[count], &py[count]);
-      curve_point(x, y, mx, my, lo, hi, kn, b, &nx[count], &ny[count]);
+      const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, h, mode);
+      curve_point_handles(x, y, mx, my, lo, hi, k, b, hk, &px[count], &py[count]);
+      curve_point_handles(x, y, mx, my, lo, hi, kn, b, hn, &nx[count], &ny[count]);
       start[count] = step > 0 ? own_index : own_index - 1;
       ++count;
     }
