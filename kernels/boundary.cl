@@ -177,10 +177,9 @@ __kernel void wall_mirror_force(const GridInfo grid,
                                 __global const float* slot_cx,
                                 __global const float* slot_cy,
                                 __global const float* slot_ct,
-                                __global const int* run_next, /* input: per grid slot (grid_runs) */
-                                __global const float* run_cx,
-                                __global const float* run_cy,
-                                __global const float* run_ct,
+                                __global const int* run_start,   /* input: cells + 1 (grid_runs) */
+                                __global const int* run_element, /* input: per run (grid_runs) */
+                                __global const float4* runs,     /* input: per run (grid_runs) */
                                 __global const float* seg_ax,
                                 __global const float* seg_ay, /* input: container segments */
                                 __global const float* seg_bx,
@@ -204,8 +203,8 @@ __kernel void wall_mirror_force(const GridInfo grid,
   float mx = 0.0f, my = 0.0f, mt = 0.0f;
   if (p.k_mirror != 0.0f && inside && d2 > 0.0f && d2 < p.wall_range2) {
     float sx, sy, st, closest2;
-    repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                  run_ct, element[v], 1, qx + (qx - px), qy + (qy - py), pt, p.repulsion_epsilon, &sx, &sy, &st,
+    repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_start, run_element,
+                  runs, element[v], 1, qx + (qx - px), qy + (qy - py), pt, p.repulsion_epsilon, &sx, &sy, &st,
                   &closest2);
     const float nx = px - qx, ny = py - qy;
     const float twice = 2.0f * ((sx * nx + sy * ny) / d2);

@@ -201,23 +201,38 @@ __kernel void slot_positions(const GridInfo grid,
   slot_vertices[AP_SLOT_CT * n + k] = t[c];
 }
 
-/** The far field's cell aggregates (grid.cpp, build_far_runs): per cell, each run of slots owned by one
- * element gets, at its first slot, one past its last slot and the mean of its centroids (summed in slot
- * order, then divided by the count); other slots get 0. One work-item per cell. */
+/** How many runs of slots owned by one element each cell holds (grid_runs); one work-item per cell. */
+__kernel void grid_run_counts(const GridInfo grid,
+                              __global const int* cell_start,   /* input: cells + 1 */
+                              __global const int* slot_element, /* input: per slot (grid_gather) */
+                              __global int* cell_runs) {        /* output: per cell */
+  const int c = get_global_id(0);
+  if (c >= grid.cells) return;
+  const int begin = cell_start[c], end = cell_start[c + 1];
+  int runs = 0;
+  for (int k = begin; k < end; ++k) runs += k == begin || slot_element[k] != slot_element[k - 1];
+  cell_runs[c] = runs;
+}
+
+/** The far field's cell aggregates (grid.cpp, build_far_runs): each run of a cell's slots owned by one
+ * element, in slot order, packed over the whole grid in cell order (run_start: the exclusive scan of
+ * grid_run_counts), holds the mean of its centroids (summed in slot order, then divided by the count),
+ * the count (.w) and its element (run_element). A row of cells then has its runs at consecutive
+ * addresses: the far shell walks one range per row instead of hopping from run to run. One work-item
+ * per cell. */
 __kernel void grid_runs(const GridInfo grid,
                         __global const int* cell_start,   /* input: cells + 1 */
                         __global const int* slot_element, /* input: per slot (grid_gather) */
                         __global const float* slot_cx,
                         __global const float* slot_cy,
                         __global const float* slot_ct, /* input: per slot */
-                        __global int* run_next,        /* output: per slot */
-                        __global float* run_cx,
-                        __global float* run_cy,
-                        __global float* run_ct) { /* output */
+                        __global const int* run_start, /* input: cells + 1 */
+                        __global int* run_element,     /* output: per run */
+                        __global float* runs) {        /* output: per run, four floats (a float4 to readers) */
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
   const int end = cell_start[c + 1];
-  int head = cell_start[c];
+  int head = cell_start[c], r = run_start[c];
   while (head < end) {
     const int owner = slot_element[head];
     float sx = 0.0f, sy = 0.0f, st = 0.0f;
@@ -228,16 +243,12 @@ __kernel void grid_runs(const GridInfo grid,
       st = st + slot_ct[k];
     }
     const float count = (float)(k - head);
-    run_next[head] = k;
-    run_cx[head] = sx / count;
-    run_cy[head] = sy / count;
-    run_ct[head] = st / count;
-    for (int j = head + 1; j < k; ++j) {
-      run_next[j] = 0;
-      run_cx[j] = 0.0f;
-      run_cy[j] = 0.0f;
-      run_ct[j] = 0.0f;
-    }
+    runs[4 * r] = sx / count;
+    runs[4 * r + 1] = sy / count;
+    runs[4 * r + 2] = st / count;
+    runs[4 * r + 3] = count;
+    run_element[r] = owner;
+    ++r;
     head = k;
   }
 }
@@ -272,15 +283,22 @@ __kernel void boundary_gather(const GridInfo grid,          /* grid.triangles: t
   if (j < grid.triangles) order[j] = previous[sorted[j]];
 }
 
+/** The linear cells cx_lo … cx_hi (clamped to the grid) of row (cy, ct), first and last; first > last when
+ * none is on the grid. */
+int2 grid_row_cells(const GridInfo grid, int cy, int ct, int cx_lo, int cx_hi) {
+  if (cy < 0 || ct < 0 || cy >= grid.n || ct >= grid.n) return (int2)(0, -1);
+  cx_lo = max(cx_lo, 0);
+  cx_hi = min(cx_hi, grid.n - 1);
+  const int row = (ct * grid.n + cy) * grid.n;
+  return cx_lo > cx_hi ? (int2)(0, -1) : (int2)(row + cx_lo, row + cx_hi);
+}
+
 /** The range of grid slots of the cells cx_lo..cx_hi in row (cy, ct), empty when the row is outside
  * the grid. Cells of one row are consecutive in the linear order, so visiting the range front to back
  * visits the cells in dx order and each cell's triangles in sorted order, as the reference's per-cell
  * loop does. */
 int2 grid_row_range(const GridInfo grid, __global const int* cell_start, int cy, int ct, int cx_lo, int cx_hi) {
-  if (cy < 0 || ct < 0 || cy >= grid.n || ct >= grid.n) return (int2)(0, 0);
-  cx_lo = max(cx_lo, 0);
-  cx_hi = min(cx_hi, grid.n - 1);
-  if (cx_lo > cx_hi) return (int2)(0, 0);
-  const int row = (ct * grid.n + cy) * grid.n;
-  return (int2)(cell_start[row + cx_lo], cell_start[row + cx_hi + 1]);
+  const int2 cells = grid_row_cells(grid, cy, ct, cx_lo, cx_hi);
+  if (cells.x > cells.y) return (int2)(0, 0);
+  return (int2)(cell_start[cells.x], cell_start[cells.y + 1]);
 }

@@ -116,38 +116,41 @@ void repulsion_near_slots(int2 range,
   *ax_sum = sum_x, *ay_sum = sum_y, *at_sum = sum_t, *closest2 = c2;
 }
 
-/** Far term of Eq. 1 for the slots in [range.x, range.y) not owned by `own` (with own_only, owned by
- * it) (repulsion.cpp): every
- * triangle's centroid, or with far_cells every run's mean centroid, counted once per triangle of the run
- * (grid_runs). The range starts at a cell's first slot, which is a run's first slot. */
-void repulsion_far_slots(int2 range,
-                         int own,
-                         int own_only,
-                         float px,
-                         float py,
-                         float pt,
-                         float eps,
-                         int far_cells,
-                         __global const int* slot_element,
-                         __global const float* slot_cx,
-                         __global const float* slot_cy,
-                         __global const float* slot_ct,
-                         __global const int* run_next,
-                         __global const float* run_cx,
-                         __global const float* run_cy,
-                         __global const float* run_ct,
-                         float* sx,
-                         float* sy,
-                         float* st) {
-  if (far_cells) {
-    for (int k = range.x; k < range.y;) {
-      const int next = run_next[k];
-      if ((slot_element[k] == own) == (own_only != 0))
-        repulsion_add_term(px - run_cx[k], py - run_cy[k], pt - run_ct[k], eps, (float)(next - k), sx, sy, st);
-      k = next;
+/** Far term of Eq. 1 for the cells cx_lo … cx_hi of row (cy, ct), from triangles not owned by `own` (with
+ * own_only, owned by it) (repulsion.cpp): every triangle's centroid in slot order, or with far_cells
+ * the row's runs in order (grid_runs), a run's mean centroid counted once per triangle of the run. */
+void repulsion_far_row(const GridInfo grid,
+                       __global const int* cell_start,
+                       int cy,
+                       int ct,
+                       int cx_lo,
+                       int cx_hi,
+                       int own,
+                       int own_only,
+                       float px,
+                       float py,
+                       float pt,
+                       float eps,
+                       __global const int* slot_element,
+                       __global const float* slot_cx,
+                       __global const float* slot_cy,
+                       __global const float* slot_ct,
+                       __global const int* run_start,
+                       __global const int* run_element,
+                       __global const float4* runs,
+                       float* sx,
+                       float* sy,
+                       float* st) {
+  if (grid.far_cells) {
+    const int2 range = grid_row_range(grid, run_start, cy, ct, cx_lo, cx_hi);
+    for (int r = range.x; r < range.y; ++r) {
+      if ((run_element[r] == own) != (own_only != 0)) continue;
+      const float4 m = runs[r];
+      repulsion_add_term(px - m.x, py - m.y, pt - m.z, eps, m.w, sx, sy, st);
     }
     return;
   }
+  const int2 range = grid_row_range(grid, cell_start, cy, ct, cx_lo, cx_hi);
   for (int k = range.x; k < range.y; ++k) {
     if ((slot_element[k] == own) != (own_only != 0)) continue;
     repulsion_add_term(px - slot_cx[k], py - slot_cy[k], pt - slot_ct[k], eps, 1.0f, sx, sy, st);
@@ -166,10 +169,9 @@ void repulsion_sum(const GridInfo grid,
                    __global const float* slot_cx,
                    __global const float* slot_cy,
                    __global const float* slot_ct,
-                   __global const int* run_next,
-                   __global const float* run_cx,
-                   __global const float* run_cy,
-                   __global const float* run_ct,
+                   __global const int* run_start,
+                   __global const int* run_element,
+                   __global const float4* runs,
                    int own,
                    int own_only,
                    float px,
@@ -194,17 +196,15 @@ void repulsion_sum(const GridInfo grid,
   float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
   for (int dz = -2; dz <= 2; ++dz) {
     for (int dy = -2; dy <= 2; ++dy) {
+      const int cy = qy + dy, ct = qt + dz;
       if (abs(dz) == 2 || abs(dy) == 2) { /* the whole row is in the shell */
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx + 2), own, own_only, px, py,
-                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
+        repulsion_far_row(grid, cell_start, cy, ct, qx - 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
+                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
       } else { /* only the row's two end cells are */
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 2, qx - 2), own, own_only, px, py,
-                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
-        repulsion_far_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx + 2, qx + 2), own, own_only, px, py,
-                            pt, eps, grid.far_cells, slot_element, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                            run_ct, &sx, &sy, &st);
+        repulsion_far_row(grid, cell_start, cy, ct, qx - 2, qx - 2, own, own_only, px, py, pt, eps, slot_element,
+                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
+        repulsion_far_row(grid, cell_start, cy, ct, qx + 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
+                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
       }
     }
   }
@@ -231,10 +231,9 @@ __kernel void repulsion_force(const GridInfo grid,
                               __global const float* slot_cx,
                               __global const float* slot_cy,
                               __global const float* slot_ct,
-                              __global const int* run_next, /* input: per grid slot (grid_runs) */
-                              __global const float* run_cx,
-                              __global const float* run_cy,
-                              __global const float* run_ct,
+                              __global const int* run_start,           /* input: per cell (grid_runs) */
+                              __global const int* run_element,         /* input: per run (grid_runs) */
+                              __global const float4* runs,             /* input: per run (grid_runs) */
                               __global const int* element_slice_begin, /* input: elements + 1 */
                               __global const int* slice_begin,         /* input: slices + 1 */
                               __global const int* slice_boundary,      /* input: per slice */
@@ -270,8 +269,8 @@ __kernel void repulsion_force(const GridInfo grid,
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx, sy, st, closest2;
-  repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_next, run_cx, run_cy,
-                run_ct, own, 0, px, py, pt, eps, &sx, &sy, &st, &closest2);
+  repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_start, run_element, runs,
+                own, 0, px, py, pt, eps, &sx, &sy, &st, &closest2);
   const float k = p.k_repulsion;
   rpl_x[v] = overlapping ? 0.0f : k * sx;
   rpl_y[v] = overlapping ? 0.0f : k * sy;

@@ -65,8 +65,10 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.slot_element = scratch(it + sizeof(std::int32_t) * spare, "slot_element");
   w.slot_vertices = scratch(9 * ft + sizeof(float) * spare, "slot_vertices");  // nine planes: a.x, …, c.t
   w.slot_cx = scratch(ft, "slot_cx"), w.slot_cy = scratch(ft, "slot_cy"), w.slot_ct = scratch(ft, "slot_ct");
-  w.run_next = scratch(it, "run_next");
-  w.run_cx = scratch(ft, "run_cx"), w.run_cy = scratch(ft, "run_cy"), w.run_ct = scratch(ft, "run_ct");
+  // At most one run per slot (grid_runs).
+  w.cell_runs = scratch(sizeof(std::int32_t) * static_cast<std::size_t>(grid.cells), "cell_runs");
+  w.run_start = scratch(sizeof(std::int32_t) * (static_cast<std::size_t>(grid.cells) + 1), "run_start");
+  w.run_element = scratch(it, "run_element"), w.runs = scratch(4 * ft, "runs");
   w.rpl_x = scratch(fn, "repulsion_x"), w.rpl_y = scratch(fn, "repulsion_y"), w.rpl_t = scratch(fn, "repulsion_t");
   w.rpl_closest = scratch(fn, "repulsion_closest"), w.rpl_contact = scratch(vertices, "repulsion_contact");
   w.depth_x = scratch(fn, "overlap_depth_x"), w.depth_y = scratch(fn, "overlap_depth_y");

@@ -46,10 +46,10 @@ TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQue
 
 /// Scratch one phase of a step hands to the next; nothing here outlives a step.
 struct ScratchBuffers {
-  cl::Buffer env_cx, env_cy, env_ct, triangle_cell;                            // centroids and cells
-  cl::Buffer cell_start, sorted;                                               // grid sort
-  cl::Buffer slot_element, slot_vertices, slot_cx, slot_cy, slot_ct;           // triangles in cell order
-  cl::Buffer run_next, run_cx, run_cy, run_ct;                                 // far-field cell aggregates
+  cl::Buffer env_cx, env_cy, env_ct, triangle_cell;                   // centroids and cells
+  cl::Buffer cell_start, sorted;                                      // grid sort
+  cl::Buffer slot_element, slot_vertices, slot_cx, slot_cy, slot_ct;  // triangles in cell order
+  cl::Buffer cell_runs, run_start, run_element, runs;                 // far-field cell aggregates, packed in cell order
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;  // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;        // per-slice geometry
   cl::Buffer tangent_x, tangent_y, spline_cp, spline_z;                        // the curve between slices

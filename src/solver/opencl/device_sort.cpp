@@ -7,47 +7,61 @@
 
 namespace animpak::opencl {
 
+namespace {
+
+cl::Buffer ints(const cl::Context& context, std::int32_t n, const char* name) {
+  return make_buffer(context, CL_MEM_READ_WRITE, sizeof(std::int32_t) * std::max<std::size_t>(n, 1), name);
+}
+
+// The kernels read the item and cell counts from a GridInfo (its other fields are the grid's shape).
+GridInfo counts_info(std::int32_t items, std::int32_t cells) { return GridInfo{0, 1.0f, items, cells, 0}; }
+
+Kernel labelled(const cl::Program& program, const std::string& label, const char* name) {
+  return Kernel(program, name, label.empty() ? nullptr : (label + name).c_str());
+}
+
+}  // namespace
+
+DeviceScan::DeviceScan(const cl::Context& context, const cl::Program& program, std::int32_t cells,
+                       const cl::Buffer& count, const cl::Buffer& start, const std::string& label)
+    : cells_(cells) {
+  block_sum_ = ints(context, (cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK, "scan_blocks");
+  cursor_ = ints(context, cells, "cell_cursor");
+  const GridInfo info = counts_info(0, cells);
+  block_sums_ = labelled(program, label, "grid_block_sums");
+  block_sums_.bind(info, count, block_sum_);
+  scan_blocks_ = labelled(program, label, "grid_scan_blocks");
+  scan_blocks_.bind(info, block_sum_);
+  scan_cells_ = labelled(program, label, "grid_scan_cells");
+  scan_cells_.bind(info, count, block_sum_, start, cursor_);
+}
+
+std::array<Launch, 3> DeviceScan::launches() {
+  const std::int32_t blocks = (cells_ + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
+  return {{{&block_sums_, blocks}, {&scan_blocks_, AP_LOCAL_SIZE} /* one work-group */, {&scan_cells_, blocks}}};
+}
+
 DeviceCountingSort::DeviceCountingSort(const cl::Context& context, const cl::Program& program, std::int32_t items,
                                        std::int32_t cells, const cl::Buffer& keys, const cl::Buffer& start,
                                        const cl::Buffer& sorted, const std::string& label)
     : items_(items), cells_(cells) {
-  const auto ints = [&](std::int32_t n, const char* name) {
-    return make_buffer(context, CL_MEM_READ_WRITE, sizeof(std::int32_t) * std::max<std::size_t>(n, 1), name);
-  };
-  const std::int32_t blocks = (cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-  count_ = ints(cells, "cell_count");
-  block_sum_ = ints(blocks, "scan_blocks");
-  cursor_ = ints(cells, "cell_cursor");
-  // The kernels read the item and cell counts from a GridInfo (its other fields are the grid's shape).
-  const GridInfo info{0, 1.0f, items, cells, 0};
-  const auto kernel = [&](const char* name) {
-    return Kernel(program, name, label.empty() ? nullptr : (label + name).c_str());
-  };
-  clear_ = kernel("grid_clear");
+  count_ = ints(context, cells, "cell_count");
+  scan_ = DeviceScan(context, program, cells, count_, start, label);
+  const GridInfo info = counts_info(items, cells);
+  clear_ = labelled(program, label, "grid_clear");
   clear_.bind(info, count_);
-  count_kernel_ = kernel("grid_count");
+  count_kernel_ = labelled(program, label, "grid_count");
   count_kernel_.bind(info, keys, count_);
-  block_sums_ = kernel("grid_block_sums");
-  block_sums_.bind(info, count_, block_sum_);
-  scan_blocks_ = kernel("grid_scan_blocks");
-  scan_blocks_.bind(info, block_sum_);
-  scan_cells_ = kernel("grid_scan_cells");
-  scan_cells_.bind(info, count_, block_sum_, start, cursor_);
-  scatter_ = kernel("grid_scatter");
-  scatter_.bind(info, keys, cursor_, sorted);
-  order_ = kernel("grid_order_cells");
+  scatter_ = labelled(program, label, "grid_scatter");
+  scatter_.bind(info, keys, scan_.cursor(), sorted);
+  order_ = labelled(program, label, "grid_order_cells");
   order_.bind(info, start, sorted);
 }
 
 std::array<Launch, 7> DeviceCountingSort::launches() {
-  const std::int32_t blocks = (cells_ + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
-  return {{{&clear_, cells_},
-           {&count_kernel_, items_},
-           {&block_sums_, blocks},
-           {&scan_blocks_, AP_LOCAL_SIZE},  // one work-group
-           {&scan_cells_, blocks},
-           {&scatter_, items_},
-           {&order_, cells_}}};
+  const std::array<Launch, 3> scan = scan_.launches();
+  return {
+      {{&clear_, cells_}, {&count_kernel_, items_}, scan[0], scan[1], scan[2], {&scatter_, items_}, {&order_, cells_}}};
 }
 
 }  // namespace animpak::opencl

@@ -1,8 +1,10 @@
-// The stable counting sort on the device (kernels/grid.cl, grid_clear … grid_order_cells): the device
+// The stable counting sort on the device (kernels/grid.cl, grid_clear … grid_order_cells), and the scan
+// it is built on: the device
 // twin of counting_sort.cpp. `items` keys in [0, cells) become the cell ranges (`start`, cells + 1
 // entries) and the item indices by cell, increasing within a cell (`sorted`): the same arrays as the
 // host's. The collision grid sorts its envelope triangles with one (GPUs), the repulsion order its
-// boundary vertices with another (boundary_order.hpp).
+// boundary vertices with another (boundary_order.hpp); the far field's runs are packed by a scan
+// (opencl_backend.cpp).
 #pragma once
 
 #include <array>
@@ -13,11 +15,30 @@
 
 namespace animpak::opencl {
 
+/// The exclusive scan of `cells` counts on the device (grid_block_sums, grid_scan_blocks, grid_scan_cells):
+/// `start` gets cells + 1 entries, the total last, and its own `cursor` a copy of the first `cells`
+/// (the counting sort's scatter takes its slots from it).
+class DeviceScan {
+ public:
+  DeviceScan() = default;
+  DeviceScan(const cl::Context& context, const cl::Program& program, std::int32_t cells, const cl::Buffer& count,
+             const cl::Buffer& start, const std::string& label = "");
+
+  /// The scan's launches, in order: block sums, their scan in one work-group, then each block's cells.
+  std::array<Launch, 3> launches();
+  const cl::Buffer& cursor() const { return cursor_; }
+
+ private:
+  std::int32_t cells_ = 0;
+  cl::Buffer block_sum_, cursor_;
+  Kernel block_sums_, scan_blocks_, scan_cells_;
+};
+
 class DeviceCountingSort {
  public:
   DeviceCountingSort() = default;
   /// Its kernels bound to `keys` (input, `items` ints) and to `start` and `sorted` (outputs), with
-  /// counts, block sums and cursors of its own; `label`, when not empty, prefixes its kernels' names in
+  /// counts and a scan of its own; `label`, when not empty, prefixes its kernels' names in
   /// the profile ("order: grid_count").
   DeviceCountingSort(const cl::Context& context, const cl::Program& program, std::int32_t items, std::int32_t cells,
                      const cl::Buffer& keys, const cl::Buffer& start, const cl::Buffer& sorted,
@@ -28,8 +49,9 @@ class DeviceCountingSort {
 
  private:
   std::int32_t items_ = 0, cells_ = 0;
-  cl::Buffer count_, block_sum_, cursor_;
-  Kernel clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_;
+  cl::Buffer count_;
+  DeviceScan scan_;
+  Kernel clear_, count_kernel_, scatter_, order_;
 };
 
 }  // namespace animpak::opencl

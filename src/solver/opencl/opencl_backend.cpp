@@ -342,9 +342,12 @@ class DeviceBackend final : public OpenclBackend {
                       w.slot_cy, w.slot_ct);
     slot_positions_ = Kernel(program, "slot_positions");
     slot_positions_.bind(grid_, w.sorted, b.env_a, b.env_b, b.env_c, x_, y_, t_, w.slot_vertices);
+    run_counts_ = Kernel(program, "grid_run_counts");
+    run_counts_.bind(grid_, w.cell_start, w.slot_element, w.cell_runs);
+    run_scan_ = opencl::DeviceScan(context_, program, grid_.cells, w.cell_runs, w.run_start, "runs: ");
     grid_runs_ = Kernel(program, "grid_runs");
-    grid_runs_.bind(grid_, w.cell_start, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx,
-                    w.run_cy, w.run_ct);
+    grid_runs_.bind(grid_, w.cell_start, w.slot_element, w.slot_cx, w.slot_cy, w.slot_ct, w.run_start, w.run_element,
+                    w.runs);
   }
 
   // Every vertex's tangent for the curve between slices: the spline's, a solve per track, or Steffen's,
@@ -369,15 +372,15 @@ class DeviceBackend final : public OpenclBackend {
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ = repulsion_force_.bind(
         grid_, p, boundary_.count(), world_.elements, boundary_.buffer(), x_, y_, t_, b.element, b.slice, w.cell_start,
-        w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy, w.run_ct,
+        w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_start, w.run_element, w.runs,
         b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t,
         w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
         w.depth_x, w.depth_y);
     mirror_ = p.k_mirror != 0.0f;
     wall_mirror_ = Kernel(program, "wall_mirror_force");
     wall_mirror_.bind(grid_, p, world_, boundary_.count(), boundary_.buffer(), x_, y_, t_, b.element, w.cell_start,
-                      w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_next, w.run_cx, w.run_cy,
-                      w.run_ct, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
+                      w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_start, w.run_element,
+                      w.runs, b.seg_ax, b.seg_ay, b.seg_bx, b.seg_by,
                       opencl::container_index_info(topo_.container.index), b.container_index, w.mirror_x, w.mirror_y,
                       w.mirror_t, w.wall_inside, w.wall_d2, w.wall_qx, w.wall_qy);
     curve_tangents_ = Kernel(program, "curve_tangents");
@@ -500,7 +503,11 @@ class DeviceBackend final : public OpenclBackend {
       host_sort();
     }
     timed(times_.grid, grid_gather_, grid_.triangles);
-    if (grid_.far_cells != 0) timed(times_.grid, grid_runs_, grid_.cells);
+    if (grid_.far_cells != 0) {
+      timed(times_.grid, run_counts_, grid_.cells);
+      for (const opencl::Launch& l : run_scan_.launches()) timed(times_.grid, *l.kernel, l.items);
+      timed(times_.grid, grid_runs_, grid_.cells);
+    }
     grid_built_ = true;
   }
 
@@ -560,7 +567,8 @@ class DeviceBackend final : public OpenclBackend {
   cl::Buffer fx_, fy_, ft_, closest_, contact_, changed_, breakdown_, slice_gap_, slice_overlap_, slice_outside_,
       slice_bad_;
   opencl::DeviceCountingSort grid_sort_;  ///< the collision grid's sort where the device builds it
-  Kernel envelope_cells_, grid_gather_, slot_positions_, grid_runs_, slice_boxes_, curve_tangents_,
+  opencl::DeviceScan run_scan_;           ///< packs the far field's runs in cell order (grid_runs)
+  Kernel envelope_cells_, grid_gather_, slot_positions_, run_counts_, grid_runs_, slice_boxes_, curve_tangents_,
       curve_spline_tangents_, repulsion_force_, wall_mirror_, slice_centroids_, forces_, integrate_, constraints_,
       loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
