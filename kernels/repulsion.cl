@@ -119,28 +119,28 @@ void repulsion_near_slots(int2 range,
 /** Far term of Eq. 1 for the cells cx_lo … cx_hi of row (cy, ct), from triangles not owned by `own` (with
  * own_only, owned by it) (repulsion.cpp): every triangle's centroid in slot order, or with far_cells
  * the row's runs in order (grid_runs), a run's mean centroid counted once per triangle of the run. */
-void repulsion_far_row(const GridInfo grid,
-                       __global const int* cell_start,
-                       int cy,
-                       int ct,
-                       int cx_lo,
-                       int cx_hi,
-                       int own,
-                       int own_only,
-                       float px,
-                       float py,
-                       float pt,
-                       float eps,
-                       __global const int* slot_element,
-                       __global const float* slot_cx,
-                       __global const float* slot_cy,
-                       __global const float* slot_ct,
-                       __global const int* run_start,
-                       __global const int* run_element,
-                       __global const float4* runs,
-                       float* sx,
-                       float* sy,
-                       float* st) {
+void repulsion_far_slots(const GridInfo grid,
+                         __global const int* cell_start,
+                         int cy,
+                         int ct,
+                         int cx_lo,
+                         int cx_hi,
+                         int own,
+                         int own_only,
+                         float px,
+                         float py,
+                         float pt,
+                         float eps,
+                         __global const int* slot_element,
+                         __global const float* slot_cx,
+                         __global const float* slot_cy,
+                         __global const float* slot_ct,
+                         __global const int* run_start,
+                         __global const int* run_element,
+                         __global const float4* runs,
+                         float* sx,
+                         float* sy,
+                         float* st) {
   if (grid.far_cells) {
     const int2 range = grid_row_range(grid, run_start, cy, ct, cx_lo, cx_hi);
     for (int r = range.x; r < range.y; ++r) {
@@ -188,9 +188,32 @@ void repulsion_sum(const GridInfo grid,
   const int qy = grid_axis_cell(py, grid.cell, grid.n);
   const int qt = grid_axis_cell(pt, grid.cell, grid.n);
   for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      repulsion_near_slots(grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1), own, own_only, px, py,
-                           pt, eps, slot_element, slot_vertices, grid.triangles, &near_x, &near_y, &near_t, &closest2);
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int2 row = grid_row_range(grid, cell_start, qy + dy, qt + dz, qx - 1, qx + 1);
+      if (!grid.far_cells) {
+        repulsion_near_slots(row, own, own_only, px, py, pt, eps, slot_element, slot_vertices, grid.triangles, &near_x,
+                             &near_y, &near_t, &closest2);
+        continue;
+      }
+      /* The row's runs (grid_runs) say where its slots of the element to leave out lie: the slots
+       * between them are walked, the runs left out are not (the walk would add +0 for each of their
+       * slots, which leaves the partials as they are). Runs and slots are both in cell order. */
+      const int2 run = grid_row_range(grid, run_start, qy + dy, qt + dz, qx - 1, qx + 1);
+      int k = row.x, from = row.x;
+      for (int r = run.x; r < run.y; ++r) {
+        const int count = (int)runs[r].w;
+        if ((run_element[r] == own) != (own_only != 0)) {
+          if (from < k)
+            repulsion_near_slots((int2)(from, k), own, own_only, px, py, pt, eps, slot_element, slot_vertices,
+                                 grid.triangles, &near_x, &near_y, &near_t, &closest2);
+          from = k + count;
+        }
+        k += count;
+      }
+      if (from < row.y)
+        repulsion_near_slots((int2)(from, row.y), own, own_only, px, py, pt, eps, slot_element, slot_vertices,
+                             grid.triangles, &near_x, &near_y, &near_t, &closest2);
+    }
   float sx = (near_x.x + near_x.y) + (near_x.z + near_x.w);
   float sy = (near_y.x + near_y.y) + (near_y.z + near_y.w);
   float st = (near_t.x + near_t.y) + (near_t.z + near_t.w);
@@ -198,13 +221,13 @@ void repulsion_sum(const GridInfo grid,
     for (int dy = -2; dy <= 2; ++dy) {
       const int cy = qy + dy, ct = qt + dz;
       if (abs(dz) == 2 || abs(dy) == 2) { /* the whole row is in the shell */
-        repulsion_far_row(grid, cell_start, cy, ct, qx - 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
-                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
+        repulsion_far_slots(grid, cell_start, cy, ct, qx - 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
+                            slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
       } else { /* only the row's two end cells are */
-        repulsion_far_row(grid, cell_start, cy, ct, qx - 2, qx - 2, own, own_only, px, py, pt, eps, slot_element,
-                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
-        repulsion_far_row(grid, cell_start, cy, ct, qx + 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
-                          slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
+        repulsion_far_slots(grid, cell_start, cy, ct, qx - 2, qx - 2, own, own_only, px, py, pt, eps, slot_element,
+                            slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
+        repulsion_far_slots(grid, cell_start, cy, ct, qx + 2, qx + 2, own, own_only, px, py, pt, eps, slot_element,
+                            slot_cx, slot_cy, slot_ct, run_start, run_element, runs, &sx, &sy, &st);
       }
     }
   }
@@ -231,7 +254,7 @@ __kernel void repulsion_force(const GridInfo grid,
                               __global const float* slot_cx,
                               __global const float* slot_cy,
                               __global const float* slot_ct,
-                              __global const int* run_start,           /* input: per cell (grid_runs) */
+                              __global const int* run_start,           /* input: cells + 1 (grid_runs) */
                               __global const int* run_element,         /* input: per run (grid_runs) */
                               __global const float4* runs,             /* input: per run (grid_runs) */
                               __global const int* element_slice_begin, /* input: elements + 1 */
