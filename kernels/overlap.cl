@@ -13,55 +13,27 @@ float ap_min(float a, float b) { return b < a ? b : a; }
 float ap_max(float a, float b) { return a < b ? b : a; }
 
 /** Vertex k's position on its curve at weights b between the slices whose first vertices are lo and hi
- * (reference curve_point in overlap.cpp). */
+ * (reference curve_point in overlap.cpp), with the Bézier handles slice_boxes computed: hp* at lo's
+ * vertex towards hi, hq* at hi's towards lo (curve_value's p and q, the same operands). */
 void curve_point(__global const float* x,
                  __global const float* y,
                  __global const float* mx,
                  __global const float* my,
+                 __global const float* hpx,
+                 __global const float* hpy,
+                 __global const float* hqx,
+                 __global const float* hqy,
                  int lo,
                  int hi,
                  int k,
                  const CurveBasis b,
                  float* px,
                  float* py) {
-  *px = curve_value(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b);
-  *py = curve_value(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b);
-}
-
-/** Vertex k's Bézier handles between the slices whose first vertices are lo and hi, h apart in t: from
- * lo's value towards hi (p) and from hi's towards lo (q), in x and y (curve_value's p and q). */
-typedef struct {
-  float px, qx, py, qy;
-} CurveHandles;
-
-CurveHandles curve_handles(__global const float* x,
-                           __global const float* y,
-                           __global const float* mx,
-                           __global const float* my,
-                           int lo,
-                           int hi,
-                           int k,
-                           float h) {
-  CurveHandles c;
-  c.px = curve_handle(x[lo + k], mx[lo + k], h), c.qx = curve_handle(x[hi + k], mx[hi + k], -h);
-  c.py = curve_handle(y[lo + k], my[lo + k], h), c.qy = curve_handle(y[hi + k], my[hi + k], -h);
-  return c;
-}
-
-/** curve_point with vertex k's handles given (curve_handles over b.h; read only on the spline). */
-void curve_point_handles(__global const float* x,
-                         __global const float* y,
-                         __global const float* mx,
-                         __global const float* my,
-                         int lo,
-                         int hi,
-                         int k,
-                         const CurveBasis b,
-                         const CurveHandles c,
-                         float* px,
-                         float* py) {
-  *px = curve_value_handles(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b, c.px, c.qx);
-  *py = curve_value_handles(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b, c.py, c.qy);
+  /* The handles only on the spline (slice_boxes writes them only there). */
+  const float p_x = b.spline ? hpx[lo + k] : 0.0f, q_x = b.spline ? hqx[hi + k] : 0.0f;
+  const float p_y = b.spline ? hpy[lo + k] : 0.0f, q_y = b.spline ? hqy[hi + k] : 0.0f;
+  *px = curve_value_handles(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b, p_x, q_x);
+  *py = curve_value_handles(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b, p_y, q_y);
 }
 
 /** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon on the curve at weights b between the
@@ -70,6 +42,10 @@ void overlap_edge(__global const float* x,
                   __global const float* y,
                   __global const float* mx,
                   __global const float* my,
+                  __global const float* hpx,
+                  __global const float* hpy,
+                  __global const float* hqx,
+                  __global const float* hqy,
                   int lo,
                   int hi,
                   int i,
@@ -80,21 +56,24 @@ void overlap_edge(__global const float* x,
                   float* bx,
                   float* by) {
   const int j = i + 1 == edges ? 0 : i + 1;
-  curve_point(x, y, mx, my, lo, hi, i, b, ax, ay);
-  curve_point(x, y, mx, my, lo, hi, j, b, bx, by);
+  curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, ax, ay);
+  curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, j, b, bx, by);
 }
 
 #ifdef AP_LANES
-/** curve_value on AP_LANES lanes: the same operations on each lane, the clamp as selects. */
+/** curve_value on AP_LANES lanes: the same operations on each lane, the clamp as selects; the handles
+ * read from hp and hq (slice_boxes). */
 ap_floatv curve_value_lanes(const ap_floatv x0,
                             const ap_floatv x1,
                             const ap_floatv m0,
                             const ap_floatv m1,
-                            const CurveBasis b) {
+                            const CurveBasis b,
+                            __global const float* hp,
+                            __global const float* hq) {
   ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
   ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
   if (b.spline) {
-    const ap_floatv p = x0 + (b.h * m0) / 3.0f, q = x1 + ((-b.h) * m1) / 3.0f;
+    const ap_floatv p = ap_vloadf(0, hp), q = ap_vloadf(0, hq);
     lo = select(lo, p, p < lo);
     lo = select(lo, q, q < lo);
     hi = select(hi, p, hi < p);
@@ -109,23 +88,29 @@ ap_floatv curve_value_lanes(const ap_floatv x0,
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
  * slice. On the spline (mode AP_CURVE_SPLINE) it also holds each boundary vertex's Bézier handles towards
  * its element's neighbouring slices, so that two slices' boxes hold the curve between them (reference
- * slice_boxes). */
-__kernel void slice_boxes(const WorldInfo world,
-                          __global const int* slice_begin,         /* input: slices + 1 */
-                          __global const int* slice_boundary,      /* input: boundary vertices per slice */
-                          __global const int* slice_element,       /* input: per slice */
-                          __global const int* element_slice_begin, /* input: elements + 1 */
-                          __global const float* x,
-                          __global const float* y,         /* input: positions */
-                          __global const float* t,         /* input */
-                          __global const float* tangent_x, /* input: curve_tangents, per vertex */
-                          __global const float* tangent_y, /* input */
-                          const int mode,                  /* input: ForceParams.motion_curve */
-                          __global float* box_x0,
-                          __global float* box_y0, /* output: per slice */
-                          __global float* box_x1,
-                          __global float* box_y1,  /* output: per slice */
-                          __global float* box_t) { /* output: per slice */
+ * slice_boxes), and keeps them for the overlap test's curve points (curve_point): the handle that way is
+ * curve_value's p (towards the next slice) or q (towards the one before), the same operands. */
+__kernel void slice_boxes(
+    const WorldInfo world,
+    __global const int* slice_begin,         /* input: slices + 1 */
+    __global const int* slice_boundary,      /* input: boundary vertices per slice */
+    __global const int* slice_element,       /* input: per slice */
+    __global const int* element_slice_begin, /* input: elements + 1 */
+    __global const float* x,
+    __global const float* y,         /* input: positions */
+    __global const float* t,         /* input */
+    __global const float* tangent_x, /* input: curve_tangents, per vertex */
+    __global const float* tangent_y, /* input */
+    const int mode,                  /* input: ForceParams.motion_curve */
+    __global float* handle_px,
+    __global float* handle_py, /* output on the spline: per boundary vertex, towards the next slice */
+    __global float* handle_qx,
+    __global float* handle_qy, /* output on the spline: per boundary vertex, towards the one before */
+    __global float* box_x0,
+    __global float* box_y0, /* output: per slice */
+    __global float* box_x1,
+    __global float* box_y1,  /* output: per slice */
+    __global float* box_t) { /* output: per slice */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int lo = slice_begin[s], count = slice_boundary[s];
@@ -147,6 +132,10 @@ __kernel void slice_boxes(const WorldInfo world,
         const float h = q > s ? t[slice_begin[q]] - t[lo] : -(t[lo] - t[slice_begin[q]]);
         for (int v = lo; v < lo + count; ++v) {
           const float hx = curve_handle(x[v], tangent_x[v], h), hy = curve_handle(y[v], tangent_y[v], h);
+          if (side == 0)
+            handle_qx[v] = hx, handle_qy[v] = hy;
+          else
+            handle_px[v] = hx, handle_py[v] = hy;
           x0 = hx < x0 ? hx : x0;
           x1 = hx > x1 ? hx : x1;
           y0 = hy < y0 ? hy : y0;
@@ -226,6 +215,10 @@ void overlap_polygon_walk(__global const float* x,
                           __global const float* y,
                           __global const float* mx,
                           __global const float* my,
+                          __global const float* hpx,
+                          __global const float* hpy,
+                          __global const float* hqx,
+                          __global const float* hqy,
                           int lo,
                           int hi,
                           int edges,
@@ -248,14 +241,18 @@ void overlap_polygon_walk(__global const float* x,
    * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
    * lanes"). */
   for (; i + AP_LANES < edges; i += AP_LANES) {
-    const ap_floatv ax = curve_value_lanes(ap_vloadf(0, x + lo + i), ap_vloadf(0, x + hi + i),
-                                           ap_vloadf(0, mx + lo + i), ap_vloadf(0, mx + hi + i), b);
-    const ap_floatv ay = curve_value_lanes(ap_vloadf(0, y + lo + i), ap_vloadf(0, y + hi + i),
-                                           ap_vloadf(0, my + lo + i), ap_vloadf(0, my + hi + i), b);
-    const ap_floatv bx = curve_value_lanes(ap_vloadf(0, x + lo + i + 1), ap_vloadf(0, x + hi + i + 1),
-                                           ap_vloadf(0, mx + lo + i + 1), ap_vloadf(0, mx + hi + i + 1), b);
-    const ap_floatv by = curve_value_lanes(ap_vloadf(0, y + lo + i + 1), ap_vloadf(0, y + hi + i + 1),
-                                           ap_vloadf(0, my + lo + i + 1), ap_vloadf(0, my + hi + i + 1), b);
+    const ap_floatv ax =
+        curve_value_lanes(ap_vloadf(0, x + lo + i), ap_vloadf(0, x + hi + i), ap_vloadf(0, mx + lo + i),
+                          ap_vloadf(0, mx + hi + i), b, hpx + lo + i, hqx + hi + i);
+    const ap_floatv ay =
+        curve_value_lanes(ap_vloadf(0, y + lo + i), ap_vloadf(0, y + hi + i), ap_vloadf(0, my + lo + i),
+                          ap_vloadf(0, my + hi + i), b, hpy + lo + i, hqy + hi + i);
+    const ap_floatv bx =
+        curve_value_lanes(ap_vloadf(0, x + lo + i + 1), ap_vloadf(0, x + hi + i + 1), ap_vloadf(0, mx + lo + i + 1),
+                          ap_vloadf(0, mx + hi + i + 1), b, hpx + lo + i + 1, hqx + hi + i + 1);
+    const ap_floatv by =
+        curve_value_lanes(ap_vloadf(0, y + lo + i + 1), ap_vloadf(0, y + hi + i + 1), ap_vloadf(0, my + lo + i + 1),
+                          ap_vloadf(0, my + hi + i + 1), b, hpy + lo + i + 1, hqy + hi + i + 1);
     /* ray_crosses_segment */
     const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
     inside = inside != ((ap_lane_count(ray) & 1) != 0);
@@ -276,12 +273,14 @@ void overlap_polygon_walk(__global const float* x,
    * vertex 0 (its curve point in one lane's operations), so nothing past the polygon is read. */
   if (i < edges && edges >= AP_LANES) {
     const int base = edges - AP_LANES;
-    const ap_floatv ax = curve_value_lanes(ap_vloadf(0, x + lo + base), ap_vloadf(0, x + hi + base),
-                                           ap_vloadf(0, mx + lo + base), ap_vloadf(0, mx + hi + base), b);
-    const ap_floatv ay = curve_value_lanes(ap_vloadf(0, y + lo + base), ap_vloadf(0, y + hi + base),
-                                           ap_vloadf(0, my + lo + base), ap_vloadf(0, my + hi + base), b);
+    const ap_floatv ax =
+        curve_value_lanes(ap_vloadf(0, x + lo + base), ap_vloadf(0, x + hi + base), ap_vloadf(0, mx + lo + base),
+                          ap_vloadf(0, mx + hi + base), b, hpx + lo + base, hqx + hi + base);
+    const ap_floatv ay =
+        curve_value_lanes(ap_vloadf(0, y + lo + base), ap_vloadf(0, y + hi + base), ap_vloadf(0, my + lo + base),
+                          ap_vloadf(0, my + hi + base), b, hpy + lo + base, hqy + hi + base);
     float first_x, first_y;
-    curve_point(x, y, mx, my, lo, hi, 0, b, &first_x, &first_y);
+    curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, 0, b, &first_x, &first_y);
     const ap_uintv next = ap_lane_index() + 1u; /* lane AP_LANES: the second operand's lane 0 */
     const ap_floatv bx = shuffle2(ax, (ap_floatv)(first_x), next), by = shuffle2(ay, (ap_floatv)(first_y), next);
     const ap_intv fresh = ap_lane_index_int() + base >= i;
@@ -303,10 +302,10 @@ void overlap_polygon_walk(__global const float* x,
 #endif
   /* Each edge's end is the next one's start: one curve point per vertex (the same value either way). */
   float ax = 0.0f, ay = 0.0f;
-  if (i < edges) curve_point(x, y, mx, my, lo, hi, i, b, &ax, &ay);
+  if (i < edges) curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, &ax, &ay);
   for (; i < edges; ++i) {
     float bx, by;
-    curve_point(x, y, mx, my, lo, hi, i + 1 == edges ? 0 : i + 1, b, &bx, &by);
+    curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i + 1 == edges ? 0 : i + 1, b, &bx, &by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
     if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 && ap_min(ay, by) <= ey1 &&
         segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
@@ -323,6 +322,10 @@ float overlap_way_out(__global const float* x,
                       __global const float* y,
                       __global const float* mx,
                       __global const float* my,
+                      __global const float* hpx,
+                      __global const float* hpy,
+                      __global const float* hqx,
+                      __global const float* hqy,
                       int lo,
                       int hi,
                       int edges,
@@ -336,7 +339,7 @@ float overlap_way_out(__global const float* x,
   *qy = py;
   for (int i = 0; i < edges; ++i) {
     float ax, ay, bx, by, cx, cy;
-    overlap_edge(x, y, mx, my, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
+    overlap_edge(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
     const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
     if (d2 < near2) near2 = d2, *qx = cx, *qy = cy;
   }
@@ -385,6 +388,10 @@ void overlap_point_element(int e,
                            __global const float* y,
                            __global const float* mx,
                            __global const float* my,
+                           __global const float* hpx,
+                           __global const float* hpy,
+                           __global const float* hqx,
+                           __global const float* hqy,
                            int mode,
                            __global const float* growth,
                            __global const uchar* element_secondary,
@@ -396,11 +403,13 @@ void overlap_point_element(int e,
   const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
   const CurveBasis b = curve_basis(w, slice_t[s + 1] - slice_t[s], mode);
   bool inside, crosses;
-  overlap_polygon_walk(x, y, mx, my, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
+  overlap_polygon_walk(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside,
+                       &crosses);
   /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
    * entered. */
   float cqx = px, cqy = py;
-  const float near2 = inside ? overlap_way_out(x, y, mx, my, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
+  const float near2 =
+      inside ? overlap_way_out(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
   if (crosses) r->overlap = 1;
   const bool other_secondary = element_secondary[e] != 0;
   if ((crosses || inside) && !(other_secondary && !own_secondary)) {
@@ -499,6 +508,10 @@ void overlap_points(int count,
                     __global const float* y,
                     __global const float* mx,
                     __global const float* my,
+                    __global const float* hpx,
+                    __global const float* hpy,
+                    __global const float* hqx,
+                    __global const float* hqy,
                     int mode,
                     __global const float* growth,
                     __global const uchar* element_secondary,
@@ -549,7 +562,8 @@ void overlap_points(int count,
     for (int j = 0; j < count; ++j)
       overlap_point_element(e, own_secondary, own_g, start[j], px[j], py[j], pt[j], nx[j], ny[j], ex0[j], ex1[j],
                             ey0[j], ey1[j], element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1,
-                            box_y1, slice_t, x, y, mx, my, mode, growth, element_secondary, &found[j]);
+                            box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode, growth, element_secondary,
+                            &found[j]);
   }
   for (int j = 0; j < count; ++j) overlap_fold(found[j], px[j], py[j], bits, depth2, out_x, out_y);
 }
@@ -576,6 +590,10 @@ uchar overlap_test(int v,
                    __global const float* t,
                    __global const float* mx,
                    __global const float* my,
+                   __global const float* hpx,
+                   __global const float* hpy,
+                   __global const float* hqx,
+                   __global const float* hqy,
                    int mode,
                    __global const float* growth,
                    __global const uchar* element_secondary,
@@ -608,37 +626,32 @@ uchar overlap_test(int v,
     /* The interval's lower and upper slices, and v's side of it. */
     const int lo = step > 0 ? own_lo : own_lo - per_slice, hi = lo + per_slice;
     const int k = v - own_lo, kn = next - own_lo;
-    /* Every point of this side lies in one interval: the handles once (on the spline). */
     const float h = t[hi] - t[lo];
-    const bool spline = mode == AP_CURVE_SPLINE;
-    const CurveHandles none = {0.0f, 0.0f, 0.0f, 0.0f};
-    const CurveHandles hk = spline ? curve_handles(x, y, mx, my, lo, hi, k, h) : none;
-    const CurveHandles hn = spline ? curve_handles(x, y, mx, my, lo, hi, kn, h) : none;
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
       if (count == AP_OVERLAP_BATCH) {
         overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                       slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
-                       element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                       slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
+                       growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
         count = 0;
       }
       const float f = (float)j / denominator;
       pt[count] = t[v] + (t[w] - t[v]) * f;
       const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, h, mode);
-      curve_point_handles(x, y, mx, my, lo, hi, k, b, hk, &px[count], &py[count]);
-      curve_point_handles(x, y, mx, my, lo, hi, kn, b, hn, &nx[count], &ny[count]);
+      curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, k, b, &px[count], &py[count]);
+      curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, kn, b, &nx[count], &ny[count]);
       start[count] = step > 0 ? own_index : own_index - 1;
       ++count;
     }
     /* A side's points lie near v and each other: one batch each, v's with the first side's. */
     overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
-                   element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
+                   growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
     count = 0;
   }
   if (count > 0)
     overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, mode, growth,
-                   element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
+                   growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
   return bits;
 }
 

@@ -263,10 +263,14 @@ __kernel void repulsion_force(const GridInfo grid,
                               __global const float* box_x0,
                               __global const float* box_y0, /* input: slice_boxes */
                               __global const float* box_x1,
-                              __global const float* box_y1,            /* input */
-                              __global const float* box_t,             /* input: slice_boxes' slice t */
-                              __global const float* tangent_x,         /* input: curve_tangents, per vertex */
-                              __global const float* tangent_y,         /* input: curve_tangents, per vertex */
+                              __global const float* box_y1,    /* input */
+                              __global const float* box_t,     /* input: slice_boxes' slice t */
+                              __global const float* tangent_x, /* input: curve_tangents, per vertex */
+                              __global const float* tangent_y, /* input: curve_tangents, per vertex */
+                              __global const float* handle_px,
+                              __global const float* handle_py, /* input: slice_boxes, per boundary vertex */
+                              __global const float* handle_qx,
+                              __global const float* handle_qy,         /* input: slice_boxes, per boundary vertex */
                               __global const float* growth,            /* input: g per slice */
                               __global const uchar* element_secondary, /* input: per element, 1 if secondary */
                               __global float* rpl_x,
@@ -285,10 +289,10 @@ __kernel void repulsion_force(const GridInfo grid,
   const float px = x[v], py = y[v], pt = t[v];
   const int own = element[v];
   float way_out_x, way_out_y;
-  const uchar bits =
-      overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                   box_x0, box_y0, box_x1, box_y1, box_t, x, y, t, tangent_x, tangent_y, p.motion_curve, growth,
-                   element_secondary, *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
+  const uchar bits = overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin,
+                                  slice_boundary, box_x0, box_y0, box_x1, box_y1, box_t, x, y, t, tangent_x, tangent_y,
+                                  handle_px, handle_py, handle_qx, handle_qy, p.motion_curve, growth, element_secondary,
+                                  *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx, sy, st, closest2;

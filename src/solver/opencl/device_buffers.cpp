@@ -80,6 +80,8 @@ ScratchBuffers allocate_scratch(const cl::Context& context, std::int32_t vertice
   w.box_x1 = scratch(fs, "slice_box_x1"), w.box_y1 = scratch(fs, "slice_box_y1");
   w.box_t = scratch(fs, "slice_t");
   w.tangent_x = scratch(fn, "curve_tangent_x"), w.tangent_y = scratch(fn, "curve_tangent_y");
+  w.handle_px = scratch(fn, "curve_handle_px"), w.handle_py = scratch(fn, "curve_handle_py");
+  w.handle_qx = scratch(fn, "curve_handle_qx"), w.handle_qy = scratch(fn, "curve_handle_qy");
   w.spline_cp = scratch(fn, "spline_cp"), w.spline_z = scratch(fn, "spline_z");
   w.proposed = scratch(fs, "proposed_growth");
   return w;

@@ -53,9 +53,10 @@ struct ScratchBuffers {
   cl::Buffer rpl_x, rpl_y, rpl_t, rpl_closest, rpl_contact, depth_x, depth_y;  // repulsion, overlap test
   cl::Buffer slice_cx, slice_cy, box_x0, box_y0, box_x1, box_y1, box_t;        // per-slice geometry
   cl::Buffer tangent_x, tangent_y, spline_cp, spline_z;                        // the curve between slices
-  cl::Buffer mirror_x, mirror_y, mirror_t;                                     // the wall's mirror image
-  cl::Buffer wall_inside, wall_d2, wall_qx, wall_qy;  // its container query, which step_forces reuses
-  cl::Buffer proposed;                                // growth proposals
+  cl::Buffer handle_px, handle_py, handle_qx, handle_qy;  // its Bézier handles, per boundary vertex (slice_boxes)
+  cl::Buffer mirror_x, mirror_y, mirror_t;                // the wall's mirror image
+  cl::Buffer wall_inside, wall_d2, wall_qx, wall_qy;      // its container query, which step_forces reuses
+  cl::Buffer proposed;                                    // growth proposals
 };
 
 /// Allocates the scratch for a world of `vertices` and `slices` and the collision grid `grid`.

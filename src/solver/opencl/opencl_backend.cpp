@@ -367,15 +367,16 @@ class DeviceBackend final : public OpenclBackend {
     curve_mode_ = p.motion_curve;
     slice_boxes_ = Kernel(program, "slice_boxes");
     slice_boxes_.bind(world_, b.slice_begin, b.slice_boundary, b.slice_element, b.element_slice_begin, x_, y_, t_,
-                      w.tangent_x, w.tangent_y, curve_mode_, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t);
+                      w.tangent_x, w.tangent_y, curve_mode_, w.handle_px, w.handle_py, w.handle_qx, w.handle_qy,
+                      w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t);
     repulsion_force_ = Kernel(program, "repulsion_force");
     // The broadphase's three arguments come last; build_overlap_grid sets them every step.
     overlap_grid_arg_ = repulsion_force_.bind(
         grid_, p, boundary_.count(), world_.elements, boundary_.buffer(), x_, y_, t_, b.element, b.slice, w.cell_start,
         w.slot_element, w.slot_vertices, w.slot_cx, w.slot_cy, w.slot_ct, w.run_start, w.run_element, w.runs,
         b.element_slice_begin, b.slice_begin, b.slice_boundary, w.box_x0, w.box_y0, w.box_x1, w.box_y1, w.box_t,
-        w.tangent_x, w.tangent_y, growth_, b.element_secondary, w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact,
-        w.depth_x, w.depth_y);
+        w.tangent_x, w.tangent_y, w.handle_px, w.handle_py, w.handle_qx, w.handle_qy, growth_, b.element_secondary,
+        w.rpl_x, w.rpl_y, w.rpl_t, w.rpl_closest, w.rpl_contact, w.depth_x, w.depth_y);
     mirror_ = p.k_mirror != 0.0f;
     wall_mirror_ = Kernel(program, "wall_mirror_force");
     wall_mirror_.bind(grid_, p, world_, boundary_.count(), boundary_.buffer(), x_, y_, t_, b.element, w.cell_start,
