@@ -47,8 +47,10 @@ CurveBasis curve_basis(float u, float h, int mode) {
 /** The Bézier handle of slice value x with tangent m over a step h (reference curve_handle). */
 float curve_handle(float x, float m, float h) { return x + (h * m) / 3.0f; }
 
-/** curve_value with the Bézier handles p = curve_handle(x0, m0, b.h) and q = curve_handle(x1, m1, -b.h)
- * given (read only on the spline): points of one interval at several times share them. */
+/** The curve's value between slice values x0 and x1: within [x0, x1], or on the spline within the
+ * interval's four control points (reference curve_value), with those control points' handles given:
+ * p = curve_handle(x0, m0, b.h), q = curve_handle(x1, m1, -b.h) (read only on the spline; slice_boxes
+ * keeps them, overlap.cl). */
 float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBasis b, float p, float q) {
   float x = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
   float lo = x1 < x0 ? x1 : x0, hi = x0 < x1 ? x1 : x0;
@@ -63,12 +65,30 @@ float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBas
   return x;
 }
 
-/** The curve's value between slice values x0 and x1: within [x0, x1], or on the spline within the
- * interval's four control points (reference curve_value). */
-float curve_value(float x0, float x1, float m0, float m1, const CurveBasis b) {
-  if (!b.spline) return curve_value_handles(x0, x1, m0, m1, b, 0.0f, 0.0f);
-  return curve_value_handles(x0, x1, m0, m1, b, curve_handle(x0, m0, b.h), curve_handle(x1, m1, -b.h));
+#ifdef AP_LANES
+/** curve_value_handles on AP_LANES lanes: the same operations on each lane, the clamp as selects; the handles
+ * read from hp and hq (kept by slice_boxes, overlap.cl). */
+ap_floatv curve_value_lanes(const ap_floatv x0,
+                            const ap_floatv x1,
+                            const ap_floatv m0,
+                            const ap_floatv m1,
+                            const CurveBasis b,
+                            __global const float* hp,
+                            __global const float* hq) {
+  ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
+  ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
+  if (b.spline) {
+    const ap_floatv p = ap_vloadf(0, hp), q = ap_vloadf(0, hq);
+    lo = select(lo, p, p < lo);
+    lo = select(lo, q, q < lo);
+    hi = select(hi, p, hi < p);
+    hi = select(hi, q, hi < q);
+  }
+  v = select(v, lo, v < lo);
+  v = select(v, hi, hi < v);
+  return v;
 }
+#endif
 
 /** Every vertex's tangent at its slice from one snapshot, one work-item per vertex (reference
  * curve_tangents). The slice before the first of an element, across the loop seam, lies one period

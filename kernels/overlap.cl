@@ -61,28 +61,27 @@ void overlap_edge(__global const float* x,
 }
 
 #ifdef AP_LANES
-/** curve_value on AP_LANES lanes: the same operations on each lane, the clamp as selects; the handles
- * read from hp and hq (slice_boxes). */
-ap_floatv curve_value_lanes(const ap_floatv x0,
-                            const ap_floatv x1,
-                            const ap_floatv m0,
-                            const ap_floatv m1,
-                            const CurveBasis b,
-                            __global const float* hp,
-                            __global const float* hq) {
-  ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
-  ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
-  if (b.spline) {
-    const ap_floatv p = ap_vloadf(0, hp), q = ap_vloadf(0, hq);
-    lo = select(lo, p, p < lo);
-    lo = select(lo, q, q < lo);
-    hi = select(hi, p, hi < p);
-    hi = select(hi, q, hi < q);
-  }
-  v = select(v, lo, v < lo);
-  v = select(v, hi, hi < v);
-  return v;
+/** curve_point for vertices k … k + AP_LANES − 1, one per lane. */
+void curve_point_lanes(__global const float* x,
+                       __global const float* y,
+                       __global const float* mx,
+                       __global const float* my,
+                       __global const float* hpx,
+                       __global const float* hpy,
+                       __global const float* hqx,
+                       __global const float* hqy,
+                       int lo,
+                       int hi,
+                       int k,
+                       const CurveBasis b,
+                       ap_floatv* px,
+                       ap_floatv* py) {
+  *px = curve_value_lanes(ap_vloadf(0, x + lo + k), ap_vloadf(0, x + hi + k), ap_vloadf(0, mx + lo + k),
+                          ap_vloadf(0, mx + hi + k), b, hpx + lo + k, hqx + hi + k);
+  *py = curve_value_lanes(ap_vloadf(0, y + lo + k), ap_vloadf(0, y + hi + k), ap_vloadf(0, my + lo + k),
+                          ap_vloadf(0, my + hi + k), b, hpy + lo + k, hqy + hi + k);
 }
+
 #endif
 
 /** Box of every slice's boundary polygon and the slice's t (the broadphase's input); one work-item per
@@ -241,62 +240,26 @@ void overlap_polygon_walk(__global const float* x,
    * an any over the lanes, so the order does not matter (docs/architecture.md, "The near block in
    * lanes"). */
   for (; i + AP_LANES < edges; i += AP_LANES) {
-    const ap_floatv ax =
-        curve_value_lanes(ap_vloadf(0, x + lo + i), ap_vloadf(0, x + hi + i), ap_vloadf(0, mx + lo + i),
-                          ap_vloadf(0, mx + hi + i), b, hpx + lo + i, hqx + hi + i);
-    const ap_floatv ay =
-        curve_value_lanes(ap_vloadf(0, y + lo + i), ap_vloadf(0, y + hi + i), ap_vloadf(0, my + lo + i),
-                          ap_vloadf(0, my + hi + i), b, hpy + lo + i, hqy + hi + i);
-    const ap_floatv bx =
-        curve_value_lanes(ap_vloadf(0, x + lo + i + 1), ap_vloadf(0, x + hi + i + 1), ap_vloadf(0, mx + lo + i + 1),
-                          ap_vloadf(0, mx + hi + i + 1), b, hpx + lo + i + 1, hqx + hi + i + 1);
-    const ap_floatv by =
-        curve_value_lanes(ap_vloadf(0, y + lo + i + 1), ap_vloadf(0, y + hi + i + 1), ap_vloadf(0, my + lo + i + 1),
-                          ap_vloadf(0, my + hi + i + 1), b, hpy + lo + i + 1, hqy + hi + i + 1);
-    /* ray_crosses_segment */
-    const ap_intv ray = ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
-    inside = inside != ((ap_lane_count(ray) & 1) != 0);
-    if (crosses) continue;
-    /* ap_max / ap_min as select, then segments_cross_properly */
-    const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
-                        select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
-    const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-    const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
-    const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
-    const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
-    const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
-                          ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
-    crosses = any(box && cross);
+    ap_floatv ax, ay, bx, by;
+    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, &ax, &ay);
+    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i + 1, b, &bx, &by);
+    inside = inside != ((ap_lane_count(ray_crosses_segments(px, py, ax, ay, bx, by)) & 1) != 0);
+    if (!crosses) crosses = any(edges_cross_properly(px, py, nx, ny, ex0, ex1, ey0, ey1, ax, ay, bx, by));
   }
   /* The rest in one more round when the polygon has AP_LANES edges or more: its last AP_LANES edges, the
    * lanes already walked masked out. Each edge's end is the next lane's start, the last edge's end
    * vertex 0 (its curve point in one lane's operations), so nothing past the polygon is read. */
   if (i < edges && edges >= AP_LANES) {
     const int base = edges - AP_LANES;
-    const ap_floatv ax =
-        curve_value_lanes(ap_vloadf(0, x + lo + base), ap_vloadf(0, x + hi + base), ap_vloadf(0, mx + lo + base),
-                          ap_vloadf(0, mx + hi + base), b, hpx + lo + base, hqx + hi + base);
-    const ap_floatv ay =
-        curve_value_lanes(ap_vloadf(0, y + lo + base), ap_vloadf(0, y + hi + base), ap_vloadf(0, my + lo + base),
-                          ap_vloadf(0, my + hi + base), b, hpy + lo + base, hqy + hi + base);
+    ap_floatv ax, ay;
+    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, base, b, &ax, &ay);
     float first_x, first_y;
     curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, 0, b, &first_x, &first_y);
     const ap_uintv next = ap_lane_index() + 1u; /* lane AP_LANES: the second operand's lane 0 */
     const ap_floatv bx = shuffle2(ax, (ap_floatv)(first_x), next), by = shuffle2(ay, (ap_floatv)(first_y), next);
     const ap_intv fresh = ap_lane_index_int() + base >= i;
-    const ap_intv ray = fresh && ((ay > py) != (by > py)) && px < (bx - ax) * (py - ay) / (by - ay) + ax;
-    inside = inside != ((ap_lane_count(ray) & 1) != 0);
-    if (!crosses) {
-      const ap_intv box = select(ax, bx, ax < bx) >= ex0 && select(ax, bx, bx < ax) <= ex1 &&
-                          select(ay, by, ay < by) >= ey0 && select(ay, by, by < ay) <= ey1;
-      const ap_floatv o1 = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-      const ap_floatv o2 = (bx - ax) * (ny - ay) - (by - ay) * (nx - ax);
-      const ap_floatv o3 = (nx - px) * (ay - py) - (ny - py) * (ax - px);
-      const ap_floatv o4 = (nx - px) * (by - py) - (ny - py) * (bx - px);
-      const ap_intv cross = ((o1 > 0.0f && o2 < 0.0f) || (o1 < 0.0f && o2 > 0.0f)) &&
-                            ((o3 > 0.0f && o4 < 0.0f) || (o3 < 0.0f && o4 > 0.0f));
-      crosses = any(fresh && box && cross);
-    }
+    inside = inside != ((ap_lane_count(fresh && ray_crosses_segments(px, py, ax, ay, bx, by)) & 1) != 0);
+    if (!crosses) crosses = any(fresh && edges_cross_properly(px, py, nx, ny, ex0, ex1, ey0, ey1, ax, ay, bx, by));
     i = edges;
   }
 #endif
