@@ -28,19 +28,19 @@ void container_try_segment(int i,
  * band and the nearest point only those of the point's cell (or every segment outside the grid), in
  * index order: the same answer as trying every segment. Without a container every point is inside, at
  * +inf. */
-bool container_query(int segments,
-                     const ContainerIndexInfo ix,
-                     __global const int* index,
-                     float px,
-                     float py,
-                     bool nearest,
-                     __global const float* ax,
-                     __global const float* ay,
-                     __global const float* bx,
-                     __global const float* by,
-                     float* distance2,
-                     float* qx,
-                     float* qy) {
+AP_INLINE bool container_query(int segments,
+                               const ContainerIndexInfo ix,
+                               __global const int* index,
+                               float px,
+                               float py,
+                               bool nearest,
+                               __global const float* ax,
+                               __global const float* ay,
+                               __global const float* bx,
+                               __global const float* by,
+                               float* distance2,
+                               float* qx,
+                               float* qy) {
   *distance2 = INFINITY;
   *qx = 0.0f;
   *qy = 0.0f;

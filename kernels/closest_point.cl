@@ -7,7 +7,8 @@ float ap_dot3(float ax, float ay, float at, float bx, float by, float bt) { retu
 
 /** Closest point (*qx, *qy) to (px, py) on segment ab in x, y, clamped to the segment; returns the squared
  * distance (reference closest_point_on_segment). */
-float closest_point_on_segment(float px, float py, float ax, float ay, float bx, float by, float* qx, float* qy) {
+AP_INLINE float
+closest_point_on_segment(float px, float py, float ax, float ay, float bx, float by, float* qx, float* qy) {
   const float dx = bx - ax, dy = by - ay;
   const float len2 = dx * dx + dy * dy;
   float s = 0.0f;
@@ -140,21 +141,21 @@ int ap_lane_count(ap_intv m) {
 }
 
 /** closest_point_on_triangle for AP_LANES triangles at once. */
-void closest_point_on_triangles(float px,
-                                float py,
-                                float pt,
-                                ap_floatv ax,
-                                ap_floatv ay,
-                                ap_floatv at,
-                                ap_floatv bx,
-                                ap_floatv by,
-                                ap_floatv bt,
-                                ap_floatv cx,
-                                ap_floatv cy,
-                                ap_floatv ct,
-                                ap_floatv* qx,
-                                ap_floatv* qy,
-                                ap_floatv* qt) {
+AP_INLINE void closest_point_on_triangles(float px,
+                                          float py,
+                                          float pt,
+                                          ap_floatv ax,
+                                          ap_floatv ay,
+                                          ap_floatv at,
+                                          ap_floatv bx,
+                                          ap_floatv by,
+                                          ap_floatv bt,
+                                          ap_floatv cx,
+                                          ap_floatv cy,
+                                          ap_floatv ct,
+                                          ap_floatv* qx,
+                                          ap_floatv* qy,
+                                          ap_floatv* qt) {
   const ap_floatv abx = bx - ax, aby = by - ay, abt = bt - at;
   const ap_floatv acx = cx - ax, acy = cy - ay, act = ct - at;
   const ap_floatv apx = px - ax, apy = py - ay, apt = pt - at;

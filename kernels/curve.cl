@@ -51,7 +51,7 @@ float curve_handle(float x, float m, float h) { return x + (h * m) / 3.0f; }
  * interval's four control points (reference curve_value), with those control points' handles given:
  * p = curve_handle(x0, m0, b.h), q = curve_handle(x1, m1, -b.h) (read only on the spline; slice_boxes
  * keeps them, overlap.cl). */
-float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBasis b, float p, float q) {
+AP_INLINE float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBasis b, float p, float q) {
   float x = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
   float lo = x1 < x0 ? x1 : x0, hi = x0 < x1 ? x1 : x0;
   if (b.spline) {
@@ -68,13 +68,13 @@ float curve_value_handles(float x0, float x1, float m0, float m1, const CurveBas
 #ifdef AP_LANES
 /** curve_value_handles on AP_LANES lanes: the same operations on each lane, the clamp as selects; the handles
  * read from hp and hq (kept by slice_boxes, overlap.cl). */
-ap_floatv curve_value_lanes(const ap_floatv x0,
-                            const ap_floatv x1,
-                            const ap_floatv m0,
-                            const ap_floatv m1,
-                            const CurveBasis b,
-                            __global const float* hp,
-                            __global const float* hq) {
+AP_INLINE ap_floatv curve_value_lanes(const ap_floatv x0,
+                                      const ap_floatv x1,
+                                      const ap_floatv m0,
+                                      const ap_floatv m1,
+                                      const CurveBasis b,
+                                      __global const float* hp,
+                                      __global const float* hq) {
   ap_floatv v = x0 + (x1 - x0) * b.c01 + m0 * b.c10 + m1 * b.c11;
   ap_floatv lo = select(x0, x1, x1 < x0), hi = select(x0, x1, x0 < x1);
   if (b.spline) {

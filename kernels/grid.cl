@@ -297,7 +297,8 @@ int2 grid_row_cells(const GridInfo grid, int cy, int ct, int cx_lo, int cx_hi) {
  * the grid. Cells of one row are consecutive in the linear order, so visiting the range front to back
  * visits the cells in dx order and each cell's triangles in sorted order, as the reference's per-cell
  * loop does. */
-int2 grid_row_range(const GridInfo grid, __global const int* cell_start, int cy, int ct, int cx_lo, int cx_hi) {
+AP_INLINE int2
+grid_row_range(const GridInfo grid, __global const int* cell_start, int cy, int ct, int cx_lo, int cx_hi) {
   const int2 cells = grid_row_cells(grid, cy, ct, cx_lo, cx_hi);
   if (cells.x > cells.y) return (int2)(0, 0);
   return (int2)(cell_start[cells.x], cell_start[cells.y + 1]);

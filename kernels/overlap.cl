@@ -15,20 +15,20 @@ float ap_max(float a, float b) { return a < b ? b : a; }
 /** Vertex k's position on its curve at weights b between the slices whose first vertices are lo and hi
  * (reference curve_point in overlap.cpp), with the Bézier handles slice_boxes computed: hp* at lo's
  * vertex towards hi, hq* at hi's towards lo (curve_value's p and q, the same operands). */
-void curve_point(__global const float* x,
-                 __global const float* y,
-                 __global const float* mx,
-                 __global const float* my,
-                 __global const float* hpx,
-                 __global const float* hpy,
-                 __global const float* hqx,
-                 __global const float* hqy,
-                 int lo,
-                 int hi,
-                 int k,
-                 const CurveBasis b,
-                 float* px,
-                 float* py) {
+AP_INLINE void curve_point(__global const float* x,
+                           __global const float* y,
+                           __global const float* mx,
+                           __global const float* my,
+                           __global const float* hpx,
+                           __global const float* hpy,
+                           __global const float* hqx,
+                           __global const float* hqy,
+                           int lo,
+                           int hi,
+                           int k,
+                           const CurveBasis b,
+                           float* px,
+                           float* py) {
   /* The handles only on the spline (slice_boxes writes them only there). */
   const float p_x = b.spline ? hpx[lo + k] : 0.0f, q_x = b.spline ? hqx[hi + k] : 0.0f;
   const float p_y = b.spline ? hpy[lo + k] : 0.0f, q_y = b.spline ? hqy[hi + k] : 0.0f;
@@ -62,20 +62,20 @@ void overlap_edge(__global const float* x,
 
 #ifdef AP_LANES
 /** curve_point for vertices k … k + AP_LANES − 1, one per lane. */
-void curve_point_lanes(__global const float* x,
-                       __global const float* y,
-                       __global const float* mx,
-                       __global const float* my,
-                       __global const float* hpx,
-                       __global const float* hpy,
-                       __global const float* hqx,
-                       __global const float* hqy,
-                       int lo,
-                       int hi,
-                       int k,
-                       const CurveBasis b,
-                       ap_floatv* px,
-                       ap_floatv* py) {
+AP_INLINE void curve_point_lanes(__global const float* x,
+                                 __global const float* y,
+                                 __global const float* mx,
+                                 __global const float* my,
+                                 __global const float* hpx,
+                                 __global const float* hpy,
+                                 __global const float* hqx,
+                                 __global const float* hqy,
+                                 int lo,
+                                 int hi,
+                                 int k,
+                                 const CurveBasis b,
+                                 ap_floatv* px,
+                                 ap_floatv* py) {
   *px = curve_value_lanes(ap_vloadf(0, x + lo + k), ap_vloadf(0, x + hi + k), ap_vloadf(0, mx + lo + k),
                           ap_vloadf(0, mx + hi + k), b, hpx + lo + k, hqx + hi + k);
   *py = curve_value_lanes(ap_vloadf(0, y + lo + k), ap_vloadf(0, y + hi + k), ap_vloadf(0, my + lo + k),
@@ -147,13 +147,13 @@ __kernel void slice_boxes(
 }
 
 /** The candidate after e: e + 1, or the smallest listed element above e; `elements` when none is left. */
-int overlap_next_candidate(int e,
-                           int elements,
-                           bool every,
-                           int lists,
-                           int* begin,
-                           const int* end,
-                           __global const int* grid_elements) {
+AP_INLINE int overlap_next_candidate(int e,
+                                     int elements,
+                                     bool every,
+                                     int lists,
+                                     int* begin,
+                                     const int* end,
+                                     __global const int* grid_elements) {
   if (every) return e + 1 < elements ? e + 1 : elements;
   int next = elements;
   for (int l = 0; l < lists; ++l) {
@@ -168,7 +168,7 @@ int overlap_next_candidate(int e,
  * the next one. The index found never decreases as pt grows (NaN times included: a comparison with
  * NaN stops either walk whatever pt is), so points whose times lie between two that find the same
  * index find it too. */
-int overlap_pair_search(int first, int count, int start, float pt, __global const float* slice_t) {
+AP_INLINE int overlap_pair_search(int first, int count, int start, float pt, __global const float* slice_t) {
   int k = start < count - 2 ? start : count - 2;
   while (k > 0 && pt < slice_t[first + k]) --k;
   while (k < count - 2 && pt > slice_t[first + k + 1]) ++k;
@@ -180,20 +180,20 @@ int overlap_pair_search(int first, int count, int start, float pt, __global cons
  * two (0 for a flat pair); -1 when pt is outside the pair or the boxes miss (reference
  * overlap_slice_pair). The slice times come from slice_boxes' copy (slice_t[s] = t of the slice's
  * first vertex, the same values, one load fewer each). */
-int overlap_slice_pair(int e,
-                       int start,
-                       float pt,
-                       float ex0,
-                       float ex1,
-                       float ey0,
-                       float ey1,
-                       __global const int* element_slice_begin,
-                       __global const float* slice_t,
-                       __global const float* box_x0,
-                       __global const float* box_y0,
-                       __global const float* box_x1,
-                       __global const float* box_y1,
-                       float* w) {
+AP_INLINE int overlap_slice_pair(int e,
+                                 int start,
+                                 float pt,
+                                 float ex0,
+                                 float ex1,
+                                 float ey0,
+                                 float ey1,
+                                 __global const int* element_slice_begin,
+                                 __global const float* slice_t,
+                                 __global const float* box_x0,
+                                 __global const float* box_y0,
+                                 __global const float* box_x1,
+                                 __global const float* box_y1,
+                                 float* w) {
   const int first = element_slice_begin[e], count = element_slice_begin[e + 1] - first;
   if (count < 2) return -1;
   const int s = first + overlap_pair_search(first, count, start, pt, slice_t);
@@ -210,28 +210,28 @@ int overlap_slice_pair(int e,
  * even-odd test of (px, py) into *inside, and into *crosses whether the query edge p → n properly crosses
  * one of its edges, tried until one is found and only where the two edges' boxes meet (reference
  * overlap_polygon_walk). */
-void overlap_polygon_walk(__global const float* x,
-                          __global const float* y,
-                          __global const float* mx,
-                          __global const float* my,
-                          __global const float* hpx,
-                          __global const float* hpy,
-                          __global const float* hqx,
-                          __global const float* hqy,
-                          int lo,
-                          int hi,
-                          int edges,
-                          const CurveBasis b,
-                          float px,
-                          float py,
-                          float nx,
-                          float ny,
-                          float ex0,
-                          float ex1,
-                          float ey0,
-                          float ey1,
-                          bool* inside_out,
-                          bool* crosses_out) {
+AP_INLINE void overlap_polygon_walk(__global const float* x,
+                                    __global const float* y,
+                                    __global const float* mx,
+                                    __global const float* my,
+                                    __global const float* hpx,
+                                    __global const float* hpy,
+                                    __global const float* hqx,
+                                    __global const float* hqy,
+                                    int lo,
+                                    int hi,
+                                    int edges,
+                                    const CurveBasis b,
+                                    float px,
+                                    float py,
+                                    float nx,
+                                    float ny,
+                                    float ex0,
+                                    float ex1,
+                                    float ey0,
+                                    float ey1,
+                                    bool* inside_out,
+                                    bool* crosses_out) {
   bool inside = false, crosses = false;
   int i = 0;
 #ifdef AP_LANES
@@ -326,39 +326,39 @@ typedef struct {
  * secondary and `own` primary, and then yields when it is no larger (g at pt) than own_g or `own` is
  * secondary while e is primary; of the elements it is inside, the nearest way out, the first reaching
  * it winning. */
-void overlap_point_element(int e,
-                           bool own_secondary,
-                           float own_g,
-                           int start,
-                           float px,
-                           float py,
-                           float pt,
-                           float nx,
-                           float ny,
-                           float ex0,
-                           float ex1,
-                           float ey0,
-                           float ey1,
-                           __global const int* element_slice_begin,
-                           __global const int* slice_begin,
-                           __global const int* slice_boundary,
-                           __global const float* box_x0,
-                           __global const float* box_y0,
-                           __global const float* box_x1,
-                           __global const float* box_y1,
-                           __global const float* slice_t,
-                           __global const float* x,
-                           __global const float* y,
-                           __global const float* mx,
-                           __global const float* my,
-                           __global const float* hpx,
-                           __global const float* hpy,
-                           __global const float* hqx,
-                           __global const float* hqy,
-                           int mode,
-                           __global const float* growth,
-                           __global const uchar* element_secondary,
-                           OverlapFound* r) {
+AP_INLINE void overlap_point_element(int e,
+                                     bool own_secondary,
+                                     float own_g,
+                                     int start,
+                                     float px,
+                                     float py,
+                                     float pt,
+                                     float nx,
+                                     float ny,
+                                     float ex0,
+                                     float ex1,
+                                     float ey0,
+                                     float ey1,
+                                     __global const int* element_slice_begin,
+                                     __global const int* slice_begin,
+                                     __global const int* slice_boundary,
+                                     __global const float* box_x0,
+                                     __global const float* box_y0,
+                                     __global const float* box_x1,
+                                     __global const float* box_y1,
+                                     __global const float* slice_t,
+                                     __global const float* x,
+                                     __global const float* y,
+                                     __global const float* mx,
+                                     __global const float* my,
+                                     __global const float* hpx,
+                                     __global const float* hpy,
+                                     __global const float* hqx,
+                                     __global const float* hqy,
+                                     int mode,
+                                     __global const float* growth,
+                                     __global const uchar* element_secondary,
+                                     OverlapFound* r) {
   float w;
   const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_t, box_x0, box_y0,
                                    box_x1, box_y1, &w);
@@ -392,17 +392,17 @@ void overlap_point_element(int e,
  * AP_SPAN_LISTS lists in begin/end, or *every (no grid, a NaN, a box over more than 2 x 2 cells,
  * more cells than lists) for every element. Every element whose slice-pair box meets the query box
  * somewhere in t0 … t1 is listed (the cell of each coordinate never decreases as it grows). */
-int overlap_span_lists(const OverlapGridInfo grid,
-                       __global const int* grid_start,
-                       float ex0,
-                       float ex1,
-                       float ey0,
-                       float ey1,
-                       float t0,
-                       float t1,
-                       int* begin,
-                       int* end,
-                       bool* every) {
+AP_INLINE int overlap_span_lists(const OverlapGridInfo grid,
+                                 __global const int* grid_start,
+                                 float ex0,
+                                 float ex1,
+                                 float ey0,
+                                 float ey1,
+                                 float t0,
+                                 float t1,
+                                 int* begin,
+                                 int* end,
+                                 bool* every) {
   *every = grid.nx == 0 || isnan(ex0) || isnan(ex1) || isnan(ey0) || isnan(ey1) || isnan(t0) || isnan(t1);
   int lists = 0;
   if (*every) return 0;

@@ -41,20 +41,20 @@ void repulsion_add_partial(int k, float ux, float uy, float ut, float eps, float
  * (slot order within every partial). Lanes of the own element, or with d2 = 0 (w inf, NaN), add +0
  * instead of being skipped. The same float operations as the one-slot loop, which takes the rest of the
  * range (all of it on a GPU), and as the reference. */
-void repulsion_near_slots(int2 range,
-                          int own,
-                          int own_only,
-                          float px,
-                          float py,
-                          float pt,
-                          float eps,
-                          __global const int* slot_element,
-                          __global const float* slot_vertices,
-                          int slots,
-                          float4* ax_sum,
-                          float4* ay_sum,
-                          float4* at_sum,
-                          float* closest2) {
+AP_INLINE void repulsion_near_slots(int2 range,
+                                    int own,
+                                    int own_only,
+                                    float px,
+                                    float py,
+                                    float pt,
+                                    float eps,
+                                    __global const int* slot_element,
+                                    __global const float* slot_vertices,
+                                    int slots,
+                                    float4* ax_sum,
+                                    float4* ay_sum,
+                                    float4* at_sum,
+                                    float* closest2) {
   __global const float* ax = slot_vertices + AP_SLOT_AX * slots;
   __global const float* ay = slot_vertices + AP_SLOT_AY * slots;
   __global const float* at = slot_vertices + AP_SLOT_AT * slots;
@@ -119,28 +119,28 @@ void repulsion_near_slots(int2 range,
 /** Far term of Eq. 1 for the cells cx_lo … cx_hi of row (cy, ct), from triangles not owned by `own` (with
  * own_only, owned by it) (repulsion.cpp): every triangle's centroid in slot order, or with far_cells
  * the row's runs in order (grid_runs), a run's mean centroid counted once per triangle of the run. */
-void repulsion_far_slots(const GridInfo grid,
-                         __global const int* cell_start,
-                         int cy,
-                         int ct,
-                         int cx_lo,
-                         int cx_hi,
-                         int own,
-                         int own_only,
-                         float px,
-                         float py,
-                         float pt,
-                         float eps,
-                         __global const int* slot_element,
-                         __global const float* slot_cx,
-                         __global const float* slot_cy,
-                         __global const float* slot_ct,
-                         __global const int* run_start,
-                         __global const int* run_element,
-                         __global const float4* runs,
-                         float* sx,
-                         float* sy,
-                         float* st) {
+AP_INLINE void repulsion_far_slots(const GridInfo grid,
+                                   __global const int* cell_start,
+                                   int cy,
+                                   int ct,
+                                   int cx_lo,
+                                   int cx_hi,
+                                   int own,
+                                   int own_only,
+                                   float px,
+                                   float py,
+                                   float pt,
+                                   float eps,
+                                   __global const int* slot_element,
+                                   __global const float* slot_cx,
+                                   __global const float* slot_cy,
+                                   __global const float* slot_ct,
+                                   __global const int* run_start,
+                                   __global const int* run_element,
+                                   __global const float4* runs,
+                                   float* sx,
+                                   float* sy,
+                                   float* st) {
   if (grid.far_cells) {
     const int2 range = grid_row_range(grid, run_start, cy, ct, cx_lo, cx_hi);
     for (int r = range.x; r < range.y; ++r) {

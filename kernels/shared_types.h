@@ -8,6 +8,17 @@
 #ifdef __OPENCL_VERSION__
 typedef int ap_int;
 typedef float ap_float;
+/* A helper the repulsion and overlap kernels call many times per work-item (per grid row, per lane
+ * group, per candidate element): on a CPU device (built with AP_NEAR_LANES, program.cpp) inlined, so
+ * it does not pay a call, spilled vector registers and results through memory at each
+ * (docs/architecture.md, "Inlined helpers"). Inlining changes no float operation, so no bit. Left to
+ * the compiler elsewhere: a GPU compiler inlines on its own, and Oclgrind crashes on the inlined
+ * repulsion kernel. */
+#ifdef AP_NEAR_LANES
+#define AP_INLINE __attribute__((always_inline))
+#else
+#define AP_INLINE
+#endif
 #else
 #include <cstdint>
 typedef std::int32_t ap_int;
