@@ -12,40 +12,34 @@
 float ap_min(float a, float b) { return b < a ? b : a; }
 float ap_max(float a, float b) { return a < b ? b : a; }
 
+/** What the overlap test reads of the curve between slices (the reference's state positions and
+ * CurveTangents): every vertex's position, its tangent (curve_tangents) and its Bézier handles towards
+ * the next slice (hp*) and the one before (hq*), which slice_boxes keeps. */
+typedef struct {
+  __global const float* x;
+  __global const float* y;
+  __global const float* mx;
+  __global const float* my;
+  __global const float* hpx;
+  __global const float* hpy;
+  __global const float* hqx;
+  __global const float* hqy;
+} CurveArrays;
+
 /** Vertex k's position on its curve at weights b between the slices whose first vertices are lo and hi
  * (reference curve_point in overlap.cpp), with the Bézier handles slice_boxes computed: hp* at lo's
  * vertex towards hi, hq* at hi's towards lo (curve_value's p and q, the same operands). */
-AP_INLINE void curve_point(__global const float* x,
-                           __global const float* y,
-                           __global const float* mx,
-                           __global const float* my,
-                           __global const float* hpx,
-                           __global const float* hpy,
-                           __global const float* hqx,
-                           __global const float* hqy,
-                           int lo,
-                           int hi,
-                           int k,
-                           const CurveBasis b,
-                           float* px,
-                           float* py) {
+AP_INLINE void curve_point(const CurveArrays curve, int lo, int hi, int k, const CurveBasis b, float* px, float* py) {
   /* The handles only on the spline (slice_boxes writes them only there). */
-  const float p_x = b.spline ? hpx[lo + k] : 0.0f, q_x = b.spline ? hqx[hi + k] : 0.0f;
-  const float p_y = b.spline ? hpy[lo + k] : 0.0f, q_y = b.spline ? hqy[hi + k] : 0.0f;
-  *px = curve_value_handles(x[lo + k], x[hi + k], mx[lo + k], mx[hi + k], b, p_x, q_x);
-  *py = curve_value_handles(y[lo + k], y[hi + k], my[lo + k], my[hi + k], b, p_y, q_y);
+  const float p_x = b.spline ? curve.hpx[lo + k] : 0.0f, q_x = b.spline ? curve.hqx[hi + k] : 0.0f;
+  const float p_y = b.spline ? curve.hpy[lo + k] : 0.0f, q_y = b.spline ? curve.hqy[hi + k] : 0.0f;
+  *px = curve_value_handles(curve.x[lo + k], curve.x[hi + k], curve.mx[lo + k], curve.mx[hi + k], b, p_x, q_x);
+  *py = curve_value_handles(curve.y[lo + k], curve.y[hi + k], curve.my[lo + k], curve.my[hi + k], b, p_y, q_y);
 }
 
 /** Edge i → i + 1 (wrapping at `edges`) of the boundary polygon on the curve at weights b between the
  * slices whose first vertices are lo and hi (reference overlap_edge). */
-void overlap_edge(__global const float* x,
-                  __global const float* y,
-                  __global const float* mx,
-                  __global const float* my,
-                  __global const float* hpx,
-                  __global const float* hpy,
-                  __global const float* hqx,
-                  __global const float* hqy,
+void overlap_edge(const CurveArrays curve,
                   int lo,
                   int hi,
                   int i,
@@ -56,30 +50,20 @@ void overlap_edge(__global const float* x,
                   float* bx,
                   float* by) {
   const int j = i + 1 == edges ? 0 : i + 1;
-  curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, ax, ay);
-  curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, j, b, bx, by);
+  curve_point(curve, lo, hi, i, b, ax, ay);
+  curve_point(curve, lo, hi, j, b, bx, by);
 }
 
 #ifdef AP_LANES
 /** curve_point for vertices k … k + AP_LANES − 1, one per lane. */
-AP_INLINE void curve_point_lanes(__global const float* x,
-                                 __global const float* y,
-                                 __global const float* mx,
-                                 __global const float* my,
-                                 __global const float* hpx,
-                                 __global const float* hpy,
-                                 __global const float* hqx,
-                                 __global const float* hqy,
-                                 int lo,
-                                 int hi,
-                                 int k,
-                                 const CurveBasis b,
-                                 ap_floatv* px,
-                                 ap_floatv* py) {
-  *px = curve_value_lanes(ap_vloadf(0, x + lo + k), ap_vloadf(0, x + hi + k), ap_vloadf(0, mx + lo + k),
-                          ap_vloadf(0, mx + hi + k), b, hpx + lo + k, hqx + hi + k);
-  *py = curve_value_lanes(ap_vloadf(0, y + lo + k), ap_vloadf(0, y + hi + k), ap_vloadf(0, my + lo + k),
-                          ap_vloadf(0, my + hi + k), b, hpy + lo + k, hqy + hi + k);
+AP_INLINE void
+curve_point_lanes(const CurveArrays curve, int lo, int hi, int k, const CurveBasis b, ap_floatv* px, ap_floatv* py) {
+  *px =
+      curve_value_lanes(ap_vloadf(0, curve.x + lo + k), ap_vloadf(0, curve.x + hi + k), ap_vloadf(0, curve.mx + lo + k),
+                        ap_vloadf(0, curve.mx + hi + k), b, curve.hpx + lo + k, curve.hqx + hi + k);
+  *py =
+      curve_value_lanes(ap_vloadf(0, curve.y + lo + k), ap_vloadf(0, curve.y + hi + k), ap_vloadf(0, curve.my + lo + k),
+                        ap_vloadf(0, curve.my + hi + k), b, curve.hpy + lo + k, curve.hqy + hi + k);
 }
 
 #endif
@@ -210,14 +194,7 @@ AP_INLINE int overlap_slice_pair(int e,
  * even-odd test of (px, py) into *inside, and into *crosses whether the query edge p → n properly crosses
  * one of its edges, tried until one is found and only where the two edges' boxes meet (reference
  * overlap_polygon_walk). */
-AP_INLINE void overlap_polygon_walk(__global const float* x,
-                                    __global const float* y,
-                                    __global const float* mx,
-                                    __global const float* my,
-                                    __global const float* hpx,
-                                    __global const float* hpy,
-                                    __global const float* hqx,
-                                    __global const float* hqy,
+AP_INLINE void overlap_polygon_walk(const CurveArrays curve,
                                     int lo,
                                     int hi,
                                     int edges,
@@ -241,8 +218,8 @@ AP_INLINE void overlap_polygon_walk(__global const float* x,
    * lanes"). */
   for (; i + AP_LANES < edges; i += AP_LANES) {
     ap_floatv ax, ay, bx, by;
-    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, &ax, &ay);
-    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i + 1, b, &bx, &by);
+    curve_point_lanes(curve, lo, hi, i, b, &ax, &ay);
+    curve_point_lanes(curve, lo, hi, i + 1, b, &bx, &by);
     inside = inside != ((ap_lane_count(ray_crosses_segments(px, py, ax, ay, bx, by)) & 1) != 0);
     if (!crosses) crosses = any(edges_cross_properly(px, py, nx, ny, ex0, ex1, ey0, ey1, ax, ay, bx, by));
   }
@@ -252,9 +229,9 @@ AP_INLINE void overlap_polygon_walk(__global const float* x,
   if (i < edges && edges >= AP_LANES) {
     const int base = edges - AP_LANES;
     ap_floatv ax, ay;
-    curve_point_lanes(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, base, b, &ax, &ay);
+    curve_point_lanes(curve, lo, hi, base, b, &ax, &ay);
     float first_x, first_y;
-    curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, 0, b, &first_x, &first_y);
+    curve_point(curve, lo, hi, 0, b, &first_x, &first_y);
     const ap_uintv next = ap_lane_index() + 1u; /* lane AP_LANES: the second operand's lane 0 */
     const ap_floatv bx = shuffle2(ax, (ap_floatv)(first_x), next), by = shuffle2(ay, (ap_floatv)(first_y), next);
     const ap_intv fresh = ap_lane_index_int() + base >= i;
@@ -265,10 +242,10 @@ AP_INLINE void overlap_polygon_walk(__global const float* x,
 #endif
   /* Each edge's end is the next one's start: one curve point per vertex (the same value either way). */
   float ax = 0.0f, ay = 0.0f;
-  if (i < edges) curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, b, &ax, &ay);
+  if (i < edges) curve_point(curve, lo, hi, i, b, &ax, &ay);
   for (; i < edges; ++i) {
     float bx, by;
-    curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i + 1 == edges ? 0 : i + 1, b, &bx, &by);
+    curve_point(curve, lo, hi, i + 1 == edges ? 0 : i + 1, b, &bx, &by);
     if (ray_crosses_segment(px, py, ax, ay, bx, by)) inside = !inside;
     if (!crosses && ap_max(ax, bx) >= ex0 && ap_min(ax, bx) <= ex1 && ap_max(ay, by) >= ey0 && ap_min(ay, by) <= ey1 &&
         segments_cross_properly(px, py, nx, ny, ax, ay, bx, by))
@@ -281,14 +258,7 @@ AP_INLINE void overlap_polygon_walk(__global const float* x,
 
 /** The way out of a point inside the polygon on the curve: its nearest outline point (*qx, *qy), the
  * first edge reaching the minimum winning; returns the squared distance (reference overlap_way_out). */
-float overlap_way_out(__global const float* x,
-                      __global const float* y,
-                      __global const float* mx,
-                      __global const float* my,
-                      __global const float* hpx,
-                      __global const float* hpy,
-                      __global const float* hqx,
-                      __global const float* hqy,
+float overlap_way_out(const CurveArrays curve,
                       int lo,
                       int hi,
                       int edges,
@@ -302,7 +272,7 @@ float overlap_way_out(__global const float* x,
   *qy = py;
   for (int i = 0; i < edges; ++i) {
     float ax, ay, bx, by, cx, cy;
-    overlap_edge(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
+    overlap_edge(curve, lo, hi, i, edges, b, &ax, &ay, &bx, &by);
     const float d2 = closest_point_on_segment(px, py, ax, ay, bx, by, &cx, &cy);
     if (d2 < near2) near2 = d2, *qx = cx, *qy = cy;
   }
@@ -347,14 +317,7 @@ AP_INLINE void overlap_point_element(int e,
                                      __global const float* box_x1,
                                      __global const float* box_y1,
                                      __global const float* slice_t,
-                                     __global const float* x,
-                                     __global const float* y,
-                                     __global const float* mx,
-                                     __global const float* my,
-                                     __global const float* hpx,
-                                     __global const float* hpy,
-                                     __global const float* hqx,
-                                     __global const float* hqy,
+                                     const CurveArrays curve,
                                      int mode,
                                      __global const float* growth,
                                      __global const uchar* element_secondary,
@@ -366,13 +329,11 @@ AP_INLINE void overlap_point_element(int e,
   const int lo = slice_begin[s], hi = slice_begin[s + 1], edges = slice_boundary[s];
   const CurveBasis b = curve_basis(w, slice_t[s + 1] - slice_t[s], mode);
   bool inside, crosses;
-  overlap_polygon_walk(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside,
-                       &crosses);
+  overlap_polygon_walk(curve, lo, hi, edges, b, px, py, nx, ny, ex0, ex1, ey0, ey1, &inside, &crosses);
   /* Only a point inside needs its way out: a second walk, since most elements tried are near and not
    * entered. */
   float cqx = px, cqy = py;
-  const float near2 =
-      inside ? overlap_way_out(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
+  const float near2 = inside ? overlap_way_out(curve, lo, hi, edges, b, px, py, &cqx, &cqy) : INFINITY;
   if (crosses) r->overlap = 1;
   const bool other_secondary = element_secondary[e] != 0;
   if ((crosses || inside) && !(other_secondary && !own_secondary)) {
@@ -467,14 +428,7 @@ void overlap_points(int count,
                     __global const float* box_x1,
                     __global const float* box_y1,
                     __global const float* slice_t,
-                    __global const float* x,
-                    __global const float* y,
-                    __global const float* mx,
-                    __global const float* my,
-                    __global const float* hpx,
-                    __global const float* hpy,
-                    __global const float* hqx,
-                    __global const float* hqy,
+                    const CurveArrays curve,
                     int mode,
                     __global const float* growth,
                     __global const uchar* element_secondary,
@@ -525,8 +479,7 @@ void overlap_points(int count,
     for (int j = 0; j < count; ++j)
       overlap_point_element(e, own_secondary, own_g, start[j], px[j], py[j], pt[j], nx[j], ny[j], ex0[j], ex1[j],
                             ey0[j], ey1[j], element_slice_begin, slice_begin, slice_boundary, box_x0, box_y0, box_x1,
-                            box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode, growth, element_secondary,
-                            &found[j]);
+                            box_y1, slice_t, curve, mode, growth, element_secondary, &found[j]);
   }
   for (int j = 0; j < count; ++j) overlap_fold(found[j], px[j], py[j], bits, depth2, out_x, out_y);
 }
@@ -548,15 +501,8 @@ uchar overlap_test(int v,
                    __global const float* box_x1,
                    __global const float* box_y1,
                    __global const float* slice_t,
-                   __global const float* x,
-                   __global const float* y,
                    __global const float* t,
-                   __global const float* mx,
-                   __global const float* my,
-                   __global const float* hpx,
-                   __global const float* hpy,
-                   __global const float* hqx,
-                   __global const float* hqy,
+                   const CurveArrays curve,
                    int mode,
                    __global const float* growth,
                    __global const uchar* element_secondary,
@@ -579,7 +525,8 @@ uchar overlap_test(int v,
   float px[AP_OVERLAP_BATCH], py[AP_OVERLAP_BATCH], pt[AP_OVERLAP_BATCH], nx[AP_OVERLAP_BATCH], ny[AP_OVERLAP_BATCH];
   int start[AP_OVERLAP_BATCH];
   /* v itself first, sharing a batch with the points after it. */
-  px[0] = x[v], py[0] = y[v], pt[0] = t[v], nx[0] = x[next], ny[0] = y[next], start[0] = own_index;
+  px[0] = curve.x[v], py[0] = curve.y[v], pt[0] = t[v], nx[0] = curve.x[next], ny[0] = curve.y[next];
+  start[0] = own_index;
   int count = 1;
   const float denominator = (float)(interval_points + 1);
   for (int side = 0; side < 2; ++side) {
@@ -593,28 +540,28 @@ uchar overlap_test(int v,
     for (int j = 1; 2 * j <= interval_points + 1; ++j) {
       if (count == AP_OVERLAP_BATCH) {
         overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                       slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
-                       growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                       slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, curve, mode, growth, element_secondary,
+                       grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
         count = 0;
       }
       const float f = (float)j / denominator;
       pt[count] = t[v] + (t[w] - t[v]) * f;
       const CurveBasis b = curve_basis(step > 0 ? f : 1.0f - f, h, mode);
-      curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, k, b, &px[count], &py[count]);
-      curve_point(x, y, mx, my, hpx, hpy, hqx, hqy, lo, hi, kn, b, &nx[count], &ny[count]);
+      curve_point(curve, lo, hi, k, b, &px[count], &py[count]);
+      curve_point(curve, lo, hi, kn, b, &nx[count], &ny[count]);
       start[count] = step > 0 ? own_index : own_index - 1;
       ++count;
     }
     /* A side's points lie near v and each other: one batch each, v's with the first side's. */
     overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
-                   growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, curve, mode, growth, element_secondary,
+                   grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
     count = 0;
   }
   if (count > 0)
     overlap_points(count, px, py, pt, nx, ny, start, own, own_g, elements, element_slice_begin, slice_begin,
-                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, x, y, mx, my, hpx, hpy, hqx, hqy, mode,
-                   growth, element_secondary, grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
+                   slice_boundary, box_x0, box_y0, box_x1, box_y1, slice_t, curve, mode, growth, element_secondary,
+                   grid, grid_start, grid_elements, &bits, &depth2, out_x, out_y);
   return bits;
 }
 

@@ -289,10 +289,11 @@ __kernel void repulsion_force(const GridInfo grid,
   const float px = x[v], py = y[v], pt = t[v];
   const int own = element[v];
   float way_out_x, way_out_y;
-  const uchar bits = overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin,
-                                  slice_boundary, box_x0, box_y0, box_x1, box_y1, box_t, x, y, t, tangent_x, tangent_y,
-                                  handle_px, handle_py, handle_qx, handle_qy, p.motion_curve, growth, element_secondary,
-                                  *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
+  const CurveArrays curve = {x, y, tangent_x, tangent_y, handle_px, handle_py, handle_qx, handle_qy};
+  const uchar bits =
+      overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
+                   box_x0, box_y0, box_x1, box_y1, box_t, t, curve, p.motion_curve, growth, element_secondary,
+                   *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx, sy, st, closest2;
