@@ -143,7 +143,7 @@ const std::array<ParamInfo, 52> table{{
      "the stall test runs this many times per window, each over the last stall_window steps; 1: once per window",
      "not in the paper"},
     {"check_interval", "stop", field<&Params::stop, &Params::Stop::check_interval>(), 1, 100000,
-     "NaN check and statistics every k steps", "none"},
+     "NaN check and statistics every k steps (a settling run tests for a clean step after every step)", "none"},
 }};
 
 }  // namespace

@@ -84,6 +84,45 @@ TEST_CASE("run: the gap test with overlaps left starts settling, which stops whe
   CHECK(r.last_good.iteration == 620);
 }
 
+TEST_CASE("run: settling tests every step, so an overlap that flickers stops at its first clean step") {
+  // The gap test passes at 500; settling leaves 3 vertices overlapping at every step but 617, between two
+  // checks. A check every 10 steps alone never sees a clean step and ends unsettled at 800.
+  ScriptedBackend b([](std::uint64_t i, bool settling) {
+    const float gap = i >= 500 ? 0.001f : 0.1f;
+    return growing(1.0 + 0.001 * double(i), gap, settling && i == 617 ? 0 : 3);
+  });
+  const RunResult r = run(b, run_params());
+  CHECK(r.reason == StopReason::gap);
+  CHECK(r.last_good.settling_since == 500);
+  CHECK(r.last_good.iteration == 617);
+  CHECK(r.last.iteration == 617);  // the statistics of the step it stopped on
+}
+
+TEST_CASE("run: a clean step between the checks that is not finite does not stop the settling") {
+  // 613 reports nothing overlapping but a non-finite vertex: the next check (620) is the one that sees it.
+  ScriptedBackend b([](std::uint64_t i, bool settling) {
+    StepStatistics st = growing(1.0 + 0.001 * double(i), i >= 500 ? 0.001f : 0.1f, settling && i >= 640 ? 0 : 3);
+    if (i == 613) st.overlapping_vertices = 0, st.finite = false, st.first_bad_vertex = 4;
+    return st;
+  });
+  const RunResult r = run(b, run_params());
+  CHECK(r.reason == StopReason::gap);
+  CHECK(r.last_good.iteration == 640);
+}
+
+TEST_CASE("run: growing, the statistics are read only every check_interval steps") {
+  // Nothing overlaps at 413, before growth has stopped: that is no stop, and no read between the checks.
+  int reads = 0;
+  ScriptedBackend b([&](std::uint64_t i, bool settling) {
+    ++reads;
+    return growing(1.0 + 0.001 * double(i), i >= 500 ? 0.001f : 0.1f, i == 413 || (settling && i >= 700) ? 0 : 3);
+  });
+  const RunResult r = run(b, run_params());
+  CHECK(r.last_good.settling_since == 500);
+  CHECK(r.last_good.iteration == 700);
+  CHECK(reads == 50 + 200);  // checks at 10 ... 500, then every settling step 501 ... 700
+}
+
 TEST_CASE("run: growth that stalls short of the gap test settles and stops as stalled") {
   // Mean g rises until 400, then wobbles by less than 1 % per window; the gap never closes.
   ScriptedBackend b([](std::uint64_t i, bool settling) {

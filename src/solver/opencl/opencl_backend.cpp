@@ -4,8 +4,8 @@
 // → scatter) from the cell ids read back, and the overlap test's broadphase from the slice boxes read
 // back every step (overlap_broadphase.cpp), and the repulsion kernel's work order by cell, refreshed every
 // 100 steps (boundary_order.cpp). Statistics are per-slice reductions read on demand (every
-// check_interval steps), and the full state comes back only in state(). The topology and scratch
-// buffers are made in device_buffers.cpp.
+// check_interval steps, and every step while the run settles), and the full state comes back only in
+// state(). The topology and scratch buffers are made in device_buffers.cpp.
 #include <algorithm>
 #include <chrono>
 #include <limits>
