@@ -99,7 +99,8 @@ TEST_CASE("run: settling tests every step, so an overlap that flickers stops at 
 }
 
 TEST_CASE("run: a clean step between the checks that is not finite does not stop the settling") {
-  // 613 reports nothing overlapping but a non-finite vertex: the next check (620) is the one that sees it.
+  // 613 reports nothing overlapping but a non-finite vertex: no stop there (a NaN that stays is the next
+  // check's to report); the run goes on to the first clean, finite step.
   ScriptedBackend b([](std::uint64_t i, bool settling) {
     StepStatistics st = growing(1.0 + 0.001 * double(i), i >= 500 ? 0.001f : 0.1f, settling && i >= 640 ? 0 : 3);
     if (i == 613) st.overlapping_vertices = 0, st.finite = false, st.first_bad_vertex = 4;
