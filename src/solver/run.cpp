@@ -34,6 +34,10 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   std::uint64_t iteration = result.last_good.iteration;
   const auto rebuild = static_cast<std::uint64_t>(params.forces.grid_rebuild_interval);
   const auto check = static_cast<std::uint64_t>(params.stop.check_interval);
+  // Nothing overlapping another element and nothing outside the container: what a settling run waits for.
+  const auto clean_step = [](const StepStatistics& st) {
+    return st.overlapping_vertices == 0 && st.outside_vertices == 0;
+  };
   for (;;) {
     // An interrupt is honoured on a grid-rebuild boundary, so a resumed run rebuilds the grid at the
     // same steps as an uninterrupted one and stays bit-identical.
@@ -47,22 +51,16 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     }
     backend.step();
     ++iteration;
-    if (iteration % check != 0) {
-      // While settling, the overlaps left flicker in and out as the meshes relax, so a statistics check
-      // every check_interval steps rarely lands on a clean step: the clean test runs after every step
-      // (docs/parameters.md, "Stop test"). Only the stop is taken here; a step that is not clean, or not
-      // finite, waits for the next regular check, so the marks and the last good state stay on its grid.
-      if (result.last_good.settling_since == 0) continue;
-      const StepStatistics now = backend.statistics();
-      if (!now.finite || now.overlapping_vertices != 0 || now.outside_vertices != 0) continue;
-      result.last = now;
-      if (control.on_check) control.on_check(result.last);
-      result.reason =
-          result.last.max_slice_gap < static_cast<float>(params.stop.stop_gap) ? StopReason::gap : StopReason::stalled;
-      break;
-    }
-
-    result.last = backend.statistics();
+    // While settling, the overlaps left flicker in and out as the meshes relax, so a statistics check
+    // every check_interval steps rarely lands on a clean step: a settling run reads the statistics after
+    // every step (docs/parameters.md, "Stop test"). Between the checks only a clean, finite step goes on
+    // to the checks below (where it stops the run); the others wait for the next regular check, so the
+    // marks and the last good state stay on its grid.
+    const bool at_check = iteration % check == 0;
+    if (!at_check && result.last_good.settling_since == 0) continue;
+    const StepStatistics now = backend.statistics();
+    if (!at_check && !(now.finite && clean_step(now))) continue;
+    result.last = now;
     if (!result.last.finite) {
       result.reason = StopReason::non_finite;
       break;
@@ -71,7 +69,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
     if (control.on_check) control.on_check(result.last);
     // §5.3's gap test ends growth; then the packing settles without growing until nothing overlaps or
     // spills (docs/parameters.md, "Stop test"), so a packing that stops is one the solver sees as correct.
-    const bool clean = result.last.overlapping_vertices == 0 && result.last.outside_vertices == 0;
+    const bool clean = clean_step(result.last);
     std::uint64_t settling_since = result.last_good.settling_since;
     // The stall test's progress mark, here and in the state the backend saves: the mean g now, the
     // marks before it moved one back (`fresh`: none before it, as when the secondary elements start).
