@@ -307,6 +307,15 @@ struct MotionMetrics {
   /// has no second difference (the first and last frames when the world does not loop). Over
   /// acceleration_median it is the frame's own kink, which shows where the jolts are (`animpak report`).
   std::vector<double> frame_peak;
+  /// Per element, how far it moves over the loop (docs/quality.md, "Motion"): the largest distance of its
+  /// art's centroid from its mean place over the frames (how far it steps aside to let a traveller by, or
+  /// how far a traveller travels), and the length of the centroid's path per loop, frame to frame, in
+  /// container units. `guided` says which elements are guided: the motion line sums up the others.
+  std::vector<double> detour, path_length;
+  std::vector<bool> guided;
+  /// Per element, its start's smallest scale over its largest (ElementInstance::dip): below 1 where its
+  /// script gives way to a traveller.
+  std::vector<double> dip;
   /// 99th percentile over median of the acceleration (infinite when the median is 0).
   double kink() const {
     return acceleration_median > 0.0 ? acceleration_p99 / acceleration_median : std::numeric_limits<double>::infinity();

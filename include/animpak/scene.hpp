@@ -99,6 +99,9 @@ struct ElementInstance {
   int slice_begin = 0;     ///< its first global slice id
   Vec2 position;           ///< unit coordinates of its seed (unguided) or first target (guided)
   double angle = 0.0;      ///< radians, clockwise on screen
+  /// Its smallest start scale over its largest: below 1 where its script dips while a traveller passes
+  /// (params.make_way_dip, docs/parameters.md, "Making way"); 1 for an unguided element that never dips.
+  double dip = 1.0;
 };
 
 /// Everything a simulation starts from.

@@ -152,6 +152,13 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
   nlohmann::json sizes = nlohmann::json::array();
   for (std::size_t e = 0; e < m.size_over_script.size() && e < w.elements.size(); ++e)
     sizes.push_back({{"element", w.elements[e].name}, {"ratio", m.size_over_script[e]}});
+  nlohmann::json moves = nlohmann::json::array();
+  for (std::size_t e = 0; e < m.detour.size() && e < w.elements.size(); ++e)
+    moves.push_back({{"element", w.elements[e].name},
+                     {"guided", w.elements[e].guided},
+                     {"detour", m.detour[e]},
+                     {"dip", w.elements[e].dip},
+                     {"path_length", m.path_length[e]}});
   nlohmann::json peaks = nlohmann::json::array();
   for (const double peak : m.frame_peak)
     peaks.push_back(std::isfinite(peak) ? nlohmann::json(peak) : nlohmann::json(nullptr));
@@ -159,7 +166,8 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
       {"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}, {"frame_peak", peaks}}},
       {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
       {"slice_ratio", std::isfinite(m.slice_ratio) ? nlohmann::json(m.slice_ratio) : nlohmann::json(nullptr)},
-      {"size_over_script", sizes}};
+      {"size_over_script", sizes},
+      {"movement", moves}};
 }
 
 // Through a temporary file and a rename (replace_file), so that a failed write never loses the statistics
@@ -197,7 +205,31 @@ std::string motion_line(const MotionMetrics& m) {
                 "slice over elsewhere), area over the script's varies %.2fx (median element; worst %.2fx)",
                 kink_text(kink).c_str(), slices_text(m.slice_ratio).c_str(),
                 sizes.empty() ? 1.0 : sizes[sizes.size() / 2], sizes.empty() ? 1.0 : sizes.back());
-  return line;
+  // How far the unguided elements move over the loop where a traveller passes them.
+  if (std::find(m.guided.begin(), m.guided.end(), true) == m.guided.end()) return line;
+  std::vector<double> detours, paths;
+  for (std::size_t e = 0; e < m.detour.size(); ++e)
+    if (e >= m.guided.size() || !m.guided[e]) detours.push_back(m.detour[e]), paths.push_back(m.path_length[e]);
+  if (detours.empty()) return line;
+  std::sort(detours.begin(), detours.end());
+  std::sort(paths.begin(), paths.end());
+  char moves[200];
+  std::snprintf(moves, sizeof moves,
+                ", unguided elements stray %.3f from their mean place (median; largest %.3f) on a path of %.3f a "
+                "loop (median; longest %.3f)",
+                detours[detours.size() / 2], detours.back(), paths[paths.size() / 2], paths.back());
+  std::string out = std::string(line) + moves;
+  int dipping = 0;
+  double deepest = 1.0;
+  for (const double d : m.dip)
+    if (d < 1.0) ++dipping, deepest = std::min(deepest, d);
+  if (dipping > 0) {
+    char dips[160];
+    std::snprintf(dips, sizeof dips, "; %d scripts give way to a traveller, down to %.2fx their size", dipping,
+                  deepest);
+    out += dips;
+  }
+  return out;
 }
 
 std::string quality_lines(const PackingQuality& quality) {

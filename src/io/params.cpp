@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 52> table{{
+const std::array<ParamInfo, 54> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -46,6 +46,14 @@ const std::array<ParamInfo, 52> table{{
      "a guided element's initial path through its targets: 1 a smooth curve in t (periodic through loop "
      "partners); 0 straight lines between targets (0.6.0)",
      "a polygonal extrusion (§4)"},
+    {"make_way", "placement", field<&Params::placement, &Params::Placement::make_way>(), 0.0, 0.9,
+     "unguided elements start on paths that step aside while a guided element passes: the share of the "
+     "container their stand-in discs cover while making way (0: seeds kept off the guided paths, straight starts)",
+     "seeds rejected where they meet a guided volume, straight extrusions (§4)"},
+    {"make_way_dip", "placement", field<&Params::placement, &Params::Placement::make_way_dip>(), 1.0, 2.0,
+     "while a guided element passes, an unguided element's script is scaled down by up to this factor (a size "
+     "that gives way; 1: none)",
+     "not in the paper"},
     {"k_repulsion", "forces", field<&Params::forces, &Params::Forces::k_repulsion>(), 0.0, inf,
      "k_rpl, repulsion strength (Eq. 1)", "k_rpl = 10 (Eq. 1)"},
     {"repulsion_epsilon", "forces", field<&Params::forces, &Params::Forces::repulsion_epsilon>(), 1e-12, inf,

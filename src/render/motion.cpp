@@ -81,6 +81,26 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
     return v.empty() ? 0.0 : s / double(v.size());
   };
   if (!at_slice.empty() && mean(elsewhere) > 0.0) m.slice_ratio = mean(at_slice) / mean(elsewhere);
+  // How far each element moves: its centroid's largest distance from its mean place, and its path per
+  // loop (across the seam into the element it loops into, as the acceleration goes).
+  for (std::size_t e = 0; e < centroids.size(); ++e) {
+    const std::vector<Vec2>& c = centroids[e];
+    Vec2 mean_place{0.0, 0.0};
+    for (const Vec2 p : c) mean_place = mean_place + p;
+    if (!c.empty()) mean_place = (1.0 / double(c.size())) * mean_place;
+    double detour = 0.0, length = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      detour = std::max(detour, std::hypot(c[i].x - mean_place.x, c[i].y - mean_place.y));
+      if (i + 1 < c.size())
+        length += std::hypot(c[i + 1].x - c[i].x, c[i + 1].y - c[i].y);
+      else if (world.loop && !centroids[loops_into[e]].empty())
+        length += std::hypot(centroids[loops_into[e]][0].x - c[i].x, centroids[loops_into[e]][0].y - c[i].y);
+    }
+    m.detour.push_back(detour);
+    m.path_length.push_back(length);
+    m.guided.push_back(e < world.elements.size() && world.elements[e].guided);
+    m.dip.push_back(e < world.elements.size() ? world.elements[e].dip : 1.0);
+  }
   // Size over script at every slice: the boundary's area over the rest copy's, the element as scripted
   // (shrunk and placed as at the start; docs/parameters.md, "Growth").
   for (std::size_t e = 0; e < world.elements.size(); ++e) {

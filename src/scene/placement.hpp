@@ -28,6 +28,7 @@ struct Placement {
   int loop_partner = -1;   ///< instance whose first slice this one's last slice meets
   int phase = 0;           ///< slices by which its animation is ahead round the loop (unguided only)
   bool secondary = false;  ///< a secondary element (unguided only; docs/parameters.md, "Secondary elements")
+  Vec2 seed;               ///< where its rest centroid was seeded (unguided only; `offset` may step aside)
 };
 
 Vec2 apply(const Placement& p, int slice, Vec2 q);
@@ -48,6 +49,13 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
 std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& container,
                                       const std::vector<SpacetimeElement>& library,
                                       const std::vector<Placement>& guided, Rng& rng, std::vector<std::string>& notes);
+
+/// Unguided elements make way for guided ones (docs/parameters.md, "Making way"): each one's offsets
+/// become a path that steps aside while a traveller passes, periodic in a looping scene, its rest
+/// centroid never nearer the wall than `margin`. Nothing changes without guided elements or with
+/// params.make_way 0. make_way.cpp.
+void make_way(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
+              const std::vector<Placement>& guided, std::vector<Placement>& unguided, double margin);
 
 /// Throws InputError naming the elements and slice where two shrunken elements overlap or one leaves
 /// the container (for a guided element: on a slice of one of its targets). When unguided elements overlap

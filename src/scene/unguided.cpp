@@ -159,6 +159,25 @@ Request request_of(const SceneSpec& scene) {
   return r;
 }
 
+// The shrunken boundary ring of every slice of one instance, and their box.
+struct PlacedRings {
+  std::vector<std::vector<Vec2>> rings;  // [slice] → boundary ring
+  Box box;
+};
+
+PlacedRings placed_rings(const Placement& p, const SpacetimeElement& e) {
+  PlacedRings out;
+  for (int s = 0; s < e.slice_count; ++s) {
+    std::vector<Vec2> ring;
+    for (int v = 0; v < e.slice.boundary_count; ++v) {
+      ring.push_back(placed(p, e, s, v));
+      out.box.add(ring.back());
+    }
+    out.rings.push_back(std::move(ring));
+  }
+  return out;
+}
+
 std::vector<Placement> unguided_placements(const SceneSpec& scene, const Container& container,
                                            const std::vector<SpacetimeElement>& library,
                                            const std::vector<Placement>& guided, Rng& rng, double& spacing) {
@@ -174,7 +193,12 @@ std::vector<Placement> unguided_placements(const SceneSpec& scene, const Contain
                      std::to_string(fixed) + ") and no element has a weight to fill the rest");
 
   const double margin = seed_margin(library, scene.params.placement.initial_scale);
-  const std::vector<Vec2> seeds = unguided_seeds(scene, container, guided, fill, wanted, margin, rng, spacing);
+  // Making way, seeds cover the whole container, the guided paths included: the elements on a path step
+  // aside while its traveller passes (make_way.cpp). Otherwise they keep off every point of every path.
+  const bool making_way = scene.params.placement.make_way > 0 && !guided.empty();
+  const std::vector<Vec2> seeds =
+      unguided_seeds(scene, container, making_way ? std::vector<Placement>{} : guided, fill, wanted, margin, rng,
+                     spacing);
   if (static_cast<int>(seeds.size()) < fixed)
     throw InputError(file + ": the elements' counts ask for " + std::to_string(fixed) + " elements but only " +
                      std::to_string(seeds.size()) + " seeds fit at params.seed_spacing " + std::to_string(spacing) +
@@ -193,6 +217,7 @@ std::vector<Placement> unguided_placements(const SceneSpec& scene, const Contain
     p.pivot = rest_centroid(e);
     const double angle = orientation(scene.orientation, container, seeds[k], rng);
     p.offset.assign(e.slice_count, seeds[k]);
+    p.seed = seeds[k];
     p.scale.assign(e.slice_count, scene.params.placement.initial_scale);
     p.angle.assign(e.slice_count, angle);
     const LibraryElementSpec& spec = scene.elements[picks[k]];
@@ -204,24 +229,21 @@ std::vector<Placement> unguided_placements(const SceneSpec& scene, const Contain
       p.phase = static_cast<int>(std::lround(spec.phase * period)) % period;
     out.push_back(std::move(p));
   }
-  return out;
-}
-
-// The shrunken boundary ring of every slice of one instance, and their box.
-struct PlacedRings {
-  std::vector<std::vector<Vec2>> rings;  // [slice] → boundary ring
-  Box box;
-};
-
-PlacedRings placed_rings(const Placement& p, const SpacetimeElement& e) {
-  PlacedRings out;
-  for (int s = 0; s < e.slice_count; ++s) {
-    std::vector<Vec2> ring;
-    for (int v = 0; v < e.slice.boundary_count; ++v) {
-      ring.push_back(placed(p, e, s, v));
-      out.box.add(ring.back());
-    }
-    out.rings.push_back(std::move(ring));
+  if (!making_way) return out;
+  make_way(scene, container, library, guided, out, margin);
+  // A seed is refused only where its element, on its path, still meets a guided element's shrunken slice
+  // at the same time (a seed pinned between a wall and a traveller); a fixed count keeps it, and the
+  // placement check names the pair.
+  if (fill) {
+    std::vector<PlacedRings> travellers;
+    for (const Placement& g : guided) travellers.push_back(placed_rings(g, library[g.library]));
+    std::erase_if(out, [&](const Placement& p) {
+      const PlacedRings mine = placed_rings(p, library[p.library]);
+      for (const PlacedRings& t : travellers)
+        for (std::size_t s = 0; s < mine.rings.size(); ++s)
+          if (rings_overlap(mine.rings[s], t.rings[s])) return true;
+      return false;
+    });
   }
   return out;
 }
@@ -382,6 +404,18 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
   std::vector<Placement> out = unguided_placements(scene, container, library, guided, rng, spacing);
   notes.push_back("seeded " + std::to_string(out.size()) + " unguided element(s) at spacing " +
                   std::to_string(spacing) + (request_of(scene).fill ? " (fill)" : ""));
+  double detour = 0.0;
+  std::size_t moved = 0;
+  for (const Placement& p : out) {
+    double largest = 0.0;
+    for (const Vec2 q : p.offset) largest = std::max(largest, norm(q - p.seed));
+    detour = std::max(detour, largest);
+    if (largest > 0.0) ++moved;
+  }
+  if (moved > 0)
+    notes.push_back("making way for " + std::to_string(guided.size()) + " guided element(s): " +
+                    std::to_string(moved) + " unguided element(s) start on paths that step aside, at most " +
+                    shown(detour) + " from their seeds (params.make_way 0: straight starts)");
   return out;
 }
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "animpak/animation.hpp"
@@ -177,8 +178,10 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   for (std::size_t i = 0; i < placements.size(); ++i) {
     const Placement& p = placements[i];
     const SpacetimeElement& e = library[p.library];
+    const auto [smallest, largest] = std::minmax_element(p.scale.begin(), p.scale.end());
     world.elements.push_back({p.name, p.library, p.guided, p.secondary, topo.vertex_count(), topo.slice_count(),
-                              p.offset.front(), p.angle.front()});
+                              p.guided ? p.offset.front() : p.seed, p.angle.front(),
+                              p.guided ? 1.0 : *smallest / *largest});
     topo.element_secondary.push_back(p.secondary ? 1 : 0);
     append_instance(topo, world.state, e, p, static_cast<int>(i));
   }

@@ -125,3 +125,26 @@ TEST_CASE("loop_neighbours: a swapping pair loops into each other, any other ele
   CHECK(loops[star].into == star);
   CHECK(loops[star].from == star);
 }
+
+TEST_CASE("measure_motion: how far each element strays from its mean place and its path per loop") {
+  const World world = tiny_star_world();  // loops: the path closes from the last frame to the first
+  const std::vector<double> times = frame_times(60, true);
+  std::vector<std::vector<Vec2>> moves(world.elements.size());
+  for (std::size_t e = 0; e < world.elements.size(); ++e)
+    for (const double t : times) {
+      // Element 0 stands still; the others circle with radius 0.1 e about (0.5, 0.5).
+      const double a = 2.0 * std::numbers::pi * t, r = 0.1 * double(e);
+      moves[e].push_back({0.5 + r * std::cos(a), 0.5 + r * std::sin(a)});
+    }
+  const MotionMetrics m = measure_motion(world, world.state, moves, times);
+  REQUIRE(m.detour.size() == world.elements.size());
+  REQUIRE(m.path_length.size() == world.elements.size());
+  CHECK(m.detour[0] == Approx(0.0).margin(1e-12));
+  CHECK(m.path_length[0] == Approx(0.0).margin(1e-12));
+  for (std::size_t e = 1; e < world.elements.size(); ++e) {
+    CHECK(m.detour[e] == Approx(0.1 * double(e)).epsilon(1e-9));
+    // 60 chords of a circle, the seam's included: 120 r sin(π/60).
+    CHECK(m.path_length[e] == Approx(120.0 * 0.1 * double(e) * std::sin(std::numbers::pi / 60.0)).epsilon(1e-9));
+    CHECK_FALSE(m.guided[e]);
+  }
+}
