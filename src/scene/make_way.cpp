@@ -189,11 +189,13 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
           x[i] = x[i] - push;
           x[j] = x[j] + push;
         }
-      // The wall's room first (a soft keep-off), then out of every traveller's way, then the hard limit:
-      // a centre at least `margin` inside, so the shrunken element is. Pushed against the wall, a disc
-      // keeps the push's share along the wall and slides round the traveller.
+      // Out of every traveller's way, then the wall's room, then the hard limit: a centre at least
+      // `margin` inside, so the shrunken element is. The wall is rigid and a traveller is not (it deforms
+      // and shrinks like any element), so between the two a disc keeps its room from the wall and overlaps
+      // the traveller's expected footprint instead; pushed against the wall, it keeps the push's share
+      // along the wall and slides round the traveller.
       for (std::size_t i = 0; i < n; ++i) {
-        Vec2 q = with_room(container, x[i], room[i]).value_or(x[i]);
+        Vec2 q = x[i];
         // No disc moves more than `max_step` a round, so none tunnels through a thin traveller or snaps
         // home through the crowd.
         if (const Vec2 step = q - before[i]; norm(step) > max_step) q = before[i] + (max_step / norm(step)) * step;
@@ -209,6 +211,7 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
           }
           q = q + push;
         }
+        q = with_room(container, q, room[i]).value_or(q);
         if (const std::optional<Vec2> inside = with_room(container, q, wall[i])) x[i] = *inside;
       }
       keep_apart(small);

@@ -216,6 +216,40 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
         stats["motion"]["acceleration"]["median"].get<double>());
   CHECK(stats["motion"]["size_over_script"].size() == 3);
   for (const auto& e : stats["motion"]["size_over_script"]) CHECK(e["ratio"].get<double>() >= 1.0);
+  // How far each element moves, and no dip: nothing travels here, so the line says nothing of it.
+  REQUIRE(stats["motion"]["movement"].size() == 3);
+  for (const auto& e : stats["motion"]["movement"]) {
+    CHECK(e["detour"].get<double>() >= 0.0);
+    CHECK(e["path_length"].get<double>() >= 2.0 * e["detour"].get<double>() - 1e-12);
+    CHECK(e["dip"].get<double>() == 1.0);
+    CHECK_FALSE(e["guided"].get<bool>());
+  }
+  CHECK_THAT(r.out, !Contains("unguided elements stray"));
+}
+
+TEST_CASE("animpak pack: with a traveller, the motion line and stats.json say how far the others move and dip") {
+  const std::string guided = R"(, "guided": [{"name": "traveller", "element": "star", "targets": [
+    {"x": 110, "y": 235, "t": 0}, {"x": 390, "y": 235, "t": 0.5}, {"x": 110, "y": 235, "t": 1}]}])";
+  const Sandbox box("traveller", animpak::test::star_scene(8, 9, 5, {guided, ""}));
+  const CommandResult r =
+      run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 10 --frames 8 --size 64");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  CHECK_THAT(r.err, Contains("unguided element(s) start on paths that step aside"));
+  CHECK_THAT(r.out, Contains("unguided elements stray ") && Contains(" a loop (median; longest ") &&
+                        Contains(" scripts give way to a traveller, down to "));
+  const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
+  const auto& moves = stats["motion"]["movement"];
+  REQUIRE(moves.size() == 9);
+  CHECK(moves[0]["element"] == "traveller");
+  CHECK(moves[0]["guided"].get<bool>());
+  // The traveller crosses most of the heart and back: its path is the longest.
+  for (std::size_t e = 1; e < moves.size(); ++e)
+    CHECK(moves[0]["path_length"].get<double>() > moves[e]["path_length"].get<double>());
+  double least = 1.0;
+  for (const auto& e : moves) least = std::min(least, e["dip"].get<double>());
+  CHECK(least < 1.0);
+  CHECK(least >= 1.0 / 1.3 - 1e-9);
 }
 
 TEST_CASE("animpak render: a packed folder moved together with its scene still renders") {
