@@ -88,6 +88,140 @@ double ring_area(const SpacetimeElement& e) {
   return std::abs(signed_area(ring));
 }
 
+using Rings = std::vector<std::vector<Vec2>>;
+
+// The travellers at one time: their footprints at the expected size (soft: the crowd's discs keep out of
+// them) and shrunken as placed (hard: the shrunken elements must not meet them), each one's heading and
+// its anchor's path point.
+struct Travellers {
+  Rings grown, shrunken;
+  std::vector<Vec2> heading, centre;
+};
+
+// Each vertex on the straight line from `a` to `b`, at `u`.
+Rings between(const Rings& a, const Rings& b, double u) {
+  Rings out = a;
+  for (std::size_t k = 0; k < out.size(); ++k)
+    for (std::size_t v = 0; v < out[k].size(); ++v) out[k][v] = out[k][v] + u * (b[k][v] - out[k][v]);
+  return out;
+}
+
+// The neighbours of slice s along t: round the loop, or held at the ends.
+std::pair<int, int> neighbours(int s, int period, bool loop) {
+  return {s > 0 ? s - 1 : (loop ? period - 1 : 0), s + 1 < period ? s + 1 : (loop ? 0 : s)};
+}
+
+// The unguided elements as discs of their expected full sizes round their centres `x`, relaxed at one time
+// after another (docs/parameters.md, "Making way").
+class Crowd {
+ public:
+  Crowd(const Container& container, double margin) : container_(container), margin_(margin) {}
+
+  void add(Vec2 seed, double radius) {
+    seed_.push_back(seed);
+    x.push_back(seed);
+    radius_.push_back(radius);
+    const double from_wall = container_.distance_to_boundary(seed);
+    // A disc keeps its full radius from the wall, or its seed's distance where the seed sits nearer: a
+    // seed is never pushed off the wall when no traveller is near.
+    room_.push_back(std::max(margin_, std::min(radius, from_wall)));
+    // The hard limit keeps a little more than the margin where the seed allows: the curve between slices
+    // (docs/parameters.md, "Motion between slices") bulges slightly past a path that slides along the wall.
+    wall_.push_back(std::max(margin_, std::min(wall_spare * margin_, from_wall)));
+  }
+
+  double radius(std::size_t i) const { return radius_[i]; }
+
+  /// `rounds` rounds of the relaxation round the travellers `t`.
+  void relax(const Travellers& t, int rounds) {
+    const std::size_t n = x.size();
+    const double max_step = 0.5 * margin_;
+    for (int round = 0; round < rounds; ++round) {
+      const std::vector<Vec2> before = x;
+      for (std::size_t i = 0; i < n; ++i) x[i] = x[i] + tie * (seed_[i] - x[i]);
+      separate([&](std::size_t i, std::size_t j) { return radius_[i] + radius_[j]; });
+      // Out of every traveller's way, then the wall's room, then the hard limit: a centre at least `margin`
+      // inside, so the shrunken element is. The wall is rigid and a traveller is not (it deforms and
+      // shrinks like any element), so between the two a disc keeps its room from the wall and overlaps the
+      // traveller's expected footprint instead; pushed against the wall, it keeps the push's share along
+      // the wall and slides round the traveller.
+      for (std::size_t i = 0; i < n; ++i) {
+        Vec2 q = x[i];
+        // No disc moves more than `max_step` a round, so none tunnels through a thin traveller or snaps
+        // home through the crowd.
+        if (const Vec2 step = q - before[i]; norm(step) > max_step) q = before[i] + (max_step / norm(step)) * step;
+        for (std::size_t k = 0; k < t.grown.size(); ++k) {
+          // Out of the traveller's way, but what would push the disc ahead of it goes to the side the disc
+          // is on instead: the crowd flows round an intruder rather than being carried along.
+          Vec2 push = out_of(t.grown[k], q, radius_[i]) - q;
+          const Vec2 v = t.heading[k], side{-v.y, v.x};
+          if (const double ahead = dot(push, v); ahead > 0) {
+            const double sign = dot(q - t.centre[k], side) >= 0 ? 1.0 : -1.0;
+            push = push - (sideways * ahead) * v + (sign * sideways * ahead) * side;
+          }
+          q = q + push;
+        }
+        q = with_room(container_, q, room_[i]).value_or(q);
+        if (const std::optional<Vec2> inside = with_room(container_, q, wall_[i])) x[i] = *inside;
+      }
+      keep_apart(t.shrunken);
+    }
+  }
+
+  /// Whether element i's centre at `q` keeps the hard limits against `others` (the other centres at the
+  /// same time) and the shrunken travellers `small`.
+  bool allowed(std::size_t i, Vec2 q, const std::vector<Vec2>& others, const Rings& small) const {
+    for (std::size_t j = 0; j < others.size(); ++j)
+      if (j != i && norm(q - others[j]) < 2.0 * margin_) return false;
+    for (const std::vector<Vec2>& ring : small)
+      if (ring_contains(ring, q) || nearest_on_ring(ring, q).distance < margin_) return false;
+    return container_.contains(q) && container_.distance_to_boundary(q) >= margin_;
+  }
+
+  std::vector<Vec2> x;  ///< the centres now
+
+ private:
+  // Every overlapping pair pushed apart, each by half the overlap, in index order.
+  template <class Reach>
+  void separate(Reach reach) {
+    for (std::size_t i = 0; i < x.size(); ++i)
+      for (std::size_t j = i + 1; j < x.size(); ++j) {
+        const Vec2 d = x[j] - x[i];
+        const double dist = norm(d), overlap = reach(i, j) - dist;
+        if (!(overlap > 0) || !(dist > 0)) continue;
+        const Vec2 push = (0.5 * overlap / dist) * d;
+        x[i] = x[i] - push;
+        x[j] = x[j] + push;
+      }
+  }
+
+  // The hard limits, projected in turn: shrunken elements apart (`margin` holds any of them round its
+  // centroid), out of the shrunken travellers, inside.
+  void keep_apart(const Rings& small) {
+    for (int sweep = 0; sweep < hard_sweeps; ++sweep) {
+      separate([&](std::size_t, std::size_t) { return 2.0 * margin_; });
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        Vec2 q = x[i];
+        for (const std::vector<Vec2>& ring : small) q = out_of(ring, q, margin_);
+        if (const std::optional<Vec2> inside = with_room(container_, q, wall_[i])) x[i] = *inside;
+      }
+    }
+  }
+
+  const Container& container_;
+  const double margin_;
+  std::vector<Vec2> seed_;
+  std::vector<double> radius_, room_, wall_;
+};
+
+// How deep `q` lies in `grown` footprints for a disc of radius r: the most by which it is nearer one than r.
+double depth(const Rings& grown, Vec2 q, double r) {
+  double d = 0.0;
+  for (const std::vector<Vec2>& ring : grown)
+    d = std::max(d, ring_contains(ring, q) ? r + nearest_on_ring(ring, q).distance : r - nearest_on_ring(ring, q).distance);
+  return d;
+}
+
 }  // namespace
 
 void make_way(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
@@ -95,6 +229,7 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
   const double share = scene.params.placement.make_way;
   if (!(share > 0) || guided.empty() || unguided.empty()) return;
   const int slices = static_cast<int>(unguided.front().offset.size());
+  const int intervals = slices - 1, period = scene.loop ? intervals : slices;
   const double s0 = scene.params.placement.initial_scale;
 
   // The growth g at which the elements' outlines (channel included) would cover `share` of the container.
@@ -105,191 +240,88 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
   const double g = std::min(std::sqrt(share * container.area() / area), scene.params.growth.max_growth);
 
   const std::size_t n = unguided.size();
-  const double max_step = 0.5 * margin;
-  std::vector<Vec2> seed(n), x(n);
-  std::vector<double> radius(n), room(n), wall(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    seed[i] = x[i] = unguided[i].offset.front();
-    radius[i] = s0 * g * std::sqrt(ring_area(library[unguided[i].library]) / std::numbers::pi);
-    // A disc keeps its full radius from the wall, or its seed's distance where the seed sits nearer: a seed
-    // is never pushed off the wall when no traveller is near.
-    room[i] = std::max(margin, std::min(radius[i], container.distance_to_boundary(seed[i])));
-    // The hard limit keeps a little more than the margin where the seed allows: the curve between slices
-    // (docs/parameters.md, "Motion between slices") bulges slightly past a path that slides along the wall.
-    wall[i] = std::max(margin, std::min(wall_spare * margin, container.distance_to_boundary(seed[i])));
-  }
+  Crowd crowd(container, margin);
+  for (const Placement& p : unguided)
+    crowd.add(p.offset.front(), s0 * g * std::sqrt(ring_area(library[p.library]) / std::numbers::pi));
 
-  // Each traveller's footprint at slice s: its placed outline grown by `grow` about its anchor's path point.
-  const auto footprint = [&](const Placement& p, int s, double grow) {
-    const SpacetimeElement& e = library[p.library];
-    std::vector<Vec2> ring;
-    for (int v = 0; v < e.slice.boundary_count; ++v)
-      ring.push_back(p.path[s] + grow * (placed(p, e, s, v) - p.path[s]));
-    return ring;
-  };
-
-  // The footprints at every slice, and between two slices each vertex on the straight line between them.
-  // The shrunken elements (`margin` holds any of them round its centroid) are what must not meet: they
-  // are kept hard, the discs of the expected sizes soft. Footprints are kept at both sizes.
-  using Rings = std::vector<std::vector<Vec2>>;
-  std::vector<Rings> at_slice(slices), shrunken(slices);
+  // The travellers at every slice: each one's placed outline, grown by g about its anchor's path point and
+  // as placed, and its heading over the interval that starts there (the last one's for the last slice).
+  std::vector<Travellers> at(slices);
   for (int s = 0; s < slices; ++s)
     for (const Placement& p : guided) {
-      at_slice[s].push_back(footprint(p, s, g));
-      shrunken[s].push_back(footprint(p, s, 1.0));
-    }
-  const auto blend = [&](const std::vector<Rings>& rings, int s, double u) {
-    if (u <= 0.0 || s + 1 >= slices) return rings[s];
-    Rings out = rings[s];
-    for (std::size_t k = 0; k < out.size(); ++k)
-      for (std::size_t v = 0; v < out[k].size(); ++v) out[k][v] = out[k][v] + u * (rings[s + 1][k][v] - out[k][v]);
-    return out;
-  };
-
-  // The hard limits, projected in turn: shrunken elements apart, out of the shrunken travellers, inside.
-  const auto keep_apart = [&](const Rings& small) {
-    for (int sweep = 0; sweep < hard_sweeps; ++sweep) {
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const Vec2 d = x[j] - x[i];
-          const double dist = norm(d), overlap = 2.0 * margin - dist;
-          if (!(overlap > 0) || !(dist > 0)) continue;
-          const Vec2 push = (0.5 * overlap / dist) * d;
-          x[i] = x[i] - push;
-          x[j] = x[j] + push;
-        }
-      for (std::size_t i = 0; i < n; ++i) {
-        Vec2 q = x[i];
-        for (const std::vector<Vec2>& ring : small) q = out_of(ring, q, margin);
-        if (const std::optional<Vec2> inside = with_room(container, q, wall[i])) x[i] = *inside;
+      const SpacetimeElement& e = library[p.library];
+      std::vector<Vec2> grown, shrunken;
+      for (int v = 0; v < e.slice.boundary_count; ++v) {
+        const Vec2 q = placed(p, e, s, v);
+        grown.push_back(p.path[s] + g * (q - p.path[s]));
+        shrunken.push_back(q);
       }
+      at[s].grown.push_back(std::move(grown));
+      at[s].shrunken.push_back(std::move(shrunken));
+      const int a = std::min(s, slices - 2);
+      const Vec2 d = p.path[a + 1] - p.path[a];
+      at[s].heading.push_back(norm(d) > 0 ? (1.0 / norm(d)) * d : Vec2{0.0, 0.0});
+      at[s].centre.push_back(p.path[s]);
     }
-  };
-
-  // A traveller's heading over slice interval s (towards the next slice; the last one's for the last).
-  const auto heading = [&](std::size_t k, int s) {
-    const std::vector<Vec2>& path_k = guided[k].path;
-    const int a = std::min(s, slices - 2), b = a + 1;
-    const Vec2 d = path_k[b] - path_k[a];
-    const double length = norm(d);
-    return length > 0 ? (1.0 / length) * d : Vec2{0.0, 0.0};
-  };
-
-  const auto relax = [&](const Rings& travellers, const Rings& small, int s, int rounds) {
-    std::vector<Vec2> before(n);
-    for (int round = 0; round < rounds; ++round) {
-      before = x;
-      for (std::size_t i = 0; i < n; ++i) x[i] = x[i] + tie * (seed[i] - x[i]);
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const Vec2 d = x[j] - x[i];
-          const double dist = norm(d), overlap = radius[i] + radius[j] - dist;
-          if (!(overlap > 0) || !(dist > 0)) continue;
-          const Vec2 push = (0.5 * overlap / dist) * d;
-          x[i] = x[i] - push;
-          x[j] = x[j] + push;
-        }
-      // Out of every traveller's way, then the wall's room, then the hard limit: a centre at least
-      // `margin` inside, so the shrunken element is. The wall is rigid and a traveller is not (it deforms
-      // and shrinks like any element), so between the two a disc keeps its room from the wall and overlaps
-      // the traveller's expected footprint instead; pushed against the wall, it keeps the push's share
-      // along the wall and slides round the traveller.
-      for (std::size_t i = 0; i < n; ++i) {
-        Vec2 q = x[i];
-        // No disc moves more than `max_step` a round, so none tunnels through a thin traveller or snaps
-        // home through the crowd.
-        if (const Vec2 step = q - before[i]; norm(step) > max_step) q = before[i] + (max_step / norm(step)) * step;
-        for (std::size_t k = 0; k < travellers.size(); ++k) {
-          // Out of the traveller's way, but what would push the disc ahead of it goes to the side the disc
-          // is on instead: the crowd flows round an intruder rather than being carried along.
-          Vec2 push = out_of(travellers[k], q, radius[i]) - q;
-          const Vec2 v = heading(k, s), side{-v.y, v.x};
-          if (const double ahead = dot(push, v); ahead > 0) {
-            const Vec2 centre = guided[k].path[std::min(s, slices - 1)];
-            const double sign = dot(q - centre, side) >= 0 ? 1.0 : -1.0;
-            push = push - (sideways * ahead) * v + (sign * sideways * ahead) * side;
-          }
-          q = q + push;
-        }
-        q = with_room(container, q, room[i]).value_or(q);
-        if (const std::optional<Vec2> inside = with_room(container, q, wall[i])) x[i] = *inside;
-      }
-      keep_apart(small);
-    }
+  // Between slices s and s + 1 at u, each footprint vertex on the straight line between them.
+  const auto at_time = [&](int s, double u) {
+    Travellers t = at[s];
+    t.grown = between(at[s].grown, at[s + 1].grown, u);
+    t.shrunken = between(at[s].shrunken, at[s + 1].shrunken, u);
+    return t;
   };
 
   // From slice to slice in substeps, so that a traveller never jumps over a disc in its way: the disc is
   // pushed aside, and its start never crosses the traveller's between two slices. Round the loop twice,
   // the second time warm-started from the end of the first, so that the last slice leads into the first;
   // without a loop, once from the seeds.
-  std::vector<std::vector<Vec2>> path(n, std::vector<Vec2>(slices));
-  const int intervals = slices - 1;
-  relax(at_slice[0], shrunken[0], 0, settle_rounds);
+  std::vector<std::vector<Vec2>> path(slices);  // [slice] → centres
+  crowd.relax(at[0], settle_rounds);
   for (int pass = scene.loop ? 0 : 1; pass < 2; ++pass) {
-    for (std::size_t i = 0; i < n; ++i) path[i][0] = x[i];
+    path[0] = crowd.x;
     for (int s = 0; s < intervals; ++s) {
-      for (int k = 1; k <= substeps; ++k)
-        relax(blend(at_slice, s, double(k) / substeps), blend(shrunken, s, double(k) / substeps), s,
-              rounds_per_substep);
-      for (std::size_t i = 0; i < n; ++i) path[i][s + 1] = x[i];
+      for (int k = 1; k <= substeps; ++k) crowd.relax(at_time(s, double(k) / substeps), rounds_per_substep);
+      path[s + 1] = crowd.x;
     }
   }
-  if (scene.loop)
-    for (std::size_t i = 0; i < n; ++i) path[i][slices - 1] = path[i][0];
+  if (scene.loop) path[slices - 1] = path[0];
 
-  // How deep a point lies in the footprints at slice s: the most by which it is nearer one than its radius.
-  const auto depth = [&](Vec2 q, int s, double r) {
-    double d = 0.0;
-    for (const std::vector<Vec2>& ring : at_slice[s])
-      d = std::max(d, ring_contains(ring, q) ? r + nearest_on_ring(ring, q).distance
-                                             : r - nearest_on_ring(ring, q).distance);
-    return d;
-  };
-  // A smoothed point must keep the element inside, apart from the others' shrunken elements and no
-  // deeper in a traveller's way; elements are smoothed one after the other, each against the others' latest.
-  const int period = scene.loop ? intervals : slices;
+  // Smoothed along t, element after element against the others' latest: a smoothed point must keep the
+  // hard limits and lie no deeper in a traveller's way.
   for (int pass = 0; pass < smoothing_passes; ++pass)
     for (std::size_t i = 0; i < n; ++i) {
-      std::vector<Vec2>& p = path[i];
-      std::vector<Vec2> smooth = p;
+      std::vector<Vec2> smooth(slices);
+      for (int s = 0; s < slices; ++s) smooth[s] = path[s][i];
       for (int s = 0; s < period; ++s) {
-        const int before = s > 0 ? s - 1 : (scene.loop ? period - 1 : 0);
-        const int after = s + 1 < period ? s + 1 : (scene.loop ? 0 : s);
-        const Vec2 q = 0.25 * p[before] + 0.5 * p[s] + 0.25 * p[after];
-        bool apart = true;
-        for (std::size_t j = 0; j < n && apart; ++j) apart = j == i || norm(q - path[j][s]) >= 2.0 * margin;
-        for (const std::vector<Vec2>& ring : shrunken[s])
-          apart = apart && !ring_contains(ring, q) && nearest_on_ring(ring, q).distance >= margin;
-        if (apart && container.contains(q) && container.distance_to_boundary(q) >= margin &&
-            depth(q, s, radius[i]) <= std::max(0.0, depth(p[s], s, radius[i])))
+        const auto [before, after] = neighbours(s, period, scene.loop);
+        const Vec2 q = 0.25 * path[before][i] + 0.5 * path[s][i] + 0.25 * path[after][i];
+        if (crowd.allowed(i, q, path[s], at[s].shrunken) &&
+            depth(at[s].grown, q, crowd.radius(i)) <= std::max(0.0, depth(at[s].grown, path[s][i], crowd.radius(i))))
           smooth[s] = q;
       }
       if (scene.loop) smooth[slices - 1] = smooth[0];
-      p = smooth;
+      for (int s = 0; s < slices; ++s) path[s][i] = smooth[s];
     }
-  // A size that gives way (params.make_way_dip): where a traveller's footprint comes within a disc of an
-  // element's, the element's script is scaled down, by up to 1 / make_way_dip where they touch, so that
-  // the slices it would be squeezed at no longer hold the whole loop small (growth_ratio holds every
-  // slice's g to its smallest). The dip is smoothed along t, as the paths are.
+
+  // A size that gives way (params.make_way_dip): where a traveller's footprint comes within `dip_reach`
+  // disc radii of an element's disc, the element's script is scaled down, by 1 / make_way_dip where they
+  // touch, so that the slices it would be squeezed at no longer hold the whole loop small (growth_ratio
+  // holds every slice's g to its smallest). The dip is smoothed along t (never below its own value).
   const double dip = scene.params.placement.make_way_dip;
   for (std::size_t i = 0; i < n; ++i) {
-    unguided[i].offset = path[i];
+    for (int s = 0; s < slices; ++s) unguided[i].offset[s] = path[s][i];
     if (!(dip > 1.0)) continue;
+    const double r = crowd.radius(i);
     std::vector<double> closeness(slices, 0.0);
-    for (int s = 0; s < slices; ++s) {
-      double near = 0.0;
-      for (const std::vector<Vec2>& ring : at_slice[s]) {
-        const double d = ring_contains(ring, path[i][s]) ? 0.0 : nearest_on_ring(ring, path[i][s]).distance;
-        near = std::max(near, std::clamp((dip_reach * radius[i] - d) / ((dip_reach - 1.0) * radius[i]), 0.0, 1.0));
+    for (int s = 0; s < slices; ++s)
+      for (const std::vector<Vec2>& ring : at[s].grown) {
+        const double d = ring_contains(ring, path[s][i]) ? 0.0 : nearest_on_ring(ring, path[s][i]).distance;
+        closeness[s] = std::max(closeness[s], std::clamp((dip_reach * r - d) / ((dip_reach - 1.0) * r), 0.0, 1.0));
       }
-      closeness[s] = near;
-    }
-    const int period = scene.loop ? intervals : slices;
     for (int pass = 0; pass < smoothing_passes; ++pass) {
       std::vector<double> smooth = closeness;
       for (int s = 0; s < period; ++s) {
-        const int before = s > 0 ? s - 1 : (scene.loop ? period - 1 : 0);
-        const int after = s + 1 < period ? s + 1 : (scene.loop ? 0 : s);
+        const auto [before, after] = neighbours(s, period, scene.loop);
         smooth[s] = std::max(closeness[s], 0.25 * closeness[before] + 0.5 * closeness[s] + 0.25 * closeness[after]);
       }
       if (scene.loop) smooth[slices - 1] = smooth[0];
