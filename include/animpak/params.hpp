@@ -35,9 +35,9 @@ struct Params {
     int guide_curve = 1;  ///< a guided element's initial path: 1 a smooth curve through its targets, 0 straight lines
     /// Unguided elements make way for guided ones (docs/parameters.md, "Making way"): the share of the
     /// container their stand-in discs cover while the crowd is relaxed round each traveller, slice by
-    /// slice; 0 keeps the paper's seeds off the guided paths and straight starts.
-    double make_way = 0.3;
-    /// ... and an unguided element's script is scaled down by up to this where a traveller passes it
+    /// slice; 0 (the default) keeps the paper's seeds off the guided paths and straight starts.
+    double make_way = 0.0;
+    /// Making way, an unguided element's script is scaled down by up to this where a traveller passes it
     /// (docs/parameters.md, "Making way"); 1: no dip.
     double make_way_dip = 1.3;
   };

@@ -230,7 +230,7 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
 TEST_CASE("animpak pack: with a traveller, the motion line and stats.json say how far the others move and dip") {
   const std::string guided = R"(, "guided": [{"name": "traveller", "element": "star", "targets": [
     {"x": 110, "y": 235, "t": 0}, {"x": 390, "y": 235, "t": 0.5}, {"x": 110, "y": 235, "t": 1}]}])";
-  const Sandbox box("traveller", animpak::test::star_scene(8, 9, 5, {guided, ""}));
+  const Sandbox box("traveller", animpak::test::star_scene(8, 9, 5, {guided, R"("make_way": 0.2)"}));
   const CommandResult r =
       run_animpak("pack " + box.scene() + " --out " + box.path("out") + " --max-iterations 10 --frames 8 --size 64");
   INFO(r.err);

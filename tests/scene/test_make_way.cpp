@@ -32,6 +32,11 @@ std::string crossing_scene(const std::string& params, bool loop = true) {
 
 World world_of(const std::string& text) { return make_world(parse_scene(text, "crossing.json", "/")); }
 
+// Making way as docs/parameters.md ("Making way") suggests turning it on, with `more` params after it.
+std::string making_way(const std::string& more = "") {
+  return std::string(R"("make_way": 0.2)") + (more.empty() ? "" : ", " + more);
+}
+
 // Element e's slice centroids (the mean of its rest copy's slice vertices, as placed).
 std::vector<Vec2> centres(const World& w, std::size_t e) {
   std::vector<Vec2> out;
@@ -59,11 +64,12 @@ double closest_seed_to_path(const World& w) {
 
 }  // namespace
 
-TEST_CASE("make_way: seeds land on a guided element's path; make_way 0 keeps them off it, as the paper does") {
-  const World w = world_of(crossing_scene(""));
+TEST_CASE("make_way: seeds land on a guided element's path; make_way 0, the default, keeps them off it, as the paper "
+          "does") {
+  const World w = world_of(crossing_scene(making_way()));
   REQUIRE(w.elements.size() == 13);
   REQUIRE(w.elements[0].guided);
-  const World paper = world_of(crossing_scene(R"("make_way": 0)"));
+  const World paper = world_of(crossing_scene(""));  // make_way 0, the default
   INFO("closest seed to the path: " << closest_seed_to_path(w) << ", with make_way 0 " << closest_seed_to_path(paper));
   // The seeds are spread over the whole heart, about 0.2 apart: one lies within a fifth of that of the path.
   CHECK(closest_seed_to_path(w) < 0.04);
@@ -72,7 +78,7 @@ TEST_CASE("make_way: seeds land on a guided element's path; make_way 0 keeps the
 
 TEST_CASE("make_way: an element seeded on the path is out of the traveller's way when it passes, home after, "
           "periodic") {
-  const World w = world_of(crossing_scene(""));
+  const World w = world_of(crossing_scene(making_way()));
   const std::vector<Vec2> traveller = centres(w, 0);
   int near_path = 0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
@@ -89,18 +95,18 @@ TEST_CASE("make_way: an element seeded on the path is out of the traveller's way
       if (norm(seed - traveller[s]) > 0.45) CHECK(norm(c[s] - seed) < 0.01);
     }
     // Out of the traveller's way: never nearer it than two shrunken stars' reach, and an element that a
-    // straight start would have left in its way stays more than twice as far from it.
+    // straight start would have left in its way (a straight start keeps its seed) stays well clear of it.
     CHECK(nearest > 0.05);
     if (nearest_seed < 0.05) {
       ++near_path;
-      CHECK(nearest > 2.0 * nearest_seed);
+      CHECK(nearest > std::max(0.08, 1.8 * nearest_seed));
     }
   }
   CHECK(near_path > 0);
 }
 
 TEST_CASE("make_way: without a loop the path steps aside as well and need not close") {
-  const World w = world_of(crossing_scene("", false));
+  const World w = world_of(crossing_scene(making_way(), false));
   const std::vector<Vec2> traveller = centres(w, 0);
   double closest = std::numeric_limits<double>::infinity(), moved = 0.0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
@@ -116,10 +122,8 @@ TEST_CASE("make_way: without a loop the path steps aside as well and need not cl
 
 TEST_CASE("make_way: a scene without guided elements is placed exactly as with make_way 0") {
   const std::string plain = animpak::test::star_scene(12, kSlices, 5);
-  const World a = world_of(plain);
-  SceneSpec off = parse_scene(plain, "crossing.json", "/");
-  off.params.placement.make_way = 0;
-  const World b = make_world(off);
+  const World a = world_of(animpak::test::star_scene(12, kSlices, 5, {"", making_way()}));
+  const World b = world_of(plain);
   REQUIRE(a.state.x.size() == b.state.x.size());
   CHECK(std::memcmp(a.state.x.data(), b.state.x.data(), a.state.x.size() * sizeof(float)) == 0);
   CHECK(std::memcmp(a.state.y.data(), b.state.y.data(), a.state.y.size() * sizeof(float)) == 0);
@@ -135,9 +139,9 @@ TEST_CASE("make_way_dip: an element's script shrinks while the traveller passes 
     for (std::int32_t v = first; v < first + count; ++v) ring.push_back({w.topology.rest_copy_x[v], w.topology.rest_copy_y[v]});
     return std::abs(signed_area(ring));
   };
-  const World plain = world_of(crossing_scene(R"("make_way_dip": 1)"));
+  const World plain = world_of(crossing_scene(making_way(R"("make_way_dip": 1)")));
   for (const ElementInstance& e : plain.elements) CHECK(e.dip == 1.0);
-  const World w = world_of(crossing_scene(R"("make_way_dip": 1.5)"));
+  const World w = world_of(crossing_scene(making_way(R"("make_way_dip": 1.5)")));
   const std::vector<Vec2> traveller = centres(w, 0);
   int dipped = 0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
