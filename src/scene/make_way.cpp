@@ -218,7 +218,8 @@ class Crowd {
 double depth(const Rings& grown, Vec2 q, double r) {
   double d = 0.0;
   for (const std::vector<Vec2>& ring : grown)
-    d = std::max(d, ring_contains(ring, q) ? r + nearest_on_ring(ring, q).distance : r - nearest_on_ring(ring, q).distance);
+    d = std::max(
+        d, ring_contains(ring, q) ? r + nearest_on_ring(ring, q).distance : r - nearest_on_ring(ring, q).distance);
   return d;
 }
 

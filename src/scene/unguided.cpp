@@ -196,9 +196,8 @@ std::vector<Placement> unguided_placements(const SceneSpec& scene, const Contain
   // Making way, seeds cover the whole container, the guided paths included: the elements on a path step
   // aside while its traveller passes (make_way.cpp). Otherwise they keep off every point of every path.
   const bool making_way = scene.params.placement.make_way > 0 && !guided.empty();
-  const std::vector<Vec2> seeds =
-      unguided_seeds(scene, container, making_way ? std::vector<Placement>{} : guided, fill, wanted, margin, rng,
-                     spacing);
+  const std::vector<Vec2> seeds = unguided_seeds(scene, container, making_way ? std::vector<Placement>{} : guided, fill,
+                                                 wanted, margin, rng, spacing);
   if (static_cast<int>(seeds.size()) < fixed)
     throw InputError(file + ": the elements' counts ask for " + std::to_string(fixed) + " elements but only " +
                      std::to_string(seeds.size()) + " seeds fit at params.seed_spacing " + std::to_string(spacing) +
@@ -413,9 +412,9 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
     if (largest > 0.0) ++moved;
   }
   if (moved > 0)
-    notes.push_back("making way for " + std::to_string(guided.size()) + " guided element(s): " +
-                    std::to_string(moved) + " unguided element(s) start on paths that step aside, at most " +
-                    shown(detour) + " from their seeds (params.make_way 0: straight starts)");
+    notes.push_back("making way for " + std::to_string(guided.size()) + " guided element(s): " + std::to_string(moved) +
+                    " unguided element(s) start on paths that step aside, at most " + shown(detour) +
+                    " from their seeds (params.make_way 0: straight starts)");
   return out;
 }
 

@@ -23,10 +23,9 @@ std::string crossing_scene(const std::string& params, bool loop = true) {
   const std::string targets = loop ? R"([{"x": 110, "y": 230, "t": 0}, {"x": 390, "y": 230, "t": 0.5},
                                          {"x": 110, "y": 230, "t": 1}])"
                                    : R"([{"x": 110, "y": 230, "t": 0}, {"x": 390, "y": 230, "t": 1}])";
-  animpak::test::SceneExtras extras{
-      R"(, "guided": [{"name": "traveller", "element": "star", "targets": )" + targets + "}]" +
-          (loop ? R"(, "loop": true)" : R"(, "loop": false)"),
-      params};
+  animpak::test::SceneExtras extras{R"(, "guided": [{"name": "traveller", "element": "star", "targets": )" + targets +
+                                        "}]" + (loop ? R"(, "loop": true)" : R"(, "loop": false)"),
+                                    params};
   return animpak::test::star_scene(12, kSlices, 5, extras, loop ? R"({"loop": true})" : "{}");
 }
 
@@ -64,8 +63,9 @@ double closest_seed_to_path(const World& w) {
 
 }  // namespace
 
-TEST_CASE("make_way: seeds land on a guided element's path; make_way 0, the default, keeps them off it, as the paper "
-          "does") {
+TEST_CASE(
+    "make_way: seeds land on a guided element's path; make_way 0, the default, keeps them off it, as the paper "
+    "does") {
   const World w = world_of(crossing_scene(making_way()));
   REQUIRE(w.elements.size() == 13);
   REQUIRE(w.elements[0].guided);
@@ -76,8 +76,9 @@ TEST_CASE("make_way: seeds land on a guided element's path; make_way 0, the defa
   CHECK(closest_seed_to_path(paper) > 0.08);
 }
 
-TEST_CASE("make_way: an element seeded on the path is out of the traveller's way when it passes, home after, "
-          "periodic") {
+TEST_CASE(
+    "make_way: an element seeded on the path is out of the traveller's way when it passes, home after, "
+    "periodic") {
   const World w = world_of(crossing_scene(making_way()));
   const std::vector<Vec2> traveller = centres(w, 0);
   int near_path = 0;
@@ -131,12 +132,14 @@ TEST_CASE("make_way: a scene without guided elements is placed exactly as with m
                     a.topology.rest_copy_x.size() * sizeof(float)) == 0);
 }
 
-TEST_CASE("make_way_dip: an element's script shrinks while the traveller passes it, by at most the dip, and only "
-          "then") {
+TEST_CASE(
+    "make_way_dip: an element's script shrinks while the traveller passes it, by at most the dip, and only "
+    "then") {
   const auto area = [](const World& w, std::int32_t s) {
     const std::int32_t first = w.topology.slice_begin[s], count = w.topology.slice_boundary[s];
     std::vector<Vec2> ring;
-    for (std::int32_t v = first; v < first + count; ++v) ring.push_back({w.topology.rest_copy_x[v], w.topology.rest_copy_y[v]});
+    for (std::int32_t v = first; v < first + count; ++v)
+      ring.push_back({w.topology.rest_copy_x[v], w.topology.rest_copy_y[v]});
     return std::abs(signed_area(ring));
   };
   const World plain = world_of(crossing_scene(making_way(R"("make_way_dip": 1)")));
