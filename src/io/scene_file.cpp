@@ -403,10 +403,18 @@ std::string json_slip_hint(const std::string& text, std::size_t byte, const std:
   return "";
 }
 
+/// How deep a scene's objects and arrays may nest (a real scene nests five or six levels): deeper input is
+/// refused while it is parsed, before anything walks or prints it recursively.
+constexpr int kMaxNesting = 64;
+
 /// nlohmann keeps the last of two equal keys silently; in a hand-written scene that hides a mistake.
 json parse_json(const std::string& text, const std::string& name) {
   std::vector<std::set<std::string>> open_objects;
-  const json::parser_callback_t reject_duplicates = [&](int, json::parse_event_t event, json& parsed) {
+  const json::parser_callback_t reject_duplicates = [&](int depth, json::parse_event_t event, json& parsed) {
+    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
+        depth >= kMaxNesting)
+      throw InputError(name + ": objects and arrays nested more than " + std::to_string(kMaxNesting) +
+                       " levels deep; a scene needs a handful, check that this is the scene file");
     if (event == json::parse_event_t::object_start) open_objects.emplace_back();
     if (event == json::parse_event_t::object_end) open_objects.pop_back();
     if (event == json::parse_event_t::key && !open_objects.back().insert(parsed.get<std::string>()).second)

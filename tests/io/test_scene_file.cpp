@@ -563,3 +563,17 @@ TEST_CASE("parse_scene: mirror takes one line, x or y, and a side that matches i
   CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": "middle"})")), Contains("mirror.x"));
   CHECK_THAT(scene_error_of(scene(kBird, R"(, "mirror": {"x": 250, "at": 3})")), Contains("mirror") && Contains("at"));
 }
+
+TEST_CASE("parse_scene: nesting deeper than 64 levels is refused while parsing, however deep") {
+  // 100,000 nested arrays overflowed the stack printing the error's "got …" (a crash, exit 139).
+  for (const int depth : {65, 100000}) {
+    INFO("depth " << depth);
+    const std::string text = R"({"container": {"art": "heart.path"}, "elements": )" + std::string(depth, '[') +
+                             std::string(depth, ']') + "}";
+    CHECK_THAT(scene_error_of(text), Contains("nested more than 64 levels deep"));
+  }
+  // 64 levels parse, and the error is about what they hold.
+  const std::string text =
+      R"({"container": {"art": "heart.path"}, "elements": )" + std::string(63, '[') + std::string(63, ']') + "}";
+  CHECK_THAT(scene_error_of(text), !Contains("nested more than"));
+}
