@@ -15,7 +15,7 @@ using namespace animpak;
 
 namespace {
 
-constexpr int kSlices = 17;
+constexpr int kCrossingSlices = 17;
 
 // Twelve still stars in the heart and a guided star that crosses it left to right by t = 0.5 and comes
 // back by t = 1, looping into itself.
@@ -26,10 +26,10 @@ std::string crossing_scene(const std::string& params, bool loop = true) {
   animpak::test::SceneExtras extras{R"(, "guided": [{"name": "traveller", "element": "star", "targets": )" + targets +
                                         "}]" + (loop ? R"(, "loop": true)" : R"(, "loop": false)"),
                                     params};
-  return animpak::test::star_scene(12, kSlices, 5, extras, loop ? R"({"loop": true})" : "{}");
+  return animpak::test::star_scene(12, kCrossingSlices, 5, extras, loop ? R"({"loop": true})" : "{}");
 }
 
-World world_of(const std::string& text) { return make_world(parse_scene(text, "crossing.json", "/")); }
+World crossing_world(const std::string& text) { return make_world(parse_scene(text, "crossing.json", "/")); }
 
 // Making way as docs/parameters.md ("Making way") suggests turning it on, with `more` params after it.
 std::string making_way(const std::string& more = "") {
@@ -66,10 +66,10 @@ double closest_seed_to_path(const World& w) {
 TEST_CASE(
     "make_way: seeds land on a guided element's path; make_way 0, the default, keeps them off it, as the paper "
     "does") {
-  const World w = world_of(crossing_scene(making_way()));
+  const World w = crossing_world(crossing_scene(making_way()));
   REQUIRE(w.elements.size() == 13);
   REQUIRE(w.elements[0].guided);
-  const World paper = world_of(crossing_scene(""));  // make_way 0, the default
+  const World paper = crossing_world(crossing_scene(""));  // make_way 0, the default
   INFO("closest seed to the path: " << closest_seed_to_path(w) << ", with make_way 0 " << closest_seed_to_path(paper));
   // The seeds are spread over the whole heart, about 0.2 apart: one lies within a fifth of that of the path.
   CHECK(closest_seed_to_path(w) < 0.04);
@@ -79,7 +79,7 @@ TEST_CASE(
 TEST_CASE(
     "make_way: an element seeded on the path is out of the traveller's way when it passes, home after, "
     "periodic") {
-  const World w = world_of(crossing_scene(making_way()));
+  const World w = crossing_world(crossing_scene(making_way()));
   const std::vector<Vec2> traveller = centres(w, 0);
   int near_path = 0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
@@ -89,7 +89,7 @@ TEST_CASE(
     // Periodic: the last slice is the first, bit for bit (it loops into itself).
     CHECK(std::memcmp(&c.front(), &c.back(), sizeof(Vec2)) == 0);
     double nearest_seed = std::numeric_limits<double>::infinity(), nearest = nearest_seed;
-    for (int s = 0; s < kSlices; ++s) {
+    for (int s = 0; s < kCrossingSlices; ++s) {
       nearest_seed = std::min(nearest_seed, norm(seed - traveller[s]));
       nearest = std::min(nearest, norm(c[s] - traveller[s]));
       // Where the traveller is far away, the element is at its seed (a still star's centroid).
@@ -107,12 +107,12 @@ TEST_CASE(
 }
 
 TEST_CASE("make_way: without a loop the path steps aside as well and need not close") {
-  const World w = world_of(crossing_scene(making_way(), false));
+  const World w = crossing_world(crossing_scene(making_way(), false));
   const std::vector<Vec2> traveller = centres(w, 0);
   double closest = std::numeric_limits<double>::infinity(), moved = 0.0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
     const std::vector<Vec2> c = centres(w, e);
-    for (int s = 0; s < kSlices; ++s) {
+    for (int s = 0; s < kCrossingSlices; ++s) {
       closest = std::min(closest, norm(c[s] - traveller[s]));
       moved = std::max(moved, norm(c[s] - w.elements[e].position));
     }
@@ -122,9 +122,9 @@ TEST_CASE("make_way: without a loop the path steps aside as well and need not cl
 }
 
 TEST_CASE("make_way: a scene without guided elements is placed exactly as with make_way 0") {
-  const std::string plain = animpak::test::star_scene(12, kSlices, 5);
-  const World a = world_of(animpak::test::star_scene(12, kSlices, 5, {"", making_way()}));
-  const World b = world_of(plain);
+  const std::string plain = animpak::test::star_scene(12, kCrossingSlices, 5);
+  const World a = crossing_world(animpak::test::star_scene(12, kCrossingSlices, 5, {"", making_way()}));
+  const World b = crossing_world(plain);
   REQUIRE(a.state.x.size() == b.state.x.size());
   CHECK(std::memcmp(a.state.x.data(), b.state.x.data(), a.state.x.size() * sizeof(float)) == 0);
   CHECK(std::memcmp(a.state.y.data(), b.state.y.data(), a.state.y.size() * sizeof(float)) == 0);
@@ -142,9 +142,9 @@ TEST_CASE(
       ring.push_back({w.topology.rest_copy_x[v], w.topology.rest_copy_y[v]});
     return std::abs(signed_area(ring));
   };
-  const World plain = world_of(crossing_scene(making_way(R"("make_way_dip": 1)")));
+  const World plain = crossing_world(crossing_scene(making_way(R"("make_way_dip": 1)")));
   for (const ElementInstance& e : plain.elements) CHECK(e.dip == 1.0);
-  const World w = world_of(crossing_scene(making_way(R"("make_way_dip": 1.5)")));
+  const World w = crossing_world(crossing_scene(making_way(R"("make_way_dip": 1.5)")));
   const std::vector<Vec2> traveller = centres(w, 0);
   int dipped = 0;
   for (std::size_t e = 1; e < w.elements.size(); ++e) {
@@ -152,13 +152,13 @@ TEST_CASE(
     CHECK(w.elements[e].dip >= 1.0 / 1.5 - 1e-9);
     const std::vector<Vec2> c = centres(w, e);
     double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-    for (int s = 0; s < kSlices; ++s) {
+    for (int s = 0; s < kCrossingSlices; ++s) {
       const double a = area(w, w.topology.element_slice_begin[e] + s);
       largest = std::max(largest, a), smallest = std::min(smallest, a);
     }
     // The stars are still: the rest copy's area changes only by the dip, as the square of the scale.
     CHECK(smallest / largest == Approx(w.elements[e].dip * w.elements[e].dip).epsilon(1e-3));
-    for (int s = 0; s < kSlices; ++s) {
+    for (int s = 0; s < kCrossingSlices; ++s) {
       const double a = area(w, w.topology.element_slice_begin[e] + s);
       // Far from the traveller (more than half the heart away), at full size.
       if (norm(c[s] - traveller[s]) > 0.5) CHECK(a == Approx(largest).epsilon(1e-4));
