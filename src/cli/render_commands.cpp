@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -101,10 +103,23 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   return quality;
 }
 
+// A finite number: CLI::Range lets NaN through (it compares false with both bounds), and `--fps nan` wrote
+// `"fr":nan` into animation.json, which is not JSON.
+const CLI::Validator kFinite(
+    [](std::string& argument) {
+      double value = 0.0;
+      const char* end = argument.data() + argument.size();
+      const auto [stop, error] = std::from_chars(argument.data(), end, value);
+      return error == std::errc() && stop == end && std::isfinite(value) ? std::string()
+                                                                         : "expected a finite number, got " + argument;
+    },
+    "FINITE");
+
 void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
   cmd.add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
-  cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")->check(CLI::Range(1.0, 240.0));
+  cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")
+      ->check(kFinite & CLI::Range(1.0, 240.0));
   cmd.add_option("--format", f.formats,
                  "png, gif, mp4, svg (frames), lottie (animation.json), dotlottie (animation.lottie), svg-anim "
                  "(animation.svg); several allowed, separated by commas (gif,mp4)")

@@ -1,5 +1,8 @@
 #include <CLI/CLI.hpp>
 
+#include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <exception>
 #include <iostream>
 #include <memory>
@@ -50,7 +53,20 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_flag("--profile", cl.pack.profile,
                         "at the end, the time of each phase of a step and of each OpenCL kernel (also in "
                         "stats.json, \"kernels\")");
-  cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's)");
+  // A seed is a whole number in [0, 2^64 - 1], written in decimal digits: the conversion would otherwise take
+  // -1, 2^64 and 1e23 and turn them silently into 18446744073709551615.
+  cl.pack_cmd->add_option("--seed", cl.pack.seed, "seed (overrides the scene's): a whole number from 0 to 2^64 - 1")
+      ->check(CLI::Validator(
+          [](std::string& argument) {
+            std::uint64_t value = 0;
+            const char* end = argument.data() + argument.size();
+            const auto [stop, error] = std::from_chars(argument.data(), end, value);
+            const bool digits = !argument.empty() && std::isdigit(static_cast<unsigned char>(argument.front()));
+            return digits && error == std::errc() && stop == end
+                       ? std::string()
+                       : "expected a whole number from 0 to 18446744073709551615, got " + argument;
+          },
+          "UINT64"));
   cl.pack_cmd->add_option("--max-iterations", cl.pack.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
   cl.pack_cmd->add_option(

@@ -78,6 +78,23 @@ TEST_CASE("animpak: usage errors exit 1 with one line saying what is wrong") {
   CHECK(run_animpak("inspect " + shapes_dir() + "/bird.path --slices 1").code == 1);
 }
 
+TEST_CASE("animpak: --fps must be a finite number and --seed a whole number that fits 64 bits") {
+  // NaN passed the range check and wrote "fr":nan into animation.json; -1, 2^64 and 1e23 became
+  // 18446744073709551615 without a word. Refused before anything is read.
+  for (const char* fps : {"nan", "inf", "1e999"}) {
+    const CommandResult r = run_animpak(std::string("render nowhere --format lottie --fps ") + fps);
+    INFO(fps << ": " << r.err);
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Contains("--fps: ") && Contains("expected a finite number, got "));
+  }
+  for (const char* seed : {"-1", "18446744073709551616", "1e23", "3.5", "+4"}) {
+    const CommandResult r = run_animpak(std::string("pack scene.json --out nowhere --seed=") + seed);
+    INFO(seed << ": " << r.err);
+    CHECK(r.code == 1);
+    CHECK_THAT(r.err, Contains("--seed: expected a whole number from 0 to 18446744073709551615, got "));
+  }
+}
+
 TEST_CASE("animpak inspect: a missing or unsupported file exits 2 and names it") {
   const CommandResult missing = run_animpak("inspect /nonexistent/bird.svg");
   CHECK(missing.code == 2);

@@ -64,8 +64,8 @@ double closest_seed_to_path(const World& w) {
 }  // namespace
 
 TEST_CASE(
-    "make_way: seeds land on a guided element's path; make_way 0, the default, keeps them off it, as the paper "
-    "does") {
+    "make_way: seeds land on a guided element's path, which make_way 0 (the default) keeps them off, as the "
+    "paper does") {
   const World w = crossing_world(crossing_scene(making_way()));
   REQUIRE(w.elements.size() == 13);
   REQUIRE(w.elements[0].guided);
