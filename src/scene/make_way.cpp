@@ -31,6 +31,11 @@ constexpr int hard_sweeps = 3;
 constexpr double wall_spare = 1.3;
 // The share of a traveller's push that would carry a disc ahead of it which goes sideways instead.
 constexpr double sideways = 0.7;
+// A traveller's footprint is its outline at this many times the crowd's expected growth: at the same growth
+// the crowd closed in round it and the travellers took the squeeze (aquatic-loop's penguins ended at mean g
+// 1.13 and 1.76, the other elements' median 2.39; at 1.25, 2.21 and 1.99: docs/results.md, "0.15.0: making
+// way for travellers (off by default)").
+constexpr double traveller_room = 1.25;
 // An element's script dips fully where its disc touches a traveller's footprint, and not at all from
 // `dip_reach` disc radii away.
 constexpr double dip_reach = 2.0;
@@ -245,8 +250,8 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
   for (const Placement& p : unguided)
     crowd.add(p.offset.front(), s0 * g * std::sqrt(ring_area(library[p.library]) / std::numbers::pi));
 
-  // The travellers at every slice: each one's placed outline, grown by g about its anchor's path point and
-  // as placed, and its heading over the interval that starts there (the last one's for the last slice).
+  // The travellers at every slice: each one's placed outline, grown by traveller_room · g about its anchor's
+  // path point and as placed, and its heading over the interval that starts there (the last one's for the last slice).
   std::vector<Travellers> at(slices);
   for (int s = 0; s < slices; ++s)
     for (const Placement& p : guided) {
@@ -254,7 +259,7 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
       std::vector<Vec2> grown, shrunken;
       for (int v = 0; v < e.slice.boundary_count; ++v) {
         const Vec2 q = placed(p, e, s, v);
-        grown.push_back(p.path[s] + g * (q - p.path[s]));
+        grown.push_back(p.path[s] + traveller_room * g * (q - p.path[s]));
         shrunken.push_back(q);
       }
       at[s].grown.push_back(std::move(grown));
