@@ -68,12 +68,15 @@ inline bool ring_contains(const std::vector<Vec2>& ring, Vec2 p) {
   return inside;
 }
 
-inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+/// The point of segment ab nearest to p.
+inline Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);
   const double s = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + s * ab));
+  return a + s * ab;
 }
+
+inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) { return norm(p - closest_on_segment(p, a, b)); }
 
 /// Distance from p to the closed polygon's edges.
 inline double ring_distance(const std::vector<Vec2>& ring, Vec2 p) {

@@ -48,13 +48,11 @@ struct Nearest {
   double distance = std::numeric_limits<double>::infinity();
 };
 
+// The point of `ring`'s outline nearest to p (or `best`, when that is nearer), with its distance; where only
+// the distance counts, ring_distance (animpak/geometry.hpp) gives the same number.
 Nearest nearest_on_ring(const std::vector<Vec2>& ring, Vec2 p, Nearest best = {}) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
-    const Vec2 ab = b - a;
-    const double len2 = dot(ab, ab);
-    const double u = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    const Vec2 q = a + u * ab;
+    const Vec2 q = closest_on_segment(p, ring[i], ring[(i + 1) % ring.size()]);
     if (const double d = norm(p - q); d < best.distance) best = {q, d};
   }
   return best;
@@ -111,9 +109,18 @@ Rings between(const Rings& a, const Rings& b, double u) {
   return out;
 }
 
-// The neighbours of slice s along t: round the loop, or held at the ends.
-std::pair<int, int> neighbours(int s, int period, bool loop) {
-  return {s > 0 ? s - 1 : (loop ? period - 1 : 0), s + 1 < period ? s + 1 : (loop ? 0 : s)};
+// One pass of [1/4, 1/2, 1/4] along t over a value per slice (round the loop, or held at the ends; a loop's
+// last slice is its first), each smoothed value stored as `keep(s, smoothed)` gives it.
+template <class T, class Keep>
+std::vector<T> smoothed(const std::vector<T>& series, bool loop, Keep keep) {
+  const int slices = static_cast<int>(series.size()), period = loop ? slices - 1 : slices;
+  std::vector<T> out = series;
+  for (int s = 0; s < period; ++s) {
+    const int before = s > 0 ? s - 1 : (loop ? period - 1 : 0), after = s + 1 < period ? s + 1 : (loop ? 0 : s);
+    out[s] = keep(s, 0.25 * series[before] + 0.5 * series[s] + 0.25 * series[after]);
+  }
+  if (loop) out[slices - 1] = out[0];
+  return out;
 }
 
 // The unguided elements as discs of their expected full sizes round their centres `x`, relaxed at one time
@@ -179,7 +186,7 @@ class Crowd {
     for (std::size_t j = 0; j < others.size(); ++j)
       if (j != i && norm(q - others[j]) < 2.0 * margin_) return false;
     for (const std::vector<Vec2>& ring : small)
-      if (ring_contains(ring, q) || nearest_on_ring(ring, q).distance < margin_) return false;
+      if (ring_contains(ring, q) || ring_distance(ring, q) < margin_) return false;
     return container_.contains(q) && container_.distance_to_boundary(q) >= margin_;
   }
 
@@ -223,8 +230,7 @@ class Crowd {
 double depth(const Rings& grown, Vec2 q, double r) {
   double d = 0.0;
   for (const std::vector<Vec2>& ring : grown)
-    d = std::max(
-        d, ring_contains(ring, q) ? r + nearest_on_ring(ring, q).distance : r - nearest_on_ring(ring, q).distance);
+    d = std::max(d, ring_contains(ring, q) ? r + ring_distance(ring, q) : r - ring_distance(ring, q));
   return d;
 }
 
@@ -235,7 +241,7 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
   const double share = scene.params.placement.make_way;
   if (!(share > 0) || guided.empty() || unguided.empty()) return;
   const int slices = static_cast<int>(unguided.front().offset.size());
-  const int intervals = slices - 1, period = scene.loop ? intervals : slices;
+  const int intervals = slices - 1;
   const double s0 = scene.params.placement.initial_scale;
 
   // The growth g at which the elements' outlines (channel included) would cover `share` of the container.
@@ -271,10 +277,8 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
     }
   // Between slices s and s + 1 at u, each footprint vertex on the straight line between them.
   const auto at_time = [&](int s, double u) {
-    Travellers t = at[s];
-    t.grown = between(at[s].grown, at[s + 1].grown, u);
-    t.shrunken = between(at[s].shrunken, at[s + 1].shrunken, u);
-    return t;
+    return Travellers{between(at[s].grown, at[s + 1].grown, u), between(at[s].shrunken, at[s + 1].shrunken, u),
+                      at[s].heading, at[s].centre};
   };
 
   // From slice to slice in substeps, so that a traveller never jumps over a disc in its way: the disc is
@@ -296,17 +300,15 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
   // hard limits and lie no deeper in a traveller's way.
   for (int pass = 0; pass < smoothing_passes; ++pass)
     for (std::size_t i = 0; i < n; ++i) {
-      std::vector<Vec2> smooth(slices);
-      for (int s = 0; s < slices; ++s) smooth[s] = path[s][i];
-      for (int s = 0; s < period; ++s) {
-        const auto [before, after] = neighbours(s, period, scene.loop);
-        const Vec2 q = 0.25 * path[before][i] + 0.5 * path[s][i] + 0.25 * path[after][i];
-        if (crowd.allowed(i, q, path[s], at[s].shrunken) &&
-            depth(at[s].grown, q, crowd.radius(i)) <= std::max(0.0, depth(at[s].grown, path[s][i], crowd.radius(i))))
-          smooth[s] = q;
-      }
-      if (scene.loop) smooth[slices - 1] = smooth[0];
-      for (int s = 0; s < slices; ++s) path[s][i] = smooth[s];
+      std::vector<Vec2> mine(slices);
+      for (int s = 0; s < slices; ++s) mine[s] = path[s][i];
+      mine = smoothed(mine, scene.loop, [&](int s, Vec2 q) {
+        const double r = crowd.radius(i);
+        const bool keeps = crowd.allowed(i, q, path[s], at[s].shrunken) &&
+                           depth(at[s].grown, q, r) <= std::max(0.0, depth(at[s].grown, path[s][i], r));
+        return keeps ? q : path[s][i];
+      });
+      for (int s = 0; s < slices; ++s) path[s][i] = mine[s];
     }
 
   // A size that gives way (params.make_way_dip): where a traveller's footprint comes within `dip_reach`
@@ -321,18 +323,11 @@ void make_way(const SceneSpec& scene, const Container& container, const std::vec
     std::vector<double> closeness(slices, 0.0);
     for (int s = 0; s < slices; ++s)
       for (const std::vector<Vec2>& ring : at[s].grown) {
-        const double d = ring_contains(ring, path[s][i]) ? 0.0 : nearest_on_ring(ring, path[s][i]).distance;
+        const double d = ring_contains(ring, path[s][i]) ? 0.0 : ring_distance(ring, path[s][i]);
         closeness[s] = std::max(closeness[s], std::clamp((dip_reach * r - d) / ((dip_reach - 1.0) * r), 0.0, 1.0));
       }
-    for (int pass = 0; pass < smoothing_passes; ++pass) {
-      std::vector<double> smooth = closeness;
-      for (int s = 0; s < period; ++s) {
-        const auto [before, after] = neighbours(s, period, scene.loop);
-        smooth[s] = std::max(closeness[s], 0.25 * closeness[before] + 0.5 * closeness[s] + 0.25 * closeness[after]);
-      }
-      if (scene.loop) smooth[slices - 1] = smooth[0];
-      closeness = smooth;
-    }
+    for (int pass = 0; pass < smoothing_passes; ++pass)
+      closeness = smoothed(closeness, scene.loop, [&](int s, double c) { return std::max(closeness[s], c); });
     for (int s = 0; s < slices; ++s) unguided[i].scale[s] = s0 / (1.0 + (dip - 1.0) * closeness[s]);
   }
 }

@@ -44,12 +44,6 @@ std::vector<Vec2> centres(const World& w, std::size_t e) {
   return out;
 }
 
-double segment_distance_to(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double u = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return norm(p - (a + u * ab));
-}
-
 // The smallest distance from an unguided element's seed to the traveller's path (its slice centroids,
 // joined by straight lines).
 double closest_seed_to_path(const World& w) {
@@ -57,7 +51,7 @@ double closest_seed_to_path(const World& w) {
   double closest = std::numeric_limits<double>::infinity();
   for (std::size_t e = 1; e < w.elements.size(); ++e)
     for (std::size_t s = 0; s + 1 < path.size(); ++s)
-      closest = std::min(closest, segment_distance_to(w.elements[e].position, path[s], path[s + 1]));
+      closest = std::min(closest, segment_distance(w.elements[e].position, path[s], path[s + 1]));
   return closest;
 }
 
