@@ -4,7 +4,9 @@
 // stats.json says which device ran.
 //
 // Layout (little-endian): "ANIMPAKS" magic, u32 version, then length-prefixed fields, the SimState
-// arrays, and an FNV-1a 64 checksum of everything before it.
+// arrays, and the SHA-256 of everything before it as 64 hex digits. Reading checks the checksum and
+// every value (finite, in range, marks before their iteration), so a damaged or made-up state is refused,
+// never resumed or drawn.
 #pragma once
 
 #include <filesystem>
@@ -14,7 +16,7 @@
 
 namespace animpak {
 
-inline constexpr std::uint32_t checkpoint_version = 4;
+inline constexpr std::uint32_t checkpoint_version = 5;
 
 struct Checkpoint {
   std::string scene_text;            ///< the scene file's contents when the packing started
@@ -24,10 +26,16 @@ struct Checkpoint {
   SimState state;
 };
 
-/// Writes to `file` through a temporary file and a rename, so a crash never leaves half a state.
-void write_checkpoint(const std::filesystem::path& file, const Checkpoint& checkpoint);
+/// Writes to `file` through a checked, flushed temporary file and a rename (write_file_atomically), so
+/// a crash or a full disk never leaves half a state. The scene's path is stored relative to `home`, the
+/// folder the state is read from in the end (default: `file`'s own), so a state written aside and moved
+/// there finds its scene.
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& checkpoint,
+                      const std::filesystem::path& home = {});
 
-/// InputError naming the file for a missing, foreign, newer-version, truncated or corrupted state.
-Checkpoint read_checkpoint(const std::filesystem::path& file);
+/// InputError naming the file for a missing, linked, special, foreign, older- or newer-version,
+/// truncated, corrupted or out-of-range state. A relative scene path is resolved from `home` (default:
+/// `file`'s own folder), as write_checkpoint stored it.
+Checkpoint read_checkpoint(const std::filesystem::path& file, const std::filesystem::path& home = {});
 
 }  // namespace animpak

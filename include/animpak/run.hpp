@@ -12,6 +12,11 @@ struct RunControl {
   std::uint64_t max_iterations = 0;                     ///< absolute iteration count to stop at
   const std::atomic<bool>* interrupt = nullptr;         ///< set by a signal handler (Ctrl-C)
   std::function<void(const StepStatistics&)> on_check;  ///< progress, after every statistics check
+  /// Called with the state at most every `checkpoint_seconds` of wall time (0: at every check), on a
+  /// finite check on a grid-rebuild boundary: the state an interrupt there would save, from which a resumed
+  /// run continues bit-identically. Empty: no checkpoints.
+  std::function<void(const SimState&)> on_checkpoint;
+  double checkpoint_seconds = 60.0;
 };
 
 struct RunResult {

@@ -69,14 +69,20 @@ struct PackOptions {
   bool still = false;              ///< pack the scene's still reference (still_scene_text)
   /// a folder `pack --still` wrote: stats.json carries its coverage beside this packing's
   std::optional<std::filesystem::path> still_reference;
-  bool verbose = false;             ///< the progress line with overlaps, outside and the g range
-  bool profile = false;             ///< print the time per phase and per kernel at the end (profile_text)
-  std::string program = "animpak";  ///< for the resume command printed after Ctrl-C
+  bool verbose = false;              ///< the progress line with overlaps, outside and the g range
+  bool profile = false;              ///< print the time per phase and per kernel at the end (profile_text)
+  double checkpoint_seconds = 60.0;  ///< state.bin written at most this often during the run (0: every check)
+  std::string program = "animpak";   ///< for the resume command printed after Ctrl-C
 };
+
+/// Writes, into the render's scratch folder, the files that belong with the frames just drawn (stats.json
+/// with their metrics, contact.png): they are swapped in with the frames, or not at all.
+using BesideFrames = std::function<void(const PackingQuality& quality, const std::filesystem::path& scratch)>;
 
 /// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
 /// returns the quality of the frames and between slices for stats.json. Empty: pack writes no frames (--no-render).
-using FrameRenderer = std::function<PackingQuality(const World& world, const std::filesystem::path& dir)>;
+using FrameRenderer =
+    std::function<PackingQuality(const World& world, const std::filesystem::path& dir, const BesideFrames& beside)>;
 
 int pack(const PackOptions& options, const FrameRenderer& render_frames);
 

@@ -21,8 +21,34 @@
 namespace animpak::cli {
 namespace {
 
+// Ctrl-C, SIGTERM (timeout, docker stop, a cluster's time limit) and SIGHUP (a closed terminal) alike stop
+// the run at the next grid-rebuild boundary with its state saved; the exit code is 128 + the signal's.
 std::atomic<bool> interrupted{false};
-extern "C" void on_sigint(int) { interrupted.store(true); }
+std::atomic<int> interrupting_signal{0};
+extern "C" void on_stop_signal(int signal) {
+  interrupting_signal.store(signal);
+  interrupted.store(true);
+}
+
+// The stop signals' handlers for as long as the pack runs, the ones before restored after.
+class StopSignals {
+ public:
+  StopSignals() {
+    interrupted.store(false);
+    interrupting_signal.store(0);
+    for (std::size_t i = 0; i < std::size(kSignals); ++i) previous_[i] = std::signal(kSignals[i], on_stop_signal);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  ~StopSignals() {
+    for (std::size_t i = 0; i < std::size(kSignals); ++i) std::signal(kSignals[i], previous_[i]);
+  }
+  static int exit_code() { return 128 + (interrupting_signal.load() != 0 ? interrupting_signal.load() : SIGINT); }
+
+ private:
+  static constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+  void (*previous_[std::size(kSignals)])(int);
+};
 
 // Progress: a bar redrawn in place on a terminal, a plain line every few seconds otherwise, each within 80
 // columns (the element counts and g range under --verbose). The time left comes from StopModel, a model of
@@ -89,19 +115,11 @@ bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_itera
 // The simulation time of the runs before a resume, from their stats.json (0 without one), so that the clock
 // and stats.json count the whole packing.
 double simulation_seconds(const std::filesystem::path& stats) {
-  std::ifstream in(stats);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json j = read_stats_json(stats);
   if (j.is_discarded() || !j.is_object() || !j.contains("seconds") || !j["seconds"].is_object()) return 0.0;
   const nlohmann::json& seconds = j["seconds"];
   return seconds.contains("simulation") && seconds["simulation"].is_number() ? seconds["simulation"].get<double>()
                                                                              : 0.0;
-}
-
-std::string read_whole(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The device by --device or the default rule, said in one line. A device asked for by name must work;
@@ -135,13 +153,28 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // Read before the packing, so that a wrong folder is refused before minutes of work, not after.
   std::optional<StillReference> still;
   if (options.still_reference) still = read_still_reference(*options.still_reference);
+  const StopSignals signals;  // a signal during the set-up stops the run at its first step, saved
   Checkpoint checkpoint;
-  std::filesystem::path out = options.out;
-  std::optional<InputSnapshot> inputs;
+  const std::filesystem::path out = options.resume ? *options.resume : options.out;
+  if (options.resume && !std::filesystem::is_directory(out))
+    throw InputError((out / "state.bin").string() + ": cannot read the state file (" + out.string() +
+                     " is not a folder); give the folder `animpak pack --out` wrote");
+  check_folder_writable(out);  // a read-only folder, a file in the way or a full disk: before any work
+  const FolderLock lock(out, "animpak pack " + out.string());
+  recover_folder(out);
+  // A new packing is written beside the folder's packing until it ends (packed_folder.hpp); a resume of
+  // a packing already swapped in writes where it is.
+  const bool staged = !options.resume || has_unfinished_pack(out);
+  const std::filesystem::path run_dir = staged ? new_pack_dir(out) : out;
   double previous_seconds = 0.0;
   if (options.resume) {
-    out = *options.resume;
-    checkpoint = read_checkpoint(out / "state.bin");
+    checkpoint = read_checkpoint(run_dir / "state.bin", out);
+    if (staged && finished(checkpoint, options.max_iterations)) {
+      // Killed after its last state was written and before the swap: nothing left but the swap.
+      install_new_pack(out);
+      std::cerr << "animpak: " << out.string() << ": swapped in the finished packing a killed pack left in "
+                << run_dir.string() << "\n";
+    }
     if (finished(checkpoint, options.max_iterations)) {
       std::cerr << "animpak: " << out.string() << " holds a finished packing (stopped after "
                 << checkpoint.state.iteration << " iterations: " << checkpoint.stop_reason
@@ -150,15 +183,17 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
                 << "\n";
       return 0;
     }
-    previous_seconds = simulation_seconds(out / "stats.json");
+    if (!staged) previous_seconds = simulation_seconds(out / "stats.json");
   } else {
-    if (std::filesystem::exists(out / "state.bin") && !options.force)
-      throw UsageError(out.string() + " already holds a packing (" + (out / "state.bin").string() +
+    if (!options.force && (std::filesystem::exists(out / "state.bin") || has_unfinished_pack(out)))
+      throw UsageError(out.string() + " already holds a packing (" +
+                       (std::filesystem::exists(out / "state.bin") ? (out / "state.bin").string()
+                                                                   : "unfinished, in " + run_dir.string()) +
                        "); pass --force to overwrite it, or --resume " + out.string() + " to continue it");
     check_inputs_writable(out);
     checkpoint.scene_file = std::filesystem::absolute(options.scene);
     const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
-    checkpoint.scene_text = read_whole(checkpoint.scene_file);
+    checkpoint.scene_text = read_bytes(checkpoint.scene_file, "check the scene file's path");
     if (options.still) {
       checkpoint.scene_text = still_scene_text(checkpoint.scene_text, scene);
       std::cerr << "animpak: packing the still reference: the same elements standing still"
@@ -166,13 +201,11 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
                 << std::min(scene.params.element.slices, still_slices) << " slices\n";
     }
     checkpoint.seed = options.seed.value_or(scene.seed);
-    inputs = snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text);
+    // The copy of the scene and its art first, so that a checkpoint can be resumed from the folder alone.
+    start_new_pack(out);
+    write_inputs(run_dir, snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text));
   }
-  // Rendered files are this run's to replace only where a packing was: a fresh --out may hold the user's own.
-  const bool replaces_packing = std::filesystem::exists(out / "state.bin");
-  std::filesystem::create_directories(out);
-  const PackedScene scene =
-      options.resume ? packed_scene(out, checkpoint) : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
+  const PackedScene scene = packed_scene(run_dir, checkpoint);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
   World& world = loaded.world;
   if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
@@ -180,8 +213,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   for (const std::string& note : world.notes)
     if (!options.resume || note.rfind("warning:", 0) == 0) std::cerr << "animpak: " << note << "\n";
   if (options.resume)
-    std::cerr << "animpak: resuming " << (out / "state.bin").string() << " at iteration " << checkpoint.state.iteration
-              << " after " << clock_text(previous_seconds) << "\n";
+    std::cerr << "animpak: resuming " << (run_dir / "state.bin").string() << " at iteration "
+              << checkpoint.state.iteration << " after " << clock_text(previous_seconds) << "\n";
   std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
             << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
             << " envelope triangles\n";
@@ -191,7 +224,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   std::unique_ptr<Backend> backend =
       make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
   std::vector<ProgressSample> previous_samples =
-      options.resume ? read_progress(out / "stats.json") : std::vector<ProgressSample>{};
+      options.resume && !staged ? read_progress(out / "stats.json") : std::vector<ProgressSample>{};
   if (previous_samples.empty() && previous_seconds > 0)  // a stats.json from before the samples were kept
     previous_samples.push_back({checkpoint.state.iteration, previous_seconds});
   Progress progress(world.params, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
@@ -200,20 +233,29 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
   control.interrupt = &interrupted;
   control.on_check = [&](const StepStatistics& st) { progress(st); };
-  interrupted.store(false);
-  auto previous = std::signal(SIGINT, on_sigint);
+  // The state so far, every --checkpoint-every seconds: a run killed outright (SIGKILL, a power cut)
+  // resumes from the last one to the bytes of a run never stopped.
+  control.checkpoint_seconds = options.checkpoint_seconds;
+  control.on_checkpoint = [&](const SimState& state) {
+    Checkpoint saved = checkpoint;
+    saved.stop_reason = stop_reason_name(StopReason::running);
+    saved.state = state;
+    write_checkpoint(run_dir / "state.bin", saved, out);
+  };
   RunResult result = run_simulation(*backend, world.params, control);
-  std::signal(SIGINT, previous);
   progress.finish();
   result.seconds += previous_seconds;
 
   checkpoint.stop_reason = stop_reason_name(result.reason);
   checkpoint.state = result.last_good;
-  write_checkpoint(out / "state.bin", checkpoint);
+  write_checkpoint(run_dir / "state.bin", checkpoint, out);
   world.state = result.last_good;
-  if (inputs) write_inputs(out, *inputs);
-  // Frames of an earlier state must not stay beside this one, not even while the render below runs.
-  if (replaces_packing) remove_rendered(out);
+  // The new packing swapped in whole, the frames of the one before removed with it; a resumed packing's
+  // own frames are of an earlier state, so they go too, before the render below runs.
+  if (staged)
+    install_new_pack(out);
+  else
+    remove_rendered(out);
 
   PackReport report{world,
                     result,
@@ -229,11 +271,12 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;
     const ElementInstance& e = world.elements[world.topology.element[v]];
-    throw std::runtime_error("the simulation produced NaN/Inf at element " + e.name + ", slice " +
-                             std::to_string(world.topology.slice[v] - e.slice_begin) + " near iteration " +
-                             std::to_string(result.last.iteration) + "; the last finite state (iteration " +
-                             std::to_string(result.last_good.iteration) + ") is in " + (out / "state.bin").string() +
-                             "; lower params.dt or the stiffnesses");
+    // Exit 2: what makes a step blow up is the scene's params (a stiffness of 1e300 is in range).
+    throw InputError(checkpoint.scene_file.string() + ": the simulation produced NaN/Inf at element " + e.name +
+                     ", slice " + std::to_string(world.topology.slice[v] - e.slice_begin) + " near iteration " +
+                     std::to_string(result.last.iteration) + "; the last finite state (iteration " +
+                     std::to_string(result.last_good.iteration) + ") is in " + (out / "state.bin").string() +
+                     "; lower params.dt or the stiffnesses");
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "\n";
@@ -260,16 +303,18 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   // stats.json first, so that a render that fails (ffmpeg, a full disk) leaves this run's, not the last one's.
   write_stats(out / "stats.json", report);
-  if (render_frames && result.reason != StopReason::interrupted) {
-    report.quality = render_frames(world, out);
-    write_stats(out / "stats.json", report);
-  }
   std::string still_line;
-  if (still && !report.quality.frames.empty())
-    still_line = add_still_reference(out / "stats.json", *still, report.quality);
+  if (render_frames && result.reason != StopReason::interrupted)
+    report.quality =
+        render_frames(world, out, [&](const PackingQuality& quality, const std::filesystem::path& scratch) {
+          report.quality = quality;
+          write_stats(scratch / "stats.json", report);
+          if (still && !quality.frames.empty())
+            still_line = add_still_reference(scratch / "stats.json", *still, quality);
+        });
   std::cerr << written_files(out, WrittenBy::pack);
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality) << still_line;
-  return result.reason == StopReason::interrupted ? static_cast<int>(ExitCode::interrupted) : 0;
+  return result.reason == StopReason::interrupted ? StopSignals::exit_code() : 0;
 }
 
 }  // namespace animpak::cli

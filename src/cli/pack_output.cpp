@@ -14,6 +14,7 @@
 
 #include "animpak/curve.hpp"
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/version.hpp"
 #include "evenness_output.hpp"
 
@@ -170,10 +171,10 @@ void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& qu
       {"movement", moves}};
 }
 
-// Through a temporary file and a rename (replace_file), so that a failed write never loses the statistics
+// Through a checked temporary file and a rename (write_file_atomically), so that a failed write never loses the statistics
 // already there.
 void write_json(const std::filesystem::path& file, const nlohmann::json& value) {
-  replace_file(file, value.dump(2) + "\n", "cannot write the statistics; check the folder");
+  write_file_atomically(file, value.dump(2) + "\n");
 }
 
 }  // namespace
@@ -294,9 +295,17 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
   write_json(file, stats);
 }
 
+nlohmann::json read_stats_json(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec)))
+    return nlohmann::json(nlohmann::json::value_t::discarded);
+  return nlohmann::json::parse(
+      read_folder_file(file.parent_path(), file.filename(), "move it away; animpak writes its statistics there"),
+      nullptr, false);
+}
+
 std::vector<ProgressSample> read_progress(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json j = read_stats_json(file);
   std::vector<ProgressSample> out;
   if (j.is_discarded() || !j.is_object() || !j.contains("progress") || !j["progress"].is_object()) return out;
   const nlohmann::json& p = j["progress"];
@@ -319,9 +328,8 @@ StillReference read_still_reference(const std::filesystem::path& folder) {
   const std::string what = "--still-reference " + folder.string() + ": ";
   const std::string remedy =
       "; pack the scene standing still first: animpak pack SCENE --still --out " + folder.string();
-  std::ifstream in(file);
-  if (!in) throw InputError(what + "cannot read " + file.string() + remedy);
-  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  if (!std::filesystem::exists(file)) throw InputError(what + "cannot read " + file.string() + remedy);
+  const nlohmann::json stats = read_stats_json(file);
   if (stats.is_discarded() || !stats.is_object()) throw InputError(what + file.string() + " is not JSON" + remedy);
   const nlohmann::json* mean = nullptr;
   if (stats.contains("quality") && stats["quality"].is_object() && stats["quality"].contains("frames")) {
@@ -340,11 +348,7 @@ StillReference read_still_reference(const std::filesystem::path& folder) {
 
 std::string add_still_reference(const std::filesystem::path& file, const StillReference& still,
                                 const PackingQuality& quality) {
-  nlohmann::json stats;
-  {
-    std::ifstream in(file);
-    stats = nlohmann::json::parse(in, nullptr, false);
-  }
+  nlohmann::json stats = read_stats_json(file);
   if (stats.is_discarded() || !stats.is_object()) return {};
   const QualitySummary q = summarize(quality.frames);
   const double lowest = q.coverage_min / still.coverage, mean = q.coverage_mean / still.coverage;
@@ -365,9 +369,7 @@ std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, 
   if (scene.is_object() && scene.contains("params") && scene["params"].is_object() &&
       scene["params"].contains("motion_curve"))
     return std::nullopt;  // the scene names its curve: that is the one it was packed on
-  std::ifstream in(stats_file);
-  if (!in) return std::nullopt;
-  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json stats = read_stats_json(stats_file);
   if (stats.is_discarded() || !stats.is_object() || !stats.contains("animpak") || !stats["animpak"].is_string())
     return std::nullopt;
   int major = 0, minor = 0;
@@ -377,9 +379,7 @@ std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, 
 }
 
 std::optional<StillReference> stored_still_reference(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  const nlohmann::json stats = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json stats = read_stats_json(file);
   if (stats.is_discarded() || !stats.is_object() || !stats.contains("still_reference")) return std::nullopt;
   const nlohmann::json& ref = stats["still_reference"];
   if (!ref.is_object() || !ref.contains("coverage") || !ref["coverage"].is_number() || !ref.contains("folder") ||
@@ -388,15 +388,27 @@ std::optional<StillReference> stored_still_reference(const std::filesystem::path
   return StillReference{ref["folder"].get<std::string>(), ref["coverage"].get<double>()};
 }
 
-bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
-                          const PackingQuality& quality) {
-  nlohmann::json stats;
-  if (std::filesystem::exists(file)) {
-    std::ifstream in(file);
-    stats = nlohmann::json::parse(in, nullptr, false);
-    if (stats.is_discarded() || !stats.is_object()) return false;
-  } else {
-    // A folder without stats.json (copied without it): what the checkpoint itself knows.
+std::string update_stats_quality(const std::filesystem::path& file, const std::filesystem::path& written_to,
+                                 const Checkpoint& checkpoint, const World& world, const PackingQuality& quality) {
+  nlohmann::json stats = read_stats_json(file);
+  // A stats.json that is not this packing's (not JSON, another tool's, another packing's counts) is kept
+  // aside, not merged into: `report` would refuse the mix and send the user back here.
+  const auto differs = [&](const char* key, const nlohmann::json& value) {
+    return stats.contains(key) && stats[key] != value;
+  };
+  std::string note;
+  if (!stats.is_discarded() &&
+      (!stats.is_object() || !stats.contains("format_version") || differs("elements", world.elements.size()) ||
+       differs("seed", checkpoint.seed) || differs("iterations", checkpoint.state.iteration))) {
+    std::filesystem::path aside = file;
+    aside.replace_filename("stats.foreign.json");
+    std::filesystem::rename(file, aside);
+    note = file.string() + " was not this packing's statistics; kept as " + aside.filename().string() +
+           ", and a new one written";
+    stats = nlohmann::json(nlohmann::json::value_t::discarded);
+  }
+  if (stats.is_discarded()) {
+    // No stats.json of its own (copied without it, or kept aside above): what the checkpoint itself knows.
     stats = {{"format_version", kStatsFormatVersion},    {"animpak", std::string(animpak_version)},
              {"scene", checkpoint.scene_file.string()},  {"seed", checkpoint.seed},
              {"elements", world.elements.size()},        {"vertices", world.topology.vertex_count()},
@@ -404,8 +416,8 @@ bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& c
   }
   set_quality(stats, world, quality);
   stats["rendered_by"] = build_commit();
-  write_json(file, stats);
-  return true;
+  write_json(written_to, stats);
+  return note;
 }
 
 }  // namespace animpak::cli

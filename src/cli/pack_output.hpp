@@ -2,6 +2,8 @@
 // lives in render_commands.cpp, so that animpak-solve links no rendering library.
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include "animpak/checkpoint.hpp"
 #include "animpak/progress.hpp"
 #include "animpak/render.hpp"
@@ -43,11 +45,17 @@ void write_stats(const std::filesystem::path& file, const PackReport& report);
 /// the runs before a resume.
 std::vector<ProgressSample> read_progress(const std::filesystem::path& file);
 
-/// After `render`: replaces the frame metrics and quality summaries in `file` (stats.json) with those of
-/// the frames just rendered, keeping the rest of what `pack` wrote, or writes what the checkpoint knows
-/// when there is no file. Returns false, leaving the file as it is, when it is not a JSON object.
-bool update_stats_quality(const std::filesystem::path& file, const Checkpoint& checkpoint, const World& world,
-                          const PackingQuality& quality);
+/// An output folder's stats.json; a discarded value (is_discarded()) when it is missing or not JSON. A
+/// link or special file in its place is refused (InputError), never opened.
+nlohmann::json read_stats_json(const std::filesystem::path& file);
+
+/// After `render`: the frame metrics and quality summaries of the frames just rendered in place of those in
+/// `file` (stats.json), the rest of what `pack` wrote kept (what the checkpoint knows when there is no
+/// file), written to `written_to` (the render's scratch copy, swapped in with the frames). A file that is not this packing's (not JSON, no format_version, another
+/// element count, seed or iteration count) is renamed stats.foreign.json first; the note returned says so
+/// (empty otherwise).
+std::string update_stats_quality(const std::filesystem::path& file, const std::filesystem::path& written_to,
+                                 const Checkpoint& checkpoint, const World& world, const PackingQuality& quality);
 
 /// The still reference an animated packing's coverage is judged by (docs/quality.md, "Still reference"):
 /// the mean frame coverage in FOLDER/stats.json, a folder that `pack --still` wrote.

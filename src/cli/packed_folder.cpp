@@ -1,14 +1,19 @@
 #include "packed_folder.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cerrno>
+#include <cstring>
 #include <regex>
 #include <set>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/sha256.hpp"
 
 namespace animpak::cli {
@@ -23,11 +28,19 @@ constexpr int kManifestVersion = 1;
 const char* const kAnimationFiles[] = {"animation.gif", "animation.mp4", "animation.json", "animation.lottie",
                                        "animation.svg", "contact.png",   "report.html",    "trajectory.svg"};
 
-void write_bytes(const fs::path& file, const std::string& bytes) {
-  fs::create_directories(file.parent_path());
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!out) throw InputError(file.string() + ": cannot write it; check the folder and free disk space");
+// The largest file read from inside an output folder that is not state.bin: art, the manifest, stats.json.
+constexpr std::uintmax_t kMaxFolderFile = 64u << 20;
+// Where a new packing is written until it is whole (docs/cli.md, "What survives"), the packing before it
+// moved aside while the new one is swapped in, and the mark that the new one is whole.
+constexpr const char* kNewPack = ".pack-new";
+constexpr const char* kOldPack = ".pack-old";
+constexpr const char* kPackComplete = "complete";
+// What a packing is, besides its frames: moved as a whole when a new packing replaces it.
+const char* const kPackingFiles[] = {"input", "state.bin", "stats.json"};
+
+std::string read_in_folder(const fs::path& dir, const fs::path& relative, const std::string& what_to_do) {
+  refuse_links_below(dir, relative, what_to_do);
+  return read_regular_file(dir / relative, what_to_do, kMaxFolderFile);
 }
 
 struct ManifestArt {
@@ -50,8 +63,10 @@ struct Manifest {
 std::optional<Manifest> read_manifest(const fs::path& dir) {
   Manifest m;
   m.file = dir / "input" / "manifest.json";
-  if (!fs::exists(m.file)) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(read_bytes(m.file, "restore the folder"), nullptr, false);
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(m.file, ec))) return std::nullopt;
+  const nlohmann::json j =
+      nlohmann::json::parse(read_in_folder(dir, "input/manifest.json", "restore the folder"), nullptr, false);
   try {
     if (j.is_discarded() || j.at("format_version").get<int>() > kManifestVersion) throw std::exception();
     m.scene_sha256 = j.at("scene").at("sha256").get<std::string>();
@@ -98,19 +113,29 @@ void check_inputs_writable(const fs::path& dir) {
                      "move it elsewhere or pack into another --out");
 }
 
+void check_folder_writable(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(file_error(dir, "cannot create the output folder", ec.value()));
+  if (!fs::is_directory(dir)) throw InputError(dir.string() + ": not a folder; give --out a folder's path");
+  const fs::path probe = dir / ".animpak-write-test";
+  write_file_atomically(probe, "animpak\n");
+  fs::remove(probe, ec);
+}
+
 void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
   check_inputs_writable(dir);
   const fs::path input = dir / "input";
   fs::remove_all(input);
   const std::string scene_name = snapshot.scene_file.filename().string();
-  write_bytes(input / scene_name, snapshot.scene_text);
+  write_file_atomically(input / scene_name, snapshot.scene_text);
   nlohmann::json art = nlohmann::json::array();
   std::set<std::string> names;
   for (const InputSnapshot::Art& a : snapshot.art) {
     // Art files of the same name from different folders get a number in front, so none replaces another.
     std::string name = a.source.filename().string();
     for (int n = 2; !names.insert(name).second; ++n) name = std::to_string(n) + "-" + a.source.filename().string();
-    write_bytes(input / "art" / name, a.bytes);
+    write_file_atomically(input / "art" / name, a.bytes);
     art.push_back({{"reference", a.written}, {"file", "art/" + name}, {"sha256", sha256_hex(a.bytes)}});
   }
   const nlohmann::json manifest = {{"format_version", kManifestVersion},
@@ -119,7 +144,10 @@ void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
                                      {"packed_from", snapshot.scene_file.string()},
                                      {"sha256", sha256_hex(snapshot.scene_text)}}},
                                    {"art", art}};
-  write_bytes(input / "manifest.json", manifest.dump(2) + "\n");
+  // The manifest last: a folder with one has every file it names.
+  write_file_atomically(input / "manifest.json", manifest.dump(2) + "\n");
+  sync_folder(input / "art");
+  sync_folder(input);
 }
 
 PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, const std::optional<fs::path>& scene,
@@ -152,10 +180,15 @@ PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, cons
     if (sha256_hex(checkpoint.scene_text) != manifest->scene_sha256)
       throw InputError(manifest->file.string() + ": belongs to another packing than " + state +
                        "; restore the folder, or pass --scene FILE with the scene it was packed from");
-    p.locate = [manifest](const std::string& written, const fs::path& resolved) {
+    p.locate = [manifest, dir](const std::string& written, const fs::path&) {
       const ManifestArt* packed = manifest->find(written);
-      if (!packed) return resolved;
-      if (sha256_hex(read_bytes(packed->file, "restore the folder, or pass --scene FILE")) != packed->sha256)
+      // Never the original scene's folder: what is there now is not checked against anything.
+      if (!packed)
+        throw InputError(manifest->file.string() + ": names no copy of art \"" + written +
+                         "\", which the packed scene uses; restore the folder, or pass --scene FILE with the "
+                         "scene it was packed from");
+      const std::string what_to_do = "restore the folder, or pass --scene FILE";
+      if (sha256_hex(read_in_folder(dir, packed->file.lexically_relative(dir), what_to_do)) != packed->sha256)
         throw InputError(packed->file.string() + ": changed since it was packed (its SHA-256 is not the one in " +
                          manifest->file.string() + "); restore it, or pass --scene FILE with the packed art");
       return packed->file;
@@ -191,37 +224,122 @@ fs::path render_scratch(const fs::path& dir) {
 }
 
 void install_rendered(const fs::path& scratch, const fs::path& dir) {
+  // Every file checked and on disk before the first of the render before is removed: a render that
+  // failed on a full disk leaves the one before whole.
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(scratch))
+    if (e.is_regular_file()) sync_written_file(e.path());
+  refuse_links_below(dir, "frames", "move the link away; frames/ is written by animpak render");
   remove_rendered(dir);
   for (const char* name : kAnimationFiles)
     if (fs::exists(scratch / name)) fs::rename(scratch / name, dir / name);
+  // The statistics of these frames (BesideFrames), over those of the frames before.
+  if (fs::exists(scratch / "stats.json")) fs::rename(scratch / "stats.json", dir / "stats.json");
   if (fs::is_directory(scratch / "frames")) {
     fs::create_directories(dir / "frames");
     for (const fs::directory_entry& e : fs::directory_iterator(scratch / "frames"))
       if (is_frame_file(e.path())) fs::rename(e.path(), dir / "frames" / e.path().filename());
   }
   fs::remove_all(scratch);
+  sync_folder(dir / "frames");
+  sync_folder(dir);
 }
 
 std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot read it; " + what_to_do);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return read_regular_file(file, what_to_do, kMaxFolderFile, true);
 }
 
-void replace_file(const fs::path& file, const std::string& bytes, const std::string& failure) {
-  fs::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw InputError(file.string() + ": " + failure);
-    }
+std::string read_folder_file(const fs::path& dir, const fs::path& relative, const std::string& what_to_do) {
+  return read_in_folder(dir, relative, what_to_do);
+}
+
+FolderLock::FolderLock(const fs::path& dir, const std::string& command) {
+  if (!fs::is_directory(dir))
+    throw InputError(dir.string() + ": not a folder (" + (fs::exists(dir) ? "a file" : "it does not exist") +
+                     "); give the folder `animpak pack --out` wrote");
+  const fs::path file = dir / ".animpak.lock";
+  refuse_links_below(dir, ".animpak.lock", "remove the link; animpak keeps its lock there");
+  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw InputError(file_error(file, "cannot take the folder's lock", errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;
+    std::string holder(200, '\0');
+    const ssize_t n = ::pread(fd_, holder.data(), holder.size(), 0);
+    holder.resize(n > 0 ? std::size_t(n) : 0);
+    while (!holder.empty() && (holder.back() == '\n' || holder.back() == '\0')) holder.pop_back();
+    ::close(fd_);
+    fd_ = -1;
+    if (error != EWOULDBLOCK) throw InputError(file_error(file, "cannot take the folder's lock", error));
+    throw InputError(dir.string() + ": another animpak is using this folder" +
+                     (holder.empty() ? std::string() : " (" + holder + ")") +
+                     "; wait for it to end, or stop it, and run this command again");
   }
-  fs::rename(temporary, file);
+  const std::string holder = "pid " + std::to_string(::getpid()) + ": " + command + "\n";
+  // Who holds it, for the message a second run prints; the lock works without it.
+  if (::ftruncate(fd_, 0) == 0) {
+    const ssize_t written = ::pwrite(fd_, holder.data(), holder.size(), 0);
+    static_cast<void>(written);
+  }
+}
+
+FolderLock::~FolderLock() {
+  if (fd_ >= 0) ::close(fd_);  // releases the lock; the file stays, empty of meaning until the next run
+}
+
+fs::path new_pack_dir(const fs::path& dir) { return dir / kNewPack; }
+
+bool has_unfinished_pack(const fs::path& dir) {
+  std::error_code ec;
+  return fs::is_regular_file(fs::symlink_status(dir / kNewPack / "state.bin", ec)) &&
+         !fs::exists(fs::symlink_status(dir / kNewPack / kPackComplete, ec));
+}
+
+void start_new_pack(const fs::path& dir) {
+  refuse_links_below(dir, kNewPack, "remove the link; animpak writes a new packing there");
+  fs::remove_all(dir / kNewPack);
+  fs::remove_all(dir / kOldPack);
+  fs::create_directories(dir / kNewPack);
+}
+
+void install_new_pack(const fs::path& dir) {
+  const fs::path staged = dir / kNewPack;
+  sync_folder(staged);
+  write_file_atomically(staged / kPackComplete, "");
+  sync_folder(staged);
+  recover_folder(dir);
+}
+
+bool recover_folder(const fs::path& dir) {
+  const fs::path staged = dir / kNewPack, old = dir / kOldPack;
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(staged / kPackComplete, ec))) {
+    // No whole new packing: whatever a kill left in .pack-old goes back (the new one is not swapped in).
+    if (fs::is_directory(fs::symlink_status(old, ec))) {
+      for (const char* name : kPackingFiles)
+        if (fs::exists(fs::symlink_status(old / name, ec)) && !fs::exists(fs::symlink_status(dir / name, ec)))
+          fs::rename(old / name, dir / name);
+      fs::remove_all(old);
+    }
+    return false;
+  }
+  // A whole new packing: swapped in, or the swap a kill cut short finished. Each step can be repeated.
+  refuse_links_below(dir, kOldPack, "remove the link; animpak keeps the packing it replaces there");
+  fs::create_directories(old);
+  for (const char* name : kPackingFiles) {
+    const bool incoming = fs::exists(fs::symlink_status(staged / name, ec));
+    if ((incoming || std::string(name) == "stats.json") && fs::exists(fs::symlink_status(dir / name, ec))) {
+      fs::remove_all(old / name);
+      fs::rename(dir / name, old / name);
+    }
+    if (incoming) fs::rename(staged / name, dir / name);
+  }
+  const bool replaced = fs::exists(fs::symlink_status(old / "state.bin", ec));
+  sync_folder(dir);
+  // Frames of the packing before must not stay beside this one.
+  if (replaced) remove_rendered(dir);
+  fs::remove_all(old);
+  fs::remove_all(staged);
+  sync_folder(dir);
+  return true;
 }
 
 }  // namespace animpak::cli

@@ -32,6 +32,10 @@ InputSnapshot snapshot_inputs(const std::filesystem::path& file, const std::stri
 /// starts, so that the folder in the way costs no packing.
 void check_inputs_writable(const std::filesystem::path& dir);
 
+/// Creates `dir` and writes and removes a file in it, so a read-only folder, a file named as the folder
+/// or a full disk is refused before any simulation.
+void check_folder_writable(const std::filesystem::path& dir);
+
 /// Replaces DIR/input/ with the snapshot: the scene, its art under art/, and manifest.json.
 void write_inputs(const std::filesystem::path& dir, const InputSnapshot& snapshot);
 
@@ -57,14 +61,47 @@ void remove_rendered(const std::filesystem::path& dir);
 /// an interrupted render leaves the previous one whole.
 std::filesystem::path render_scratch(const std::filesystem::path& dir);
 
-/// Replaces the rendered files in `dir` with those in `scratch`, then removes `scratch`.
+/// Replaces the rendered files in `dir` (and stats.json, when the scratch folder holds one) with those in
+/// `scratch`, each checked and flushed to disk before the first old one goes, then removes `scratch`.
 void install_rendered(const std::filesystem::path& scratch, const std::filesystem::path& dir);
 
-/// The file's bytes; InputError `<file>: cannot read it; <what_to_do>`.
+/// A file named by the user (a scene, --scene): a regular file, links followed, at most 64 MB;
+/// InputError `<file>: <why>; <what_to_do>`.
 std::string read_bytes(const std::filesystem::path& file, const std::string& what_to_do);
 
-/// Writes `bytes` to `file` through `file`.tmp and a rename, so that a failed write never loses the file
-/// already there (stats.json, report.html); InputError `<file>: <failure>` when the write fails.
-void replace_file(const std::filesystem::path& file, const std::string& bytes, const std::string& failure);
+/// A file inside an output folder: no link below `dir` followed, only a regular file opened.
+std::string read_folder_file(const std::filesystem::path& dir, const std::filesystem::path& relative,
+                             const std::string& what_to_do);
+
+/// One run per folder (docs/cli.md, "What survives"): an advisory lock (flock) on DIR/.animpak.lock,
+/// held until the object is destroyed or the process ends, however it ends. A second run is refused at
+/// once with InputError naming the one that holds it.
+class FolderLock {
+ public:
+  FolderLock(const std::filesystem::path& dir, const std::string& command);
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  ~FolderLock();
+
+ private:
+  int fd_ = -1;
+};
+
+// A new packing (a fresh pack, or --force over a packing) is written into DIR/.pack-new until it ends:
+// input/ first, then state.bin at every checkpoint. Only when it is whole is it swapped in for the
+// packing before it (moved to DIR/.pack-old meanwhile, then removed), so a kill at any moment leaves
+// either the packing before or the new one, never a mix (docs/cli.md, "What survives").
+
+/// DIR/.pack-new.
+std::filesystem::path new_pack_dir(const std::filesystem::path& dir);
+/// A new packing was started and not swapped in (killed): `pack --resume DIR` continues it.
+bool has_unfinished_pack(const std::filesystem::path& dir);
+/// Clears what an earlier new packing left and makes DIR/.pack-new.
+void start_new_pack(const std::filesystem::path& dir);
+/// Marks DIR/.pack-new whole and swaps it in, removing the packing before and its rendered files.
+void install_new_pack(const std::filesystem::path& dir);
+/// Finishes a swap a kill cut short (every command calls it under the lock before reading the folder);
+/// true when it swapped a packing in.
+bool recover_folder(const std::filesystem::path& dir);
 
 }  // namespace animpak::cli

@@ -13,6 +13,7 @@
 #include "console.hpp"
 #include "frontend.hpp"
 #include "pack_output.hpp"
+#include "validators.hpp"
 
 namespace animpak::cli {
 namespace {
@@ -90,7 +91,8 @@ FrameOutput frame_output(const FrameOptions& options) {
 
 /// Writes the frames in the requested formats into a scratch folder, swaps them in for every rendered file
 /// already in `dir` and returns their quality.
-PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options) {
+PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options,
+                             const BesideFrames& beside) {
   FrameOutput out = frame_output(options);
   out.dir = render_scratch(dir);
   RenderProgress progress;
@@ -99,27 +101,16 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
             << "\n";
   PackingQuality quality = write_frames(world, world.state, out);
   progress.finish();
+  if (beside) beside(quality, out.dir);
   install_rendered(out.dir, dir);
   return quality;
 }
-
-// A finite number: CLI::Range lets NaN through (it compares false with both bounds), and `--fps nan` wrote
-// `"fr":nan` into animation.json, which is not JSON.
-const CLI::Validator kFinite(
-    [](std::string& argument) {
-      double value = 0.0;
-      const char* end = argument.data() + argument.size();
-      const auto [stop, error] = std::from_chars(argument.data(), end, value);
-      return error == std::errc() && stop == end && std::isfinite(value) ? std::string()
-                                                                         : "expected a finite number, got " + argument;
-    },
-    "FINITE");
 
 void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--frames", f.frames, "frames in the animation")->check(CLI::Range(1, 100000));
   cmd.add_option("--size", f.size, "frame height in pixels")->check(CLI::Range(16, 8192));
   cmd.add_option("--fps", f.fps, "frames per second of gif, mp4, lottie and svg-anim")
-      ->check(kFinite & CLI::Range(1.0, 240.0));
+      ->check(finite_number() & CLI::Range(1.0, 240.0));
   cmd.add_option("--format", f.formats,
                  "png, gif, mp4, svg (frames), lottie (animation.json), dotlottie (animation.lottie), svg-anim "
                  "(animation.svg); several allowed, separated by commas (gif,mp4)")
@@ -250,8 +241,8 @@ class RenderingFrontend final : public Frontend {
   FrameRenderer frame_renderer() const override {
     if (!pack_render_) return {};
     frame_output(pack_frames_);  // a bad option fails now, not after the packing
-    return [frames = pack_frames_](const World& world, const std::filesystem::path& dir) {
-      return render_frames(world, dir, frames);
+    return [frames = pack_frames_](const World& world, const std::filesystem::path& dir, const BesideFrames& beside) {
+      return render_frames(world, dir, frames, beside);
     };
   }
 
@@ -282,6 +273,10 @@ int render(const RenderOptions& options) {
   // Read first, so that a wrong folder is refused before the frames are drawn.
   std::optional<StillReference> still;
   if (options.still_reference) still = read_still_reference(*options.still_reference);
+  const FolderLock lock(options.dir, "animpak render " + options.dir.string());
+  if (recover_folder(options.dir))
+    std::cerr << "animpak: finished swapping in the packing a killed pack left whole in " << options.dir.string()
+              << "\n";
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
   const PackedScene packed = packed_scene(options.dir, checkpoint, options.scene, options.force);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed);
@@ -293,18 +288,18 @@ int render(const RenderOptions& options) {
               << (*curve == 1 ? "the monotone cubic" : "straight lines") << " between slices; rendering on it ("
               << "\"motion_curve\": " << *curve << "; the scene's params can name another)\n";
   }
-  const PackingQuality quality = render_frames(loaded.world, options.dir, options.frames);
-  std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
-  if (!quality.frames.empty() && !update_stats_quality(stats, checkpoint, loaded.world, quality))
-    std::cerr << "animpak: warning: " << stats.string()
-              << " is not a JSON object; left as it is, without these frames' metrics (delete it to have a new "
-                 "one written)\n";
-  if (options.contact_plot) {
-    write_contact_plot(quality.frames, options.dir / "contact.png");
-  }
   if (!still) still = stored_still_reference(stats);
-  std::string still_line;
-  if (still && !quality.frames.empty()) still_line = add_still_reference(stats, *still, quality);
+  std::string note, still_line;
+  const PackingQuality quality =
+      render_frames(loaded.world, options.dir, options.frames,
+                    [&](const PackingQuality& frames, const std::filesystem::path& scratch) {
+                      if (options.contact_plot) write_contact_plot(frames.frames, scratch / "contact.png");
+                      if (frames.frames.empty()) return;
+                      note = update_stats_quality(stats, scratch / "stats.json", checkpoint, loaded.world, frames);
+                      if (still) still_line = add_still_reference(scratch / "stats.json", *still, frames);
+                    });
+  std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
+  if (!note.empty()) std::cerr << "animpak: " << note << "\n";
   std::cerr << written_files(options.dir, WrittenBy::render);
   std::cout << quality_lines(quality) << still_line;
   return 0;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
 #include "report_page.hpp"
@@ -29,12 +30,13 @@ int report(const ReportOptions& options) {
   const std::filesystem::path stats_file = options.dir / "stats.json";
   if (!std::filesystem::exists(options.dir / "state.bin"))
     throw InputError(options.dir.string() + ": no state.bin; `animpak report` reads a folder `animpak pack` wrote");
+  const FolderLock lock(options.dir, "animpak report " + options.dir.string());
+  recover_folder(options.dir);
   if (!std::filesystem::exists(stats_file))
     throw InputError(stats_file.string() + ": not found; run `animpak render " + options.dir.string() +
                      "`, which measures the frames and writes it");
   ReportInput input;
-  input.stats =
-      nlohmann::json::parse(read_bytes(stats_file, "check that the file exists and is readable"), nullptr, false);
+  input.stats = read_stats_json(stats_file);
   if (input.stats.is_discarded() || !input.stats.is_object())
     throw InputError(stats_file.string() + ": not a JSON object; run `animpak render " + options.dir.string() +
                      "` to write it again");
@@ -73,14 +75,15 @@ int report(const ReportOptions& options) {
   if (svg_bytes > kInlineSvgLimit && std::filesystem::exists(gif)) {
     // Too large to open quickly inline: the GIF stands in, and the page says so.
     const std::uintmax_t megabytes = (svg_bytes + (1u << 19)) >> 20;
-    input.animation_gif = read_bytes(gif, "check that the file exists and is readable");
+    input.animation_gif = read_folder_file(options.dir, "animation.gif", "render the folder again");
     input.animation_note = "animation.svg (" + std::to_string(megabytes) +
                            " MB) is too large to open quickly inside a page, so this shows animation.gif; the slider "
                            "moves the plots' cursor. Open animation.svg beside this page for the vector animation.";
     std::cerr << "animpak: " << animation.string() << " is " << megabytes
               << " MB; the page shows animation.gif instead (the slider then moves the plots' cursor only)\n";
   } else if (have_svg) {
-    input.animation_svg = svg_element(read_bytes(animation, "check that the file exists and is readable"), animation);
+    input.animation_svg =
+        svg_element(read_folder_file(options.dir, "animation.svg", "render the folder again"), animation);
   } else {
     // Drawn as `render --format svg-anim` would, with the frame count the statistics were measured at; the
     // folder's own files are left as they are.
@@ -94,14 +97,14 @@ int report(const ReportOptions& options) {
     out.count = int(input.stats["frames"].size());
     out.formats = {FrameFormat::svg_anim};
     write_frames(world, world.state, out);
-    input.animation_svg = svg_element(read_bytes(scratch / "animation.svg", "check that the folder is writable"),
+    input.animation_svg = svg_element(read_folder_file(scratch, "animation.svg", "check that the folder is writable"),
                                       scratch / "animation.svg");
     std::filesystem::remove_all(scratch);
   }
 
   const std::filesystem::path file = options.out.value_or(options.dir / "report.html");
   const std::string page = report_page(input);
-  replace_file(file, page, "cannot write; check that the folder is writable and has room");
+  write_file_atomically(file, page);
   std::cerr << "animpak: wrote " << file.string() << " (" << (page.size() + 1023) / 1024 << " KiB, self-contained)\n";
   return 0;
 }

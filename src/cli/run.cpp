@@ -2,8 +2,10 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -15,8 +17,24 @@
 #include "animpak/version.hpp"
 #include "commands.hpp"
 #include "frontend.hpp"
+#include "validators.hpp"
 
 namespace animpak::cli {
+
+const CLI::Validator& finite_number() {
+  static const CLI::Validator validator(
+      [](std::string& argument) {
+        double value = 0.0;
+        const char* end = argument.data() + argument.size();
+        const auto [stop, error] = std::from_chars(argument.data(), end, value);
+        return error == std::errc() && stop == end && std::isfinite(value)
+                   ? std::string()
+                   : "expected a finite number, got " + argument;
+      },
+      "FINITE");
+  return validator;
+}
+
 namespace {
 
 int fail(const std::string& program, ExitCode code, const std::string& message) {
@@ -67,6 +85,11 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
                        : "expected a whole number from 0 to 18446744073709551615, got " + argument;
           },
           "UINT64"));
+  cl.pack_cmd
+      ->add_option("--checkpoint-every", cl.pack.checkpoint_seconds,
+                   "seconds between the states saved during the run, which a killed pack resumes from (0: at every "
+                   "statistics check)")
+      ->check(finite_number() & CLI::Range(0.0, 86400.0));
   cl.pack_cmd->add_option("--max-iterations", cl.pack.max_iterations, "stop after this many iterations")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
   cl.pack_cmd->add_option(
@@ -184,6 +207,11 @@ int run_command(const std::string& program, CommandLine& cl, Frontend& frontend)
     return fail(program, ExitCode::usage, e.what());
   } catch (const InputError& e) {
     return fail(program, ExitCode::bad_input, e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The folder or disk, not animpak: a rename across a link, a file where a folder should be.
+    return fail(program, ExitCode::bad_input,
+                (e.path1().empty() ? std::string() : e.path1().string() + ": ") + e.code().message() +
+                    "; check the folder (permissions, free space, nothing in the way) and run the command again");
   } catch (const OpenclError& e) {
     return fail(program, ExitCode::internal, std::string("OpenCL: ") + e.what() + "\n(try --device reference)");
   } catch (const std::bad_alloc&) {
@@ -203,9 +231,10 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
                        program + " " + std::string(animpak_version) + " (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
   app.footer(
-      "Exit codes: 0 success, 1 usage error, 2 bad input, 3 internal error, 4 validate found a device "
-      "that differs from the reference, 130 pack interrupted by Ctrl-C (state.bin holds the state so far; "
-      "pack --resume DIR continues it).");
+      "Exit codes: 0 success, 1 usage error, 2 bad input or environment (a file, a folder, a full disk), 3 "
+      "internal error, 4 validate found a device that differs from the reference, 130 pack interrupted by "
+      "Ctrl-C (143 by SIGTERM, 129 by SIGHUP; state.bin holds the state so far; pack --resume DIR continues "
+      "it).");
 
   // Every option's default in --help; subcommands copy this from the app when they are added.
   app.option_defaults()->always_capture_default();

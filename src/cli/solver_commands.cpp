@@ -37,7 +37,7 @@ class SolverFrontend final : public Frontend {
 
   // Not a renderer: the place where pack would draw says where the frames will come from instead.
   FrameRenderer frame_renderer() const override {
-    return [](const World&, const std::filesystem::path& dir) {
+    return [](const World&, const std::filesystem::path& dir, const BesideFrames&) {
       std::cerr << "animpak: no frames rendered (animpak-solve has no rendering library); render them with "
                    "`animpak render "
                 << dir.string() << "` on a machine with the rendering stack\n";

@@ -2,8 +2,11 @@
 // into one SVG (trajectory_figure.hpp; docs/cli.md, "`trajectory`"), the paper's Fig. 16c for any element.
 #include <iomanip>
 #include <iostream>
+#include <memory>
+#include <set>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/render.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
@@ -29,6 +32,14 @@ int trajectory(const TrajectoryOptions& options) {
   TrajectoryFigure figure;
   figure.element = options.element;
   std::vector<double> widths;
+  // One lock per folder, each taken once: a folder named twice would otherwise wait on itself.
+  std::vector<std::unique_ptr<FolderLock>> locks;
+  std::set<std::filesystem::path> locked;
+  for (const std::filesystem::path& dir : options.dirs)
+    if (std::filesystem::is_directory(dir) && locked.insert(std::filesystem::weakly_canonical(dir)).second) {
+      locks.push_back(std::make_unique<FolderLock>(dir, "animpak trajectory " + dir.string()));
+      recover_folder(dir);
+    }
   for (std::size_t d = 0; d < options.dirs.size(); ++d) {
     const std::filesystem::path& dir = options.dirs[d];
     if (!std::filesystem::exists(dir / "state.bin"))
@@ -75,7 +86,7 @@ int trajectory(const TrajectoryOptions& options) {
               << ", 99th percentile " << stats.acceleration_p99 << " container widths per loop^2\n";
   }
   const std::filesystem::path file = options.out.value_or(options.dirs[0] / "trajectory.svg");
-  replace_file(file, trajectory_svg(figure), "cannot write; check that the folder is writable and has room");
+  write_file_atomically(file, trajectory_svg(figure));
   std::cerr << "animpak: wrote " << file.string() << "\n";
   return 0;
 }

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/version.hpp"
 #include "frame_writers.hpp"
 
@@ -430,8 +432,7 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
 
 void write_svg_animation(const World& world, const SimState& state, const FrameOutput& out,
                          const std::vector<std::string>& ids, const std::filesystem::path& file) {
-  std::ofstream svg(file);
-  if (!svg) throw InputError(file.string() + ": cannot write; check that the folder is writable");
+  std::ostringstream svg;  // written whole and checked by write_file_atomically
   const SvgView view = svg_view(world, out);
   write_svg_head(svg, view, world, out.style);
   for (int e = 0; e < drawn_count(world); ++e) {
@@ -452,6 +453,7 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
   }
   svg << "</svg>\n";
   check_written(svg, file);
+  write_file_atomically(file, svg.str());
 }
 
 }  // namespace animpak::frame_writers

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/version.hpp"
 #include "frame_writers.hpp"
 
@@ -71,10 +72,7 @@ void write_dotlottie(const World& world, const SimState& state, const FrameOutpu
                                "\"animations\":[{\"id\":\"animation\",\"loop\":true,\"autoplay\":true,\"speed\":1,"
                                "\"direction\":1,\"playMode\":\"normal\"}]}\n";
   const std::string bytes = zip({{"manifest.json", manifest}, {"animations/animation.json", document.str()}}, file);
-  std::ofstream zipped(file, std::ios::binary);
-  if (!zipped) throw InputError(file.string() + ": cannot write; check that the folder is writable");
-  zipped.write(bytes.data(), std::streamsize(bytes.size()));
-  if (!zipped) throw InputError(file.string() + ": writing failed; check free disk space");
+  write_file_atomically(file, bytes);
 }
 
 }  // namespace animpak::frame_writers

@@ -1,5 +1,6 @@
 #include <cairo.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <stdexcept>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/render.hpp"
 
 namespace animpak {
@@ -203,9 +205,15 @@ void Picture::write(const std::filesystem::path& file) const {
   auto out = OIIO::ImageOutput::create(file.string());
   if (!out) throw InputError(file.string() + ": cannot write this image format (" + OIIO::geterror() + "); use .png");
   const OIIO::ImageSpec spec(width(), height(), 4, OIIO::TypeDesc::UINT8);
+  // Encoded in memory and written by write_file_atomically: OpenImageIO's PNG writer does not report a
+  // write that fails on a full disk, and left cut-off frames that looked written.
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
+    throw InputError(file.string() + ": cannot encode this image format in memory; use .png");
   if (!out->open(file.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) || !out->close())
-    throw InputError(file.string() + ": cannot write the image (" + out->geterror() +
-                     "); check that the folder exists and is writable");
+    throw InputError(file.string() + ": cannot encode the image (" + out->geterror() + ")");
+  write_file_atomically(file, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 }  // namespace animpak

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/file_io.hpp"
 #include "animpak/render.hpp"
 #include "animpak/xml_text.hpp"
 #include "frame_writers.hpp"
@@ -127,8 +128,7 @@ void write_svg_container(std::ostream& out, const World& world, const FrameStyle
 // paint. Strokes have round joins and caps as draw_art paints them.
 void write_svg(const World& world, const std::vector<ElementArt>& art, const FrameStyle& style,
                const std::vector<std::string>& ids, const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw InputError(file.string() + ": cannot write; check that the folder is writable");
+  std::ostringstream out;  // written whole and checked by write_file_atomically
   const ArtFrame& frame = world.container.frame;
   auto to_art = [&](Vec2 p) { return frame.to_art(p); };
   Box box;
@@ -150,7 +150,7 @@ void write_svg(const World& world, const std::vector<ElementArt>& art, const Fra
     out << "</g>\n";
   }
   out << "</svg>\n";
-  if (!out) throw InputError(file.string() + ": writing failed; check free disk space");
+  write_file_atomically(file, out.str());
 }
 
 void run_ffmpeg(const std::string& args, const std::filesystem::path& target) {
@@ -229,9 +229,9 @@ void write_animations(const World& world, const SimState& state, const FrameOutp
   if (wants(FrameFormat::lottie)) {
     report(out, animation_file_name(FrameFormat::lottie));
     const auto file = out.dir / animation_file_name(FrameFormat::lottie);
-    std::ofstream json(file);
-    if (!json) throw InputError(file.string() + ": cannot write; check that the folder is writable");
+    std::ostringstream json;
     frame_writers::write_lottie(world, state, out, ids, json, file);
+    write_file_atomically(file, json.str());
   }
   if (wants(FrameFormat::dotlottie)) {
     report(out, animation_file_name(FrameFormat::dotlottie));

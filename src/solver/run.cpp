@@ -38,7 +38,18 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   const auto clean_step = [](const StepStatistics& st) {
     return st.overlapping_vertices == 0 && st.outside_vertices == 0;
   };
+  const std::uint64_t first = iteration;
+  auto last_checkpoint = start;
   for (;;) {
+    // A checkpoint where an interrupt would save (a grid-rebuild boundary) and only right after a finite
+    // check, so that it never holds a NaN the next check would have caught.
+    if (control.on_checkpoint && iteration != first && iteration == result.last_good.iteration &&
+        iteration % rebuild == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count() >=
+            control.checkpoint_seconds) {
+      control.on_checkpoint(backend.state());
+      last_checkpoint = std::chrono::steady_clock::now();
+    }
     // An interrupt is honoured on a grid-rebuild boundary, so a resumed run rebuilds the grid at the
     // same steps as an uninterrupted one and stays bit-identical.
     if (control.interrupt && control.interrupt->load() && iteration % rebuild == 0) {

@@ -102,10 +102,17 @@ TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer 
   CHECK_THAT(checksum.err, Contains("checksum mismatch"));
 
   std::string newer = good;
-  newer[8] = 5;  // the little-endian u32 version right after the 8 magic bytes
+  newer[8] = 6;  // the little-endian u32 version right after the 8 magic bytes
   const CommandResult version = render_state(box, newer);
   CHECK(version.code == 2);
-  CHECK_THAT(version.err, Contains("state format version 5") && Contains("reads versions 2 to 4"));
+  CHECK_THAT(version.err, Contains("state format version 6") && Contains("reads version 5"));
+
+  // Version 4 ended in an FNV checksum anyone can recompute: refused, not trusted.
+  std::string older = good;
+  older[8] = 4;
+  const CommandResult old_version = render_state(box, older);
+  CHECK(old_version.code == 2);
+  CHECK_THAT(old_version.err, Contains("state format version 4") && Contains("pack the scene again"));
 }
 
 TEST_CASE("animpak pack: elements overlapping after shrinking exit 2 naming them, no SCENE nor --resume exits 1") {
@@ -298,12 +305,29 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   CHECK(stats["stop_reason"] == "max_iterations");
   CHECK(stats["format_version"] == 1);
 
-  // A stats.json that is not JSON is left as it is, with a warning.
+  // A stats.json that is not this packing's (not JSON, or another packing's element count) is kept aside
+  // as stats.foreign.json and a new one written, so that `report`, which refuses it, has a way out.
   write_bytes(out + "/stats.json", "{ not json");
   r = run_animpak("render " + out + " --frames 2 --size 16 --format svg");
   CHECK(r.code == 0);
-  CHECK_THAT(r.err, Contains("stats.json is not a JSON object; left as it is"));
-  CHECK(bytes_of(out + "/stats.json") == "{ not json");
+  CHECK_THAT(r.err, Contains("was not this packing's statistics; kept as stats.foreign.json"));
+  CHECK(bytes_of(out + "/stats.foreign.json") == "{ not json");
+  stats = nlohmann::json::parse(read_text(out + "/stats.json"));
+  CHECK(stats["frames"].size() == 2);
+  CHECK(stats["iterations"] == 10);
+  stats["elements"] = 99;
+  stats["final_growth"] = nlohmann::json::array({1, 2});
+  write_bytes(out + "/stats.json", stats.dump());
+  const CommandResult refused = run_animpak("report " + out);
+  CHECK(refused.code == 2);
+  CHECK_THAT(refused.err, Contains("another packing's"));
+  r = run_animpak("render " + out + " --frames 2 --size 16 --format svg");
+  CHECK(r.code == 0);
+  CHECK_THAT(r.err, Contains("kept as stats.foreign.json"));
+  CHECK(nlohmann::json::parse(read_text(out + "/stats.json"))["elements"] == packed["elements"]);
+  const CommandResult reported = run_animpak("report " + out);
+  INFO(reported.err);
+  CHECK(reported.code == 0);
 }
 
 TEST_CASE(
