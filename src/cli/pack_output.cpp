@@ -11,6 +11,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "animpak/curve.hpp"
 #include "animpak/error.hpp"
@@ -35,11 +36,16 @@ LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state,
   if (with_state) {
     const Topology& topo = loaded.world.topology;
     const SimState& s = checkpoint.state;
-    if (s.x.size() != std::size_t(topo.vertex_count()) || s.spring_rest.size() != topo.spring_other.size() ||
-        s.growth.size() != std::size_t(topo.slice_count()))
-      throw InputError(packed.file.string() + ": the scene now builds " + std::to_string(topo.vertex_count()) +
-                       " vertices but the state holds " + std::to_string(s.x.size()) +
-                       "; the scene or its art changed since packing, so pack it again");
+    // Each array against what the scene builds, named, so that the two numbers in the message differ.
+    const std::tuple<const char*, std::size_t, std::size_t> sizes[] = {
+        {"vertices", std::size_t(topo.vertex_count()), s.x.size()},
+        {"spring ends", topo.spring_other.size(), s.spring_rest.size()},
+        {"slices", std::size_t(topo.slice_count()), s.growth.size()}};
+    for (const auto& [what, built, held] : sizes)
+      if (built != held)
+        throw InputError(packed.file.string() + ": the scene now builds " + std::to_string(built) + " " + what +
+                         " but the state holds " + std::to_string(held) +
+                         "; the scene or its art changed since packing, so pack it again");
     loaded.world.state = s;
   }
   loaded.setup_seconds = seconds_since(start);

@@ -14,6 +14,7 @@
 #include <limits>
 #include <string>
 
+#include "animpak/checkpoint.hpp"
 #include "animpak/sha256.hpp"
 #include "packed_folder.hpp"
 #include "run_animpak.hpp"
@@ -286,6 +287,17 @@ TEST_CASE("animpak render: a state whose values a packing cannot hold is refused
     const CommandResult resume = run_animpak("pack --resume " + out + " --no-render --max-iterations 20");
     CHECK(resume.code == 2);
   }
+
+  // Arrays of the wrong size, checksummed as animpak writes them: the message names the array and both sizes.
+  overwrite(out + "/state.bin", good);
+  animpak::Checkpoint cut = animpak::read_checkpoint(out + "/state.bin");
+  const std::size_t ends = cut.state.spring_rest.size();
+  cut.state.spring_rest.resize(ends - 2);
+  animpak::write_checkpoint(out + "/state.bin", cut);
+  const CommandResult r = run_animpak("render " + out + " --frames 1 --size 16 --format png");
+  CHECK(r.code == 2);
+  CHECK_THAT(r.err, Contains("builds " + std::to_string(ends) + " spring ends but the state holds " +
+                             std::to_string(ends - 2)));
 }
 
 TEST_CASE("animpak pack: a file in place of --out, a folder in place of state.bin, a blown-up step exit 2") {
