@@ -19,6 +19,17 @@ namespace animpak {
 /// are added, since an older program already rejects keys it does not know.
 inline constexpr int kSceneFormatVersion = 1;
 
+/// What one scene may build (docs/cli.md, "Limits"), refused before anything is built. Library
+/// entries: the examples list at most 5, and each entry is built once, used or not.
+inline constexpr int kMaxLibraryElements = 1000;
+/// Elements (unguided and guided copies): the largest example has 37; seeding and the placement
+/// checks grow faster than linearly with it.
+inline constexpr int kMaxSceneElements = 10000;
+/// Mesh vertices over every slice of every element and library element: the largest example has
+/// 101,200; a packing holds about 0.9 KB per vertex at its peak (measured: 1.16 GB for 1.32 million),
+/// so this keeps it under about 9 GB.
+inline constexpr double kMaxSceneVertices = 10'000'000;
+
 /// A keyed similarity transform of the whole element, applied about the pivot.
 struct TransformKey {
   double t = 0.0;            ///< animation time in [0, 1]

@@ -156,9 +156,25 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   const StopSignals signals;  // a signal during the set-up stops the run at its first step, saved
   Checkpoint checkpoint;
   const std::filesystem::path out = options.resume ? *options.resume : options.out;
-  if (options.resume && !std::filesystem::is_directory(out))
-    throw InputError((out / "state.bin").string() + ": cannot read the state file (" + out.string() +
-                     " is not a folder); give the folder `animpak pack --out` wrote");
+  const auto holds_packing = [&] { return std::filesystem::exists(out / "state.bin") || has_unfinished_pack(out); };
+  const auto refuse_packing = [&] {
+    throw UsageError(out.string() + " already holds a packing (" +
+                     (std::filesystem::exists(out / "state.bin") ? (out / "state.bin").string()
+                                                                 : "unfinished, in " + new_pack_dir(out).string()) +
+                     "); pass --force to overwrite it, or --resume " + out.string() + " to continue it");
+  };
+  std::optional<SceneSpec> new_scene;
+  if (options.resume) {
+    if (!std::filesystem::is_directory(out))
+      throw InputError((out / "state.bin").string() + ": cannot read the state file (" + out.string() +
+                       " is not a folder); give the folder `animpak pack --out` wrote");
+  } else {
+    // The scene before the folder: a scene that cannot be packed leaves no folder behind.
+    if (!options.force && holds_packing()) refuse_packing();
+    check_inputs_writable(out);
+    checkpoint.scene_file = std::filesystem::absolute(options.scene);
+    new_scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
+  }
   check_folder_writable(out);  // a read-only folder, a file in the way or a full disk: before any work
   const FolderLock lock(out, "animpak pack " + out.string());
   recover_folder(out);
@@ -185,28 +201,32 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     }
     if (!staged) previous_seconds = simulation_seconds(out / "stats.json");
   } else {
-    if (!options.force && (std::filesystem::exists(out / "state.bin") || has_unfinished_pack(out)))
-      throw UsageError(out.string() + " already holds a packing (" +
-                       (std::filesystem::exists(out / "state.bin") ? (out / "state.bin").string()
-                                                                   : "unfinished, in " + run_dir.string()) +
-                       "); pass --force to overwrite it, or --resume " + out.string() + " to continue it");
-    check_inputs_writable(out);
-    checkpoint.scene_file = std::filesystem::absolute(options.scene);
-    const SceneSpec scene = load_scene(checkpoint.scene_file);  // validates and names the file on every error
+    if (!options.force && holds_packing()) refuse_packing();  // again, now that the folder is this run's
     checkpoint.scene_text = read_bytes(checkpoint.scene_file, "check the scene file's path");
     if (options.still) {
-      checkpoint.scene_text = still_scene_text(checkpoint.scene_text, scene);
+      checkpoint.scene_text = still_scene_text(checkpoint.scene_text, *new_scene);
       std::cerr << "animpak: packing the still reference: the same elements standing still"
-                << (scene.guided.empty() ? "" : ", guided elements as ordinary copies") << ", "
-                << std::min(scene.params.element.slices, still_slices) << " slices\n";
+                << (new_scene->guided.empty() ? "" : ", guided elements as ordinary copies") << ", "
+                << std::min(new_scene->params.element.slices, still_slices) << " slices\n";
     }
-    checkpoint.seed = options.seed.value_or(scene.seed);
+    checkpoint.seed = options.seed.value_or(new_scene->seed);
     // The copy of the scene and its art first, so that a checkpoint can be resumed from the folder alone.
     start_new_pack(out);
     write_inputs(run_dir, snapshot_inputs(checkpoint.scene_file, checkpoint.scene_text));
   }
-  const PackedScene scene = packed_scene(run_dir, checkpoint);
-  LoadedWorld loaded = world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
+  // A new packing builds from the scene where it is (its messages name the user's files, not the copies,
+  // whose bytes are the same); a resume from the folder's copies.
+  const PackedScene scene = options.resume ? packed_scene(run_dir, checkpoint)
+                                           : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
+  LoadedWorld loaded = [&] {
+    try {
+      return world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
+    } catch (...) {
+      // A new packing that cannot be built (art too complex, too many elements) leaves nothing staged.
+      if (!options.resume) std::filesystem::remove_all(run_dir);
+      throw;
+    }
+  }();
   World& world = loaded.world;
   if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
   // A resumed run repeats no set-up report (the seeding it did not do again), only its warnings.

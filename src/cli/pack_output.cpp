@@ -403,9 +403,11 @@ std::string update_stats_quality(const std::filesystem::path& file, const std::f
     return stats.contains(key) && stats[key] != value;
   };
   std::string note;
-  if (!stats.is_discarded() &&
-      (!stats.is_object() || !stats.contains("format_version") || differs("elements", world.elements.size()) ||
-       differs("seed", checkpoint.seed) || differs("iterations", checkpoint.state.iteration))) {
+  std::error_code ec;
+  const bool present = std::filesystem::exists(std::filesystem::symlink_status(file, ec));
+  if (present && (stats.is_discarded() || !stats.is_object() || !stats.contains("format_version") ||
+                  differs("elements", world.elements.size()) || differs("seed", checkpoint.seed) ||
+                  differs("iterations", checkpoint.state.iteration))) {
     std::filesystem::path aside = file;
     aside.replace_filename("stats.foreign.json");
     std::filesystem::rename(file, aside);

@@ -34,6 +34,26 @@ constexpr double art_thinning = 2e-3;
 // (docs/parameters.md "Bridging detached art").
 constexpr double bridge_step = 0.005;
 constexpr double max_bridge_radius = 0.25;
+// Art whose paths cross themselves (each path with its subpaths) more than max_self_crossings times in
+// all, or cross themselves and each other more than max_crossings, is refused before the booleans
+// (docs/scene-format.md, "Art that crosses itself"): Clipper's union grows with the crossings (a stroke's
+// band has about four for each), and the union's holes slow the offsets (max_hole_vertices). A path of
+// 2,000 random points, 470,000 crossings, ran for minutes, and 10,000 points, 11.6 million, took 917 MB.
+// Of the 7,898 openclipart files that import, the most within paths is 4,559 (a star polygon, {97/48};
+// 1,920 for any other), and the most in all 542,585 (art of many overlapping paths; its union takes 0.6 s).
+constexpr std::size_t max_self_crossings = 100000;
+constexpr std::size_t max_crossings = 2000000;
+// Vertices in the holes of the art's union above which the holes are dropped before the offsets: their
+// offsets are what made such art slow (2,000 random points: 110,000 hole vertices, 0.4 s with them
+// dropped against minutes), and a detached piece that must be bridged multiplies the offsets by up to 100
+// (a random polygon of 80 points, 575 hole vertices, took 4.6 s). 400 of the 7,898 openclipart files
+// have more; their outlines come out the same, up to a rounding on the 1e-9 grid in 2 of them.
+constexpr std::size_t max_hole_vertices = 200;
+// Cell entries plus segments met in cells that counting the crossings may spend on one art, about 0.1 s
+// where it runs out (a line drawn back and forth 4,500 times) and 4 bytes a cell entry: 6 times the most
+// an openclipart file needs (8.4 million), 8 times what 2,050 triangles crossing 1,980,000 times need.
+// Art that needs more lays so many long segments over one another that it is refused too.
+constexpr std::size_t crossing_work = 50'000'000;
 
 std::string source_name(const ArtShape& art) { return art.source.empty() ? std::string("<art>") : art.source.string(); }
 
@@ -92,19 +112,29 @@ std::vector<std::vector<Vec2>> own_points(const ArtPath& path) {
   return points;
 }
 
-// Everything the art paints, as one union under the nonzero rule; each polyline thinned by `thinning`
-// first when it is positive.
-cl::Paths painted_union(const ArtShape& art, double thinning = 0.0) {
-  cl::Paths all;
+// Every path's polylines, each thinned by `thinning` first when it is positive.
+std::vector<std::vector<std::vector<Vec2>>> art_points(const ArtShape& art, double thinning) {
+  std::vector<std::vector<std::vector<Vec2>>> all;
+  all.reserve(art.paths.size());
   for (const ArtPath& path : art.paths) {
-    std::vector<std::vector<Vec2>> points = own_points(path);
+    std::vector<std::vector<Vec2>>& points = all.emplace_back(own_points(path));
     if (thinning > 0.0)
       for (auto& line : points) line = thin_polyline(line, thinning);
-    cl::Paths area = painted_area(path, points, path.stroke_width, arc_tolerance);
+  }
+  return all;
+}
+
+// Everything the art paints, drawn with `points` (art_points), as one union under the nonzero rule.
+cl::Paths painted_union(const ArtShape& art, const std::vector<std::vector<std::vector<Vec2>>>& points) {
+  cl::Paths all;
+  for (std::size_t i = 0; i < art.paths.size(); ++i) {
+    cl::Paths area = painted_area(art.paths[i], points[i], art.paths[i].stroke_width, arc_tolerance);
     all.insert(all.end(), area.begin(), area.end());
   }
   return union_of(all, cl::pftNonZero);
 }
+
+cl::Paths painted_union(const ArtShape& art) { return painted_union(art, art_points(art, 0.0)); }
 
 cl::Paths offset_by(const cl::Paths& paths, double delta) {
   cl::ClipperOffset offset(2.0, arc_tolerance * clipper_scale);
@@ -185,6 +215,161 @@ bool ring_is_simple(const cl::Path& ring) {
   return true;
 }
 
+// One polyline as the booleans get it: on Clipper's grid, closed when filled (SVG fills an open subpath
+// as if closed) or closed in the file, and the index of its path.
+struct Drawn {
+  cl::Path points;
+  bool closed = false;
+  std::size_t path = 0;
+};
+
+struct Crossings {
+  std::size_t within = 0;             // between segments of one path (its subpaths included)
+  std::size_t total = 0;              // between any two segments
+  std::vector<std::size_t> per_path;  // the crossings each path takes part in
+  std::vector<std::size_t> own;       // the crossings within each path
+  bool finished = true;               // false where the work ran out first
+};
+
+// The proper crossings between segments of `lines` that are not neighbours on one polyline, counted
+// until more than `within_bound` lie within paths or more than `total_bound` in all; segments that only
+// touch or overlap do not count. Segments go into a uniform grid over the art's box, each into the cells
+// it passes through, and each is tested once against every earlier segment that shares a cell with it,
+// so the counts are exact up to where they stop. `work` pays one per cell entry and per segment met in
+// a cell; the count stops unfinished where it runs out.
+Crossings count_crossings(const std::vector<Drawn>& lines, std::size_t paths, std::size_t within_bound,
+                          std::size_t total_bound, std::size_t work) {
+  Crossings out;
+  out.per_path.assign(paths, 0);
+  out.own.assign(paths, 0);
+  struct Segment {
+    std::uint32_t line, index;  // the segment from point `index` of lines[line] to the next point
+  };
+  std::vector<Segment> segments;
+  std::vector<std::uint32_t> segment_count(lines.size(), 0);
+  bool any = false;
+  cl::cInt min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const cl::Path& p = lines[l].points;
+    if (p.size() < 2) continue;
+    segment_count[l] = static_cast<std::uint32_t>(lines[l].closed && p.size() >= 3 ? p.size() : p.size() - 1);
+    for (std::uint32_t k = 0; k < segment_count[l]; ++k) segments.push_back({static_cast<std::uint32_t>(l), k});
+    for (const cl::IntPoint& q : p) {
+      min_x = any ? std::min(min_x, q.X) : q.X, max_x = any ? std::max(max_x, q.X) : q.X;
+      min_y = any ? std::min(min_y, q.Y) : q.Y, max_y = any ? std::max(max_y, q.Y) : q.Y;
+      any = true;
+    }
+  }
+  if (segments.size() < 2) return out;
+  // About one cell per segment, at most 256 × 256.
+  const double cells_per_side = std::ceil(std::sqrt(static_cast<double>(segments.size())));
+  const int side = static_cast<int>(std::clamp(cells_per_side, 1.0, 256.0));
+  const int nx = max_x > min_x ? side : 1, ny = max_y > min_y ? side : 1;
+  const double cell_w = std::max(1.0, static_cast<double>(max_x - min_x) / nx);
+  const double cell_h = std::max(1.0, static_cast<double>(max_y - min_y) / ny);
+  const auto column = [&](double x) {
+    return std::clamp(static_cast<int>(std::floor((x - static_cast<double>(min_x)) / cell_w)), 0, nx - 1);
+  };
+  const auto row = [&](double y) {
+    return std::clamp(static_cast<int>(std::floor((y - static_cast<double>(min_y)) / cell_h)), 0, ny - 1);
+  };
+  const auto ends = [&](const Segment& s) {
+    const cl::Path& p = lines[s.line].points;
+    return std::pair<const cl::IntPoint&, const cl::IntPoint&>{p[s.index], p[(s.index + 1) % p.size()]};
+  };
+  std::vector<std::vector<std::uint32_t>> cells(static_cast<std::size_t>(nx) * ny);
+  std::vector<std::size_t> tested_with(segments.size(), segments.size());  // the last segment tested against
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& si = segments[i];
+    const auto [a, b] = ends(si);
+    const cl::cInt x0 = std::min(a.X, b.X), x1 = std::max(a.X, b.X), y0 = std::min(a.Y, b.Y), y1 = std::max(a.Y, b.Y);
+    for (int c = column(static_cast<double>(x0)), c_end = column(static_cast<double>(x1)); c <= c_end; ++c) {
+      // The segment's y-range within this column, a little wide so that rounding loses no cell.
+      double lo = static_cast<double>(y0), hi = static_cast<double>(y1);
+      if (a.X != b.X) {
+        const double left = std::max(static_cast<double>(x0), static_cast<double>(min_x) + c * cell_w);
+        const double right = std::min(static_cast<double>(x1), static_cast<double>(min_x) + (c + 1) * cell_w);
+        const double slope = static_cast<double>(b.Y - a.Y) / static_cast<double>(b.X - a.X);
+        const double y_left = static_cast<double>(a.Y) + slope * (left - static_cast<double>(a.X));
+        const double y_right = static_cast<double>(a.Y) + slope * (right - static_cast<double>(a.X));
+        const double margin = 1e-6 * cell_h + 1.0;
+        lo = std::max(lo, std::min(y_left, y_right) - margin);
+        hi = std::min(hi, std::max(y_left, y_right) + margin);
+      }
+      for (int r = row(lo), r_end = row(hi); r <= r_end; ++r) {
+        std::vector<std::uint32_t>& cell = cells[static_cast<std::size_t>(r) * nx + c];
+        for (const std::uint32_t j : cell) {
+          if (work == 0) {
+            out.finished = false;
+            return out;
+          }
+          --work;
+          if (tested_with[j] == i) continue;
+          tested_with[j] = i;
+          const Segment& sj = segments[j];
+          // Neighbours on one polyline share an end point; j comes before i.
+          if (sj.line == si.line && (sj.index + 1 == si.index || (lines[si.line].closed && sj.index == 0 &&
+                                                                  si.index + 1 == segment_count[si.line])))
+            continue;
+          const auto [c0, c1] = ends(sj);
+          if (std::max(c0.X, c1.X) < x0 || std::min(c0.X, c1.X) > x1 || std::max(c0.Y, c1.Y) < y0 ||
+              std::min(c0.Y, c1.Y) > y1)
+            continue;
+          if (orient(a, b, c0) * orient(a, b, c1) >= 0 || orient(c0, c1, a) * orient(c0, c1, b) >= 0) continue;
+          const std::size_t pi = lines[si.line].path, pj = lines[sj.line].path;
+          ++out.per_path[pi];
+          if (pj != pi) ++out.per_path[pj];
+          if (pj == pi) ++out.own[pi], ++out.within;
+          if (out.within > within_bound || ++out.total > total_bound) return out;
+        }
+        if (work == 0) {
+          out.finished = false;
+          return out;
+        }
+        --work;
+        cell.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  return out;
+}
+
+std::string path_label(const ArtPath& path) {
+  return "path " + std::to_string(path.source_index) + (path.id.empty() ? "" : " ('" + path.id + "')");
+}
+
+// Refuses art whose paths cross themselves more than max_self_crossings times, or each other more than
+// max_crossings, before the booleans would spend minutes and gigabytes on it. `points` are what the
+// booleans get (art_points).
+void refuse_crossing_art(const ArtShape& art, const std::vector<std::vector<std::vector<Vec2>>>& points,
+                         const std::string& name) {
+  std::vector<Drawn> lines;
+  for (std::size_t i = 0; i < art.paths.size(); ++i)
+    for (std::size_t q = 0; q < points[i].size() && q < art.paths[i].polylines.size(); ++q)
+      lines.push_back({to_path(points[i][q]), art.paths[i].polylines[q].closed || art.paths[i].fill.enabled, i});
+  const Crossings c = count_crossings(lines, art.paths.size(), max_self_crossings, max_crossings, crossing_work);
+  if (c.finished && c.within <= max_self_crossings && c.total <= max_crossings) return;
+  const auto path_of = [&](const std::vector<std::size_t>& counts) {
+    const std::size_t i = static_cast<std::size_t>(std::max_element(counts.begin(), counts.end()) - counts.begin());
+    std::size_t n = 0;
+    for (const std::vector<Vec2>& line : points[i]) n += line.size();
+    return path_label(art.paths[i]) + ", " + std::to_string(n) + " points, " + std::to_string(counts[i]) + " times";
+  };
+  const std::string advice = "; simplify the path in your editor. A path that crosses itself more than " +
+                             std::to_string(max_self_crossings) +
+                             " times, or art whose paths cross each other more than " + std::to_string(max_crossings) +
+                             " times, is refused: its outline would take minutes and gigabytes to build";
+  if (!c.finished)
+    throw InputError(name + ": the art has so many long segments lying over one another that counting where its " +
+                     "paths cross would take too long (" + std::to_string(c.total) + " crossings so far" +
+                     (c.total > 0 ? "; most in " + path_of(c.per_path) : std::string()) + ")" + advice);
+  if (c.within > max_self_crossings)
+    throw InputError(name + ": its paths cross themselves more than " + std::to_string(max_self_crossings) +
+                     " times (most: " + path_of(c.own) + ")" + advice);
+  throw InputError(name + ": its paths cross each other more than " + std::to_string(max_crossings) +
+                   " times (most: " + path_of(c.per_path) + ")" + advice);
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
@@ -246,11 +431,22 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   for (const ArtPath& path : art.art.paths)
     for (const Polyline& line : path.polylines) points += line.points.size();
   const double thinning = points > thin_above_points ? art_thinning : 0.0;
-  const cl::Paths shape = painted_union(art.art, thinning);
+  const std::vector<std::vector<std::vector<Vec2>>> drawn = art_points(art.art, thinning);
+  refuse_crossing_art(art.art, drawn, name);
+  cl::Paths shape = painted_union(art.art, drawn);
   double shape_area = 0.0;
-  for (const cl::Path& p : shape) shape_area += cl::Area(p);
+  std::size_t hole_vertices = 0;
+  for (const cl::Path& p : shape) {
+    shape_area += cl::Area(p);
+    hole_vertices += cl::Orientation(p) ? 0 : p.size();
+  }
   if (!(shape_area > 0.0))
     throw InputError(name + ": the art encloses no area (no filled region and no stroke with a width)");
+  // The union's holes do not shape the outline: growing the art never reaches out of a hole, and only
+  // outer contours are kept (outer_pieces: the element is solid). But the offsets spend time on every
+  // one of their vertices, minutes where they crowd, as in art that crosses itself; so many are dropped
+  // first (docs/scene-format.md, "Art that crosses itself").
+  if (hole_vertices > max_hole_vertices) std::erase_if(shape, [](const cl::Path& p) { return !cl::Orientation(p); });
 
   // §3.1, Fig. 2a: offset by Δs with round joins so the channel of negative space has constant width.
   // A thinned shape is within `thinning` of the art, so growing it by that much more keeps Δs.

@@ -85,6 +85,9 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
   std::vector<LibraryElementSpec> elements;
   const std::size_t n = field.array_size();
   if (n == 0) field.fail("expected at least one element");
+  if (n > static_cast<std::size_t>(kMaxLibraryElements))
+    field.fail(std::to_string(n) + " entries, more than the " + std::to_string(kMaxLibraryElements) +
+               " a scene may list (docs/cli.md, \"Limits\"); copies of one element need one entry with a `count`");
   for (std::size_t i = 0; i < n; ++i) {
     const JsonField item = field.item(i);
     item.check_keys(format.keys());
@@ -212,6 +215,9 @@ void check_guided_loops(const JsonField& field, const std::vector<GuidedSpec>& g
 
 std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<LibraryElementSpec>& library, bool loop) {
   std::vector<GuidedSpec> guided;
+  if (field.array_size() > static_cast<std::size_t>(kMaxSceneElements))
+    field.fail(std::to_string(field.array_size()) + " guided elements, more than the " +
+               std::to_string(kMaxSceneElements) + " elements a scene may build (docs/cli.md, \"Limits\")");
   for (std::size_t i = 0, n = field.array_size(); i < n; ++i) {
     const JsonField item = field.item(i);
     item.check_keys(io_detail::kGuidedObject.keys());
@@ -321,6 +327,21 @@ void read_params(const JsonField& field, Params& params) {
   }
 }
 
+// The elements a scene with fixed counts builds, refused above kMaxSceneElements before any art is read
+// (docs/cli.md, "Limits"); a scene that fills is estimated when its container is known (make_world).
+void check_element_count(const JsonField& root, const SceneSpec& scene) {
+  long long fixed = 0;
+  for (const LibraryElementSpec& e : scene.elements) fixed += e.count.value_or(0);
+  const long long unguided = scene.count ? std::max<long long>(*scene.count, fixed) : fixed;
+  const long long total = unguided + static_cast<long long>(scene.guided.size());
+  if (total <= kMaxSceneElements) return;
+  const std::string what = std::to_string(total) + " elements (" + std::to_string(unguided) + " unguided, " +
+                           std::to_string(scene.guided.size()) + " guided), more than the " +
+                           std::to_string(kMaxSceneElements) + " a scene may build (docs/cli.md, \"Limits\"); ";
+  if (scene.count) root.required("count").fail("the scene would build " + what + "lower `count`");
+  root.required("elements").fail("the elements' counts would build " + what + "lower them");
+}
+
 void read_count(const JsonField& field, SceneSpec& scene) {
   const io_detail::FieldSpec& count = io_detail::kSceneObject.at("count");
   const std::string_view fill = count.alternative->words.front();
@@ -407,29 +428,71 @@ std::string json_slip_hint(const std::string& text, std::size_t byte, const std:
 /// refused while it is parsed, before anything walks or prints it recursively.
 constexpr int kMaxNesting = 64;
 
-/// nlohmann keeps the last of two equal keys silently; in a hand-written scene that hides a mistake.
-json parse_json(const std::string& text, const std::string& name) {
-  std::vector<std::set<std::string>> open_objects;
-  const json::parser_callback_t reject_duplicates = [&](int depth, json::parse_event_t event, json& parsed) {
-    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
-        depth >= kMaxNesting)
-      throw InputError(name + ": objects and arrays nested more than " + std::to_string(kMaxNesting) +
+/// nlohmann's document reader, refusing as it reads a key given twice in one object (nlohmann keeps the
+/// last silently; in a hand-written scene that hides a mistake) and nesting deeper than kMaxNesting. A
+/// SAX handler, not a parser callback: nlohmann's callback parser searches the enclosing array after
+/// every object it closes, so reading grows with the square of an array's length (a scene of 100,000
+/// element entries took minutes in a test build; docs/cli.md, "Limits").
+class SceneJsonReader : public nlohmann::detail::json_sax_dom_parser<json> {
+ public:
+  SceneJsonReader(json& document, const std::string& name)
+      : nlohmann::detail::json_sax_dom_parser<json>(document, true), name_(name) {}
+
+  bool start_object(std::size_t length) {
+    enter();
+    open_objects_.emplace_back();
+    return json_sax_dom_parser::start_object(length);
+  }
+  bool key(string_t& text) {
+    if (!open_objects_.back().insert(text).second)
+      throw InputError(name_ + ": key " + backticked(text) + " appears twice in one object; keep only one");
+    return json_sax_dom_parser::key(text);
+  }
+  bool end_object() {
+    open_objects_.pop_back();
+    --depth_;
+    return json_sax_dom_parser::end_object();
+  }
+  bool start_array(std::size_t length) {
+    enter();
+    return json_sax_dom_parser::start_array(length);
+  }
+  bool end_array() {
+    --depth_;
+    return json_sax_dom_parser::end_array();
+  }
+
+ private:
+  void enter() {
+    if (depth_ >= kMaxNesting)
+      throw InputError(name_ + ": objects and arrays nested more than " + std::to_string(kMaxNesting) +
                        " levels deep; a scene needs a handful, check that this is the scene file");
-    if (event == json::parse_event_t::object_start) open_objects.emplace_back();
-    if (event == json::parse_event_t::object_end) open_objects.pop_back();
-    if (event == json::parse_event_t::key && !open_objects.back().insert(parsed.get<std::string>()).second)
-      throw InputError(name + ": key " + backticked(parsed.get<std::string>()) +
-                       " appears twice in one object; keep only one");
-    return true;
-  };
+    ++depth_;
+  }
+
+  const std::string& name_;
+  int depth_ = 0;  // objects and arrays open around the next value
+  std::vector<std::set<std::string>> open_objects_;
+};
+
+json parse_json(const std::string& text, const std::string& name) {
   try {
-    return json::parse(text, reject_duplicates);
+    json document;
+    SceneJsonReader reader(document, name);
+    json::sax_parse(text, &reader);
+    return document;
   } catch (const json::parse_error& e) {
     // what() reads "[json.exception.parse_error.101] parse error at line L, column C: <detail>".
     const std::string what = e.what();
     const std::size_t at = what.find("at line ");
     throw InputError(name + ": malformed JSON " + (at == std::string::npos ? what : what.substr(at)) +
                      json_slip_hint(text, e.byte, what));
+  } catch (const json::out_of_range& e) {
+    // 406: a number past a double's range, "number overflow parsing '1e999'".
+    const std::string what = e.what();
+    const std::size_t at = what.find("number overflow");
+    throw InputError(name + ": " + (at == std::string::npos ? what : what.substr(at)) +
+                     ", a number no double can hold; write a finite number");
   }
 }
 
@@ -476,6 +539,7 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
       f->fail("given twice, here and as params.slices; keep one");
     read_param(*f, param_info("slices"), scene.params);
   }
+  check_element_count(root, scene);
   return scene;
 }
 

@@ -1,5 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "animpak/animation.hpp"
 #include "animpak/error.hpp"
@@ -123,6 +127,84 @@ void container_segments(Topology& topo, const Container& c) {
   index_container(topo.container);
 }
 
+std::string with_commas(double value) {
+  const std::string digits = std::to_string(std::llround(value));
+  std::string out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && digits[i - 1] != '-' && (digits.size() - i) % 3 == 0) out.push_back(',');
+    out.push_back(digits[i]);
+  }
+  return out;
+}
+
+std::string short_number(double v) {
+  std::ostringstream text;
+  text << std::setprecision(3) << v;
+  return text.str();
+}
+
+// docs/cli.md, "Limits": the elements and mesh vertices a scene builds, refused before the expensive
+// steps, so that a scene asking for millions is refused at once instead of after hours of seeding or
+// gigabytes of meshes. `per_slice[i]` is library element i's vertices per slice and every element has
+// `slices` slices. Before meshing (`meshed` false) per_slice is an estimate from the params and only the
+// library elements, meshed next, are counted; once they are meshed it is exact and every copy counts. A
+// scene that fills seeds at params.seed_spacing: at most about one seed per √3/2 · spacing² of the
+// container (discs of that spacing packed hexagonally), each counted as the largest element drawn by weight.
+void check_scene_size(const SceneSpec& scene, const Container& container, const std::vector<double>& per_slice,
+                      int slices, bool meshed) {
+  const std::string file = scene.file.string();
+  double fixed = 0.0, fixed_vertices = 0.0, weighted_largest = 0.0, library = 0.0;
+  bool weighted = false;
+  for (std::size_t i = 0; i < scene.elements.size(); ++i) {
+    const LibraryElementSpec& e = scene.elements[i];
+    library += per_slice[i] * slices;
+    if (e.count) {
+      fixed += *e.count;
+      fixed_vertices += *e.count * per_slice[i] * slices;
+    } else if (e.weight > 0) {
+      weighted = true;
+      weighted_largest = std::max(weighted_largest, per_slice[i]);
+    }
+  }
+  double guided_vertices = 0.0;
+  for (const GuidedSpec& g : scene.guided)
+    for (std::size_t i = 0; i < scene.elements.size(); ++i)
+      if (scene.elements[i].name == g.element) guided_vertices += per_slice[i] * slices;
+  const bool fill = !scene.count && weighted;
+  const double spacing = scene.params.placement.seed_spacing;
+  const double fill_seeds = std::floor(container.area() / (0.5 * std::sqrt(3.0) * spacing * spacing));
+  const double unguided = fill ? std::max(fixed, fill_seeds) : std::max<double>(scene.count.value_or(0), fixed);
+  const double elements = unguided + static_cast<double>(scene.guided.size());
+  const std::string filled = fill ? "filling the container (" + short_number(container.area()) +
+                                        " of the unit square) at params.seed_spacing " + short_number(spacing) +
+                                        " seeds about " + with_commas(fill_seeds) + "; "
+                                  : "";
+  const std::string guided = std::to_string(scene.guided.size()) + " guided";
+  if (elements > kMaxSceneElements)
+    throw InputError(file + ": the scene would build about " + with_commas(elements) + " elements (" + filled +
+                     with_commas(unguided) + " unguided, " + guided + "), more than the " +
+                     with_commas(kMaxSceneElements) + " a scene may build (docs/cli.md, \"Limits\"); " +
+                     (fill ? "raise params.seed_spacing or give the elements counts" : "lower the counts"));
+  const double vertices =
+      meshed ? library + guided_vertices + fixed_vertices + (unguided - fixed) * weighted_largest * slices : library;
+  if (vertices <= kMaxSceneVertices) return;
+  const auto [smallest, largest] = std::minmax_element(per_slice.begin(), per_slice.end());
+  const std::string sizes =
+      meshed
+          ? (*smallest == *largest ? with_commas(*largest) : with_commas(*smallest) + " to " + with_commas(*largest)) +
+                " vertices per slice as meshed"
+          : "about " + with_commas(*largest) +
+                " vertices per slice, estimated from params.interior_spacing and params.boundary_spacing";
+  const std::string library_elements =
+      std::to_string(scene.elements.size()) + (scene.elements.size() == 1 ? " library element" : " library elements");
+  const std::string what = meshed ? filled + with_commas(elements) + " elements and " + library_elements
+                                  : library_elements + ", before any copy";
+  throw InputError(file + ": the scene would build about " + with_commas(vertices) + " mesh vertices (" + what + "; " +
+                   std::to_string(slices) + " slices, " + sizes + "), more than the " + with_commas(kMaxSceneVertices) +
+                   " a scene may build (docs/cli.md, \"Limits\"); lower the counts or `slices`, or raise "
+                   "params.interior_spacing and params.boundary_spacing");
+}
+
 }  // namespace
 
 std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index) {
@@ -157,6 +239,13 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
   for (const SpacetimeElement& e : library)
     if (const std::string warning = slice_advice_warning(e); !warning.empty())
       world.notes.push_back("warning: " + warning);
+
+  // The exact mesh sizes, before seeding and placing (docs/cli.md, "Limits").
+  std::vector<double> per_slice(scene.elements.size(), 0.0);
+  for (std::size_t i = 0; i < per_slice.size() && i < library.size(); ++i)
+    per_slice[i] = library[i].vertices_per_slice();
+  check_scene_size(scene, container, per_slice,
+                   library.empty() ? scene.params.element.slices : library.front().slice_count, true);
 
   Rng rng(scene.seed);
   std::vector<Placement> placements = scene_detail::place_guided(scene, container, library, world.notes);
@@ -223,6 +312,15 @@ World make_world(const SceneSpec& scene) {
   Container container =
       make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
   if (scene.mirror) container = mirror_container(container, *scene.mirror, scene.file.string());
+  // Before any element is meshed (docs/cli.md, "Limits"): per slice, the interior samples the art's box
+  // grown by the offset holds at interior_spacing (packed hexagonally, the most it can hold) and about
+  // its perimeter over boundary_spacing on the boundary.
+  const Params::Element& mesh = scene.params.element;
+  const double side = 1.0 + 2.0 * mesh.offset;
+  const double estimate =
+      std::ceil(side * side / (0.5 * std::sqrt(3.0) * mesh.interior_spacing * mesh.interior_spacing)) +
+      std::ceil(4.0 * side / mesh.boundary_spacing);
+  check_scene_size(scene, container, std::vector<double>(scene.elements.size(), estimate), mesh.slices, false);
   std::vector<SpacetimeElement> library;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const LibraryElementSpec& spec = scene.elements[i];

@@ -1,6 +1,7 @@
 // §3.1 Fig. 2a: normalization into the unit square and the offset outline.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
 
 #include "animpak/error.hpp"
 #include "element/fixtures.hpp"
@@ -23,6 +24,33 @@ void check_outline(const NormalizedArt& art, const Outline& outline, double offs
         CHECK(ring_contains(ring, p));
         CHECK(ring_distance(ring, p) >= offset - offset_tolerance);
       }
+}
+
+// `n` points drawn uniformly from a 500-unit square and joined in that order: a scribble that crosses
+// itself about n² / 8.5 times (2,000 points: about 470,000). A fixed 64-bit LCG, so every platform
+// draws the same points.
+std::vector<Vec2> scribble_points(int n, std::uint64_t seed) {
+  std::vector<Vec2> points;
+  std::uint64_t state = seed;
+  const auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1.0p-53 * 500.0;
+  };
+  for (int i = 0; i < n; ++i) {
+    const double x = next();
+    points.push_back({x, next()});
+  }
+  return points;
+}
+
+// The star polygon {n/k}: n points round a circle, each joined to the k-th next; n·(k − 1) crossings.
+std::vector<Vec2> star_polygon_points(int n, int k) {
+  std::vector<Vec2> points;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * 3.14159265358979 * static_cast<double>((i * k) % n) / n;
+    points.push_back({250.0 + 240.0 * std::cos(a), 250.0 + 240.0 * std::sin(a)});
+  }
+  return points;
 }
 
 }  // namespace
@@ -109,4 +137,85 @@ TEST_CASE("element_outline includes open strokes and rejects art without area", 
   line.paths[0].stroke.enabled = false;
   CHECK_THROWS_WITH(element_outline(normalize_art(line), 0.04), Catch::Contains("line.svg"));
   CHECK_THROWS_AS(element_outline(normalize_art(filled_art({{{0, 0}, {1, 1}, {2, 2}}}, "flat.svg")), 0.04), InputError);
+}
+
+TEST_CASE("element_outline refuses art whose paths cross themselves more than 100000 times, before the offset",
+          "[element][outline][crossings]") {
+  // 2,000 random points, about 470,000 crossings: the offset used to run for minutes (10,000 points: 917 MB).
+  for (const int n : {2000, 10000}) {
+    INFO(n << " points");
+    const NormalizedArt art = normalize_art(filled_art({scribble_points(n, 7)}, "scribble.svg"));
+    CHECK_THROWS_AS(element_outline(art, 0.04), InputError);
+    CHECK_THROWS_WITH(element_outline(art, 0.04),
+                      Catch::Contains("scribble.svg: its paths cross themselves more than 100000 times") &&
+                          Catch::Contains("path 0 ('path0'), " + std::to_string(n) + " points") &&
+                          Catch::Contains("simplify the path in your editor"));
+  }
+  // Two scribbles of 500 points each cross themselves about 29,000 times and each other about 59,000: as
+  // two subpaths of one path (filled together under its fill rule) they are one path crossing itself too
+  // often; as two paths they are kept.
+  const std::vector<Vec2> first = scribble_points(500, 11), second = scribble_points(500, 12);
+  CHECK_THROWS_WITH(element_outline(normalize_art(filled_art({first, second}, "one.svg")), 0.04),
+                    Catch::Contains("cross themselves more than 100000 times"));
+  ArtShape two = filled_art({first}, "two.svg");
+  two.paths.push_back(filled_art({second}, "two.svg").paths.front());
+  two.paths.back().source_index = 1;
+  const NormalizedArt kept = normalize_art(two);
+  check_outline(kept, element_outline(kept, 0.04), 0.04);
+}
+
+TEST_CASE("element_outline refuses art whose paths cross each other more than 2000000 times",
+          "[element][outline][crossings]") {
+  // 2,400 long thin triangles, one path each, crossing each other about 2.7 million times.
+  ArtShape art;
+  art.source = "triangles.svg";
+  const std::vector<Vec2> corners = scribble_points(2 * 2400, 3);
+  for (int i = 0; i < 2400; ++i) {
+    const Vec2 a = corners[2 * i], b = corners[2 * i + 1];
+    ArtShape one = filled_art({{a, b, b + Vec2{2, 2}}}, "triangles.svg");
+    one.paths.front().source_index = i;
+    art.paths.push_back(one.paths.front());
+  }
+  CHECK_THROWS_WITH(element_outline(normalize_art(art), 0.04),
+                    Catch::Contains("triangles.svg: its paths cross each other more than 2000000 times"));
+}
+
+TEST_CASE("element_outline keeps art that crosses itself less: star polygons and a scribble",
+          "[element][outline][crossings]") {
+  // openclipart's star polygons cross themselves up to 4,559 times ({97/48}); {301/150} 44,551 times.
+  for (const auto& [n, k] : {std::pair{97, 48}, std::pair{301, 150}}) {
+    INFO("{" << n << "/" << k << "}");
+    const NormalizedArt art = normalize_art(filled_art({star_polygon_points(n, k)}, "star.svg"));
+    check_outline(art, element_outline(art, 0.04), 0.04);
+  }
+  // 300 random points, about 10,000 crossings: the union has hundreds of small holes, dropped before the
+  // offset; the outline still keeps Δs from every point, and one far detached square is bridged to it.
+  std::vector<Vec2> scribble = scribble_points(300, 5);
+  for (Vec2& p : scribble) p = p * 0.6;
+  const NormalizedArt art = normalize_art(filled_art({scribble, rect(360, 360, 365, 365)}, "holes.svg"));
+  const Outline outline = element_outline(art, 0.04);
+  check_outline(art, outline, 0.04);
+  REQUIRE(outline.notes.size() == 1);
+  CHECK_THAT(outline.notes.front(), Catch::Contains("bridged 2 disjoint outline pieces"));
+}
+
+TEST_CASE("element_outline refuses art too dense to count its crossings in bounded time",
+          "[element][outline][crossings]") {
+  // A stroke drawn back and forth 4,500 times along one line: no crossing, but every segment lies over
+  // every other, so counting would test 40 million pairs.
+  ArtShape art;
+  art.source = "back-and-forth.svg";
+  ArtPath path;
+  path.id = "hatch";
+  path.stroke.enabled = true;
+  path.stroke_width = 2.0;
+  Polyline line;
+  line.closed = false;
+  line.points.push_back({0, 240});
+  for (int i = 1; i < 9000; ++i) line.points.push_back({i % 2 == 0 ? 0.0 : 500.0, 250.0});
+  path.polylines.push_back(line);
+  art.paths.push_back(path);
+  CHECK_THROWS_WITH(element_outline(normalize_art(art), 0.04),
+                    Catch::Contains("back-and-forth.svg: the art has so many long segments lying over one another") &&
+                        Catch::Contains("simplify the path in your editor"));
 }
