@@ -20,7 +20,7 @@ std::string read_regular_file(const std::filesystem::path& file, const std::stri
                               std::uintmax_t max_bytes, bool follow_links = false);
 
 /// Writes `bytes` to `file`: into `file` + ".partial" beside it, every write checked, flushed to disk
-/// (fsync), closed, then renamed over `file`; creates the folders above it. On any failure the temporary
+/// (fsync), closed, then renamed over `file` (its folder must exist). On any failure the temporary
 /// file is removed, `file` is left as it was, and InputError names `file` and the cause ("No space left
 /// on device", "Permission denied").
 void write_file_atomically(const std::filesystem::path& file, std::string_view bytes);

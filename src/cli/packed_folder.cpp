@@ -127,6 +127,7 @@ void write_inputs(const fs::path& dir, const InputSnapshot& snapshot) {
   check_inputs_writable(dir);
   const fs::path input = dir / "input";
   fs::remove_all(input);
+  fs::create_directories(input / "art");
   const std::string scene_name = snapshot.scene_file.filename().string();
   write_file_atomically(input / scene_name, snapshot.scene_text);
   nlohmann::json art = nlohmann::json::array();

@@ -92,11 +92,6 @@ std::string read_regular_file(const fs::path& file, const std::string& what_to_d
 }
 
 void write_file_atomically(const fs::path& file, std::string_view bytes) {
-  std::error_code ec;
-  if (file.has_parent_path()) {
-    fs::create_directories(file.parent_path(), ec);
-    if (ec) throw InputError(file_error(file.parent_path(), "cannot create the folder", ec.value()));
-  }
   fs::path temporary = file;
   temporary += ".partial";
   // O_NOFOLLOW: a link planted at the temporary name is not written through; it is replaced.
