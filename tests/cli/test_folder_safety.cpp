@@ -10,7 +10,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <string>
 
@@ -39,11 +38,6 @@ class SlowBox {
  private:
   animpak::test::TempDir dir_;
 };
-
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void overwrite(const fs::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
@@ -80,7 +74,7 @@ TEST_CASE("animpak pack: killed outright after a checkpoint, --resume ends on th
                       " --device reference --no-render "
                       "--max-iterations 3000")
               .code == 0);
-  const std::string a = contents(killed + "/state.bin"), b = contents(whole + "/state.bin");
+  const std::string a = read_text(killed + "/state.bin"), b = read_text(whole + "/state.bin");
   REQUIRE(a.size() > 1000);
   CHECK(a == b);
   CHECK_FALSE(fs::exists(killed + "/.pack-new"));
@@ -115,15 +109,15 @@ TEST_CASE("animpak pack --force: killed midway leaves the packing before whole, 
                       " --max-iterations 30 --frames 2 --size 16 "
                       "--format png --device reference")
               .code == 0);
-  const std::string state = contents(out + "/state.bin"), manifest = contents(out + "/input/manifest.json");
-  const std::string frame = contents(out + "/frames/frame_0000.png");
+  const std::string state = read_text(out + "/state.bin"), manifest = read_text(out + "/input/manifest.json");
+  const std::string frame = read_text(out + "/frames/frame_0000.png");
   REQUIRE(run_command(while_packing("pack " + box.scene() + " --out " + out +
                                         " --force --seed 7 --device reference --no-render --checkpoint-every 0",
                                     out + "/.pack-new/state.bin", "kill -9 $p; wait $p; exit 0"))
               .code == 0);
-  CHECK(contents(out + "/state.bin") == state);
-  CHECK(contents(out + "/input/manifest.json") == manifest);
-  CHECK(contents(out + "/frames/frame_0000.png") == frame);
+  CHECK(read_text(out + "/state.bin") == state);
+  CHECK(read_text(out + "/input/manifest.json") == manifest);
+  CHECK(read_text(out + "/frames/frame_0000.png") == frame);
   const CommandResult render = run_animpak("render " + out + " --frames 2 --size 16 --format png");
   CHECK(render.code == 0);
   // The new packing, not the one before, is what --resume continues; then it replaces the one before.
@@ -131,7 +125,7 @@ TEST_CASE("animpak pack --force: killed midway leaves the packing before whole, 
       run_animpak("pack --resume " + out + " --device reference --no-render --max-iterations 40");
   INFO(resumed.err);
   REQUIRE(resumed.code == 0);
-  CHECK(contents(out + "/state.bin") != state);
+  CHECK(read_text(out + "/state.bin") != state);
   CHECK_FALSE(fs::exists(out + "/frames/frame_0000.png"));
   CHECK_FALSE(fs::exists(out + "/.pack-new"));
 }
@@ -153,8 +147,8 @@ TEST_CASE("recover_folder: a swap cut short by a kill is finished, one not yet m
   fs::create_directories(dir / ".pack-old");
   fs::rename(dir / "input", dir / ".pack-old/input");
   CHECK(animpak::cli::recover_folder(dir.path()));
-  CHECK(contents(dir / "state.bin") == "new");
-  CHECK(contents(dir / "input/manifest.json") == "new");
+  CHECK(read_text(dir / "state.bin") == "new");
+  CHECK(read_text(dir / "input/manifest.json") == "new");
   CHECK_FALSE(fs::exists(dir / "frames/frame_0000.png"));  // the old packing's frames
   CHECK_FALSE(fs::exists(dir / "stats.json"));
   CHECK_FALSE(fs::exists(dir / ".pack-new"));
@@ -164,7 +158,7 @@ TEST_CASE("recover_folder: a swap cut short by a kill is finished, one not yet m
   // Not marked whole: the packing before stays, the unfinished one waits for --resume.
   make(dir / ".pack-new", "newer");
   CHECK_FALSE(animpak::cli::recover_folder(dir.path()));
-  CHECK(contents(dir / "state.bin") == "new");
+  CHECK(read_text(dir / "state.bin") == "new");
   CHECK(animpak::cli::has_unfinished_pack(dir.path()));
 }
 
@@ -175,8 +169,8 @@ TEST_CASE("animpak render: on a full disk the render before stays whole and the 
                       " --max-iterations 20 --frames 3 --size 48 "
                       "--format png,gif,lottie")
               .code == 0);
-  const std::string frame = contents(out + "/frames/frame_0000.png"), gif = contents(out + "/animation.gif"),
-                    lottie = contents(out + "/animation.json"), stats = contents(out + "/stats.json");
+  const std::string frame = read_text(out + "/frames/frame_0000.png"), gif = read_text(out + "/animation.gif"),
+                    lottie = read_text(out + "/animation.json"), stats = read_text(out + "/stats.json");
   // A file size limit fails every write past it as a full disk does (EFBIG, with SIGXFSZ ignored).
   for (const std::string& limit : {"4", "40"}) {
     INFO("ulimit -f " << limit);
@@ -184,10 +178,10 @@ TEST_CASE("animpak render: on a full disk the render before stays whole and the 
                                            " render " + out + " --frames 5 --size 256 --format png,gif,lottie\"");
     CHECK(full.code == 2);
     CHECK_THAT(full.err, Contains("cannot write it: File too large") && Contains("free disk space"));
-    CHECK(contents(out + "/frames/frame_0000.png") == frame);
-    CHECK(contents(out + "/animation.gif") == gif);
-    CHECK(contents(out + "/animation.json") == lottie);
-    CHECK(contents(out + "/stats.json") == stats);
+    CHECK(read_text(out + "/frames/frame_0000.png") == frame);
+    CHECK(read_text(out + "/animation.gif") == gif);
+    CHECK(read_text(out + "/animation.json") == lottie);
+    CHECK(read_text(out + "/stats.json") == stats);
     CHECK_FALSE(fs::exists(out + "/frames/frame_0004.png"));
   }
 }
@@ -197,7 +191,7 @@ TEST_CASE("animpak render: links, FIFOs and a missing manifest entry in a folder
   const std::string out = box.path("out");
   REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render").code == 0);
   const fs::path art = fs::path(out) / "input/art/star.svg";
-  const std::string original = contents(art);
+  const std::string original = read_text(art);
   const auto render = [&] { return run_animpak("render " + out + " --frames 1 --size 16 --format png"); };
 
   // An art file linked to a file outside the folder.
@@ -218,7 +212,7 @@ TEST_CASE("animpak render: links, FIFOs and a missing manifest entry in a folder
   overwrite(art, original);
 
   // state.bin as a FIFO.
-  const std::string state = contents(out + "/state.bin");
+  const std::string state = read_text(out + "/state.bin");
   fs::remove(out + "/state.bin");
   REQUIRE(::mkfifo((out + "/state.bin").c_str(), 0644) == 0);
   r = run_command("timeout 60 " + std::string(ANIMPAK_EXE) + " render " + out + " --frames 1 --size 16 --format png");
@@ -234,12 +228,12 @@ TEST_CASE("animpak render: links, FIFOs and a missing manifest entry in a folder
   r = render();
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Contains("frames: is a symbolic link"));
-  CHECK(contents(box.path("elsewhere/frame_0000.png")) == "mine");
+  CHECK(read_text(box.path("elsewhere/frame_0000.png")) == "mine");
   fs::remove(fs::path(out) / "frames");
 
   // A manifest entry deleted: the art is not read from the scene's original place.
   const fs::path manifest = fs::path(out) / "input/manifest.json";
-  const std::string with_entry = contents(manifest);
+  const std::string with_entry = read_text(manifest);
   nlohmann::json m = nlohmann::json::parse(with_entry);
   m["art"] = nlohmann::json::array();
   overwrite(manifest, m.dump());
@@ -254,7 +248,7 @@ TEST_CASE("animpak render: a state whose values a packing cannot hold is refused
   const SlowBox box("values");
   const std::string out = box.path("out");
   REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render").code == 0);
-  const std::string good = contents(out + "/state.bin");
+  const std::string good = read_text(out + "/state.bin");
   // The layout (include/animpak/checkpoint.hpp): magic, version, three strings and the counters, then x.
   std::size_t at = 8 + 4;
   const auto skip_string = [&] {
@@ -306,7 +300,7 @@ TEST_CASE("animpak pack: a file in place of --out, a folder in place of state.bi
   CommandResult r = run_animpak("pack " + box.scene() + " --out " + box.path("a-file") + " --no-render");
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Contains(box.path("a-file")));
-  CHECK(contents(box.path("a-file")) == "mine");
+  CHECK(read_text(box.path("a-file")) == "mine");
 
   fs::create_directories(box.path("dir/state.bin"));
   r = run_animpak("render " + box.path("dir"));
