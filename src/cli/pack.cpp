@@ -153,7 +153,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // Read before the packing, so that a wrong folder is refused before minutes of work, not after.
   std::optional<StillReference> still;
   if (options.still_reference) still = read_still_reference(*options.still_reference);
-  const StopSignals signals;  // a signal during the set-up stops the run at its first step, saved
+  // From here to the end of the simulation a stop signal stops the run at its first boundary, saved; the
+  // render after it is stopped by Ctrl-C as any command is (it writes into a scratch folder).
+  std::optional<StopSignals> signals(std::in_place);
   Checkpoint checkpoint;
   const std::filesystem::path out = options.resume ? *options.resume : options.out;
   const auto holds_packing = [&] { return std::filesystem::exists(out / "state.bin") || has_unfinished_pack(out); };
@@ -263,6 +265,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     write_checkpoint(run_dir / "state.bin", saved, out);
   };
   RunResult result = run_simulation(*backend, world.params, control);
+  signals.reset();
   progress.finish();
   result.seconds += previous_seconds;
 
