@@ -312,6 +312,12 @@ void install_new_pack(const fs::path& dir) {
 bool recover_folder(const fs::path& dir) {
   const fs::path staged = dir / kNewPack, old = dir / kOldPack;
   std::error_code ec;
+  // What a write killed midway left (write_file_atomically's temporaries): only names animpak writes.
+  std::vector<std::string> written = {"state.bin", "stats.json", ".animpak-write-test"};
+  written.insert(written.end(), std::begin(kAnimationFiles), std::end(kAnimationFiles));
+  for (const std::string& name : written)
+    if (fs::is_regular_file(fs::symlink_status(dir / (name + ".partial"), ec)))
+      fs::remove(dir / (name + ".partial"), ec);
   if (!fs::exists(fs::symlink_status(staged / kPackComplete, ec))) {
     // No whole new packing: whatever a kill left in .pack-old goes back (the new one is not swapped in).
     if (fs::is_directory(fs::symlink_status(old, ec))) {

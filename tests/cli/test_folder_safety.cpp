@@ -146,7 +146,11 @@ TEST_CASE("recover_folder: a swap cut short by a kill is finished, one not yet m
   overwrite(dir / ".pack-new/complete", "");
   fs::create_directories(dir / ".pack-old");
   fs::rename(dir / "input", dir / ".pack-old/input");
+  overwrite(dir / "stats.json.partial", "cut");  // a write killed midway
+  overwrite(dir / "notes.partial", "mine");
   CHECK(animpak::cli::recover_folder(dir.path()));
+  CHECK_FALSE(fs::exists(dir / "stats.json.partial"));
+  CHECK(read_text(dir / "notes.partial") == "mine");
   CHECK(read_text(dir / "state.bin") == "new");
   CHECK(read_text(dir / "input/manifest.json") == "new");
   CHECK_FALSE(fs::exists(dir / "frames/frame_0000.png"));  // the old packing's frames
