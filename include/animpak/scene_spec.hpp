@@ -134,6 +134,12 @@ struct SceneSpec {
 /// e.g. `scene.json: elements[2].animation.keys[0].t: expected a number in [0, 1], got 1.5`.
 SceneSpec load_scene(const std::filesystem::path& file);
 
+/// What a scene that parses may still not mean, one line each without "warning: " (build_world adds them
+/// to its notes, `check` prints them): a guided element whose path leaves its start and ends there again,
+/// within the 1e-6 art units a loop allows, in a scene that does not loop (docs/scene-format.md,
+/// "`guided[i]`").
+std::vector<std::string> scene_warnings(const SceneSpec& scene);
+
 /// Where an art reference is read from: given the reference as written in the scene and `resolved`, that
 /// reference against the base folder, returns the file to read (a packed folder's copy: docs/cli.md,
 /// "The output folder").

@@ -340,6 +340,7 @@ int check(const CheckOptions& options) {
   // A scene is checked for its container, read as pack reads it: the scene's outline, holes and tolerance.
   std::filesystem::path art_file = options.file;
   std::optional<ContainerSpec> container;
+  std::vector<std::string> scene_notes;  // what the scene itself warns of, as pack does
   SvgOptions import;
   std::string extension = options.file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -348,6 +349,8 @@ int check(const CheckOptions& options) {
       const SceneSpec scene = load_scene(options.file);
       container = scene.container;
       import.flatten_tolerance = scene.params.art.flatten_tolerance;
+      for (const std::string& warning : scene_warnings(scene))
+        scene_notes.push_back(options.file.string() + ": " + warning);
     } catch (const InputError& e) {
       refuse(e);
       throw;
@@ -366,7 +369,8 @@ int check(const CheckOptions& options) {
     refuse(e);
     throw;
   }
-  std::vector<std::string> warnings = art.warnings;
+  std::vector<std::string> warnings = scene_notes;
+  warnings.insert(warnings.end(), art.warnings.begin(), art.warnings.end());
   report["document"] = {{"viewport", art.viewport ? box_json(*art.viewport) : Json(nullptr)},
                         {"bounds", box_json(art.bounds())}};
   report["paths"] = paths_json(art, file, warnings);

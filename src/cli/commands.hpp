@@ -79,10 +79,17 @@ struct PackOptions {
 /// with their metrics, contact.png): they are swapped in with the frames, or not at all.
 using BesideFrames = std::function<void(const PackingQuality& quality, const std::filesystem::path& scratch)>;
 
+/// What a render left in its folder: the quality of its frames and between slices, and the rendered files
+/// of the run before that it removed (relative to the folder; install_rendered).
+struct Rendered {
+  PackingQuality quality;
+  std::vector<std::filesystem::path> removed;
+};
+
 /// Called by pack after state.bin is written (unless interrupted) with the final world and the output folder;
 /// returns the quality of the frames and between slices for stats.json. Empty: pack writes no frames (--no-render).
 using FrameRenderer =
-    std::function<PackingQuality(const World& world, const std::filesystem::path& dir, const BesideFrames& beside)>;
+    std::function<Rendered(const World& world, const std::filesystem::path& dir, const BesideFrames& beside)>;
 
 int pack(const PackOptions& options, const FrameRenderer& render_frames);
 

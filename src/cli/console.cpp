@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -23,6 +24,14 @@ std::uintmax_t size_of_tree(const fs::path& dir, int& files) {
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir, ec))
     if (e.is_regular_file(ec)) total += e.file_size(ec), ++files;
   return total;
+}
+
+// "3 PNG frames", "1 SVG frame", "3 PNG and 3 SVG frames"; empty for none.
+std::string frame_count_text(int png, int svg) {
+  std::string what;
+  if (png) what += std::to_string(png) + " PNG";
+  if (svg) what += std::string(what.empty() ? "" : " and ") + std::to_string(svg) + " SVG";
+  return what.empty() ? what : what + (png + svg == 1 ? " frame" : " frames");
 }
 
 }  // namespace
@@ -137,7 +146,7 @@ void RenderProgress::finish() {
   drawn_ = false;
 }
 
-std::string written_files(const fs::path& dir, WrittenBy by) {
+std::string written_files(const fs::path& dir, WrittenBy by, const std::vector<fs::path>& removed) {
   struct Row {
     std::string name, what;
   };
@@ -165,10 +174,7 @@ std::string written_files(const fs::path& dir, WrittenBy by) {
       (ext == ".png" ? png : svg) += 1;
       bytes += e.file_size(ec);
     }
-    std::string what;
-    if (png) what += std::to_string(png) + " PNG";
-    if (svg) what += std::string(what.empty() ? "" : " and ") + std::to_string(svg) + " SVG";
-    if (png + svg) rows.push_back({"frames/", what + " frames, " + size_text(bytes)});
+    if (png + svg) rows.push_back({"frames/", frame_count_text(png, svg) + ", " + size_text(bytes)});
   }
   for (const char* name :
        {"animation.gif", "animation.mp4", "animation.json", "animation.lottie", "animation.svg", "contact.png"})
@@ -180,6 +186,34 @@ std::string written_files(const fs::path& dir, WrittenBy by) {
     name.resize(std::max<std::size_t>(name.size(), 18), ' ');
     out << "  " << name << r.what << "\n";
   }
+  // The run before's rendered files that are gone (docs/cli.md, "The output folder"): one written again
+  // under its name is listed above instead.
+  int removed_png = 0, removed_svg = 0;
+  std::vector<std::string> gone;
+  std::set<fs::path> seen;
+  for (const fs::path& old : removed) {
+    if (!seen.insert(old).second || fs::exists(fs::symlink_status(dir / old, ec))) continue;
+    if (old.parent_path() == "frames")
+      (old.extension() == ".svg" ? removed_svg : removed_png) += 1;
+    else
+      gone.push_back(old.string());
+  }
+  if (removed_png + removed_svg)
+    gone.insert(gone.begin(), "frames/ (" + frame_count_text(removed_png, removed_svg) + ")");
+  if (gone.empty()) return out.str();
+  const std::size_t indent = 20;  // the sizes' column above
+  std::string line = "  removed:";
+  line.resize(indent, ' ');
+  for (std::size_t i = 0; i < gone.size(); ++i) {
+    const std::string item = gone[i] + (i + 1 < gone.size() ? "," : "");
+    if (line.size() > indent && line.size() + 1 + item.size() > 80) {
+      out << line << "\n";
+      line.assign(indent, ' ');
+    }
+    if (line.size() > indent) line += ' ';
+    line += item;
+  }
+  out << line << "\n";
   return out.str();
 }
 

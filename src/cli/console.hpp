@@ -58,7 +58,10 @@ enum class WrittenBy { pack, render };
 
 /// The files of the run in `dir`, one line each with its size: state.bin and input/ (pack only),
 /// stats.json, frames/ (count of PNG and SVG frames, total size), animation.*, contact.png. An output folder
-/// holds one run (README, "The output folder"), so what is there is what the run wrote.
-std::string written_files(const std::filesystem::path& dir, WrittenBy by);
+/// holds one run (README, "The output folder"), so what is there is what the run wrote. Then, after
+/// `removed:`, the files of the run before that the run removed (`removed`, relative to `dir`) and did not
+/// write again: frames/ with their count, the others by name, wrapped within 80 columns.
+std::string written_files(const std::filesystem::path& dir, WrittenBy by,
+                          const std::vector<std::filesystem::path>& removed = {});
 
 }  // namespace animpak::cli

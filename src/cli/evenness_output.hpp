@@ -26,7 +26,12 @@ EvennessSummary summarize_evenness(const std::vector<FrameMetrics>& metrics);
 nlohmann::json evenness_json(const FrameMetrics& m);
 /// The summary's fields, to merge into `quality.frames` or `quality.between_slices`.
 nlohmann::json evenness_summary_json(const EvennessSummary& e);
-/// "evenness: wall ratio …, largest empty disc …".
+/// The median frame's largest empty disc, in element radii, above which a packing is sparse: a pocket
+/// an element of the median size would fit in (docs/quality.md, "Evenness").
+inline constexpr double sparse_empty_disc = 1.0;
+
+/// "evenness: wall ratio …, largest empty disc …", and for a sparse packing what fills it: "; sparse: try a
+/// smaller params.offset, …".
 std::string evenness_line(const EvennessSummary& e);
 
 }  // namespace animpak::cli

@@ -179,7 +179,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   check_folder_writable(out);  // a read-only folder, a file in the way or a full disk: before any work
   const FolderLock lock(out, "animpak pack " + out.string());
-  recover_folder(out);
+  // The rendered files of the run before that this one removes, listed with the files it writes.
+  std::vector<std::filesystem::path> removed;
+  recover_folder(out, &removed);
   // A new packing is written beside the folder's packing until it ends (packed_folder.hpp); a resume of
   // a packing already swapped in writes where it is.
   const bool staged = !options.resume || has_unfinished_pack(out);
@@ -275,10 +277,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   world.state = result.last_good;
   // The new packing swapped in whole, the frames of the one before removed with it; a resumed packing's
   // own frames are of an earlier state, so they go too, before the render below runs.
-  if (staged)
-    install_new_pack(out);
-  else
-    remove_rendered(out);
+  const std::vector<std::filesystem::path> replaced = staged ? install_new_pack(out) : remove_rendered(out);
+  removed.insert(removed.end(), replaced.begin(), replaced.end());
 
   PackReport report{world,
                     result,
@@ -327,15 +327,18 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // stats.json first, so that a render that fails (ffmpeg, a full disk) leaves this run's, not the last one's.
   write_stats(out / "stats.json", report);
   std::string still_line;
-  if (render_frames && result.reason != StopReason::interrupted)
-    report.quality =
+  if (render_frames && result.reason != StopReason::interrupted) {
+    Rendered rendered =
         render_frames(world, out, [&](const PackingQuality& quality, const std::filesystem::path& scratch) {
           report.quality = quality;
           write_stats(scratch / "stats.json", report);
           if (still && !quality.frames.empty())
             still_line = add_still_reference(scratch / "stats.json", *still, quality);
         });
-  std::cerr << written_files(out, WrittenBy::pack);
+    report.quality = std::move(rendered.quality);
+    removed.insert(removed.end(), rendered.removed.begin(), rendered.removed.end());
+  }
+  std::cerr << written_files(out, WrittenBy::pack, removed);
   if (!report.quality.frames.empty()) std::cout << quality_lines(report.quality) << still_line;
   return result.reason == StopReason::interrupted ? StopSignals::exit_code() : 0;
 }

@@ -208,13 +208,21 @@ PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, cons
   return p;
 }
 
-void remove_rendered(const fs::path& dir) {
-  for (const char* name : kAnimationFiles) fs::remove(dir / name);
+std::vector<fs::path> remove_rendered(const fs::path& dir) {
+  std::vector<fs::path> animations, frame_files;
+  for (const char* name : kAnimationFiles)
+    if (fs::remove(dir / name)) animations.push_back(name);
   const fs::path frames = dir / "frames";
-  if (!fs::is_directory(frames)) return;
-  for (const fs::directory_entry& e : fs::directory_iterator(frames))
-    if (e.is_regular_file() && is_frame_file(e.path())) fs::remove(e.path());
-  if (fs::is_empty(frames)) fs::remove(frames);
+  if (fs::is_directory(frames)) {
+    for (const fs::directory_entry& e : fs::directory_iterator(frames))
+      if (e.is_regular_file() && is_frame_file(e.path()))
+        frame_files.push_back(fs::path("frames") / e.path().filename());
+    std::sort(frame_files.begin(), frame_files.end());
+    for (const fs::path& file : frame_files) fs::remove(dir / file);
+    if (fs::is_empty(frames)) fs::remove(frames);
+  }
+  frame_files.insert(frame_files.end(), animations.begin(), animations.end());
+  return frame_files;
 }
 
 fs::path render_scratch(const fs::path& dir) {
@@ -224,13 +232,13 @@ fs::path render_scratch(const fs::path& dir) {
   return scratch;
 }
 
-void install_rendered(const fs::path& scratch, const fs::path& dir) {
+std::vector<fs::path> install_rendered(const fs::path& scratch, const fs::path& dir) {
   // Every file checked and on disk before the first of the render before is removed: a render that
   // failed on a full disk leaves the one before whole.
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(scratch))
     if (e.is_regular_file()) sync_written_file(e.path());
   refuse_links_below(dir, "frames", "move the link away; frames/ is written by animpak render");
-  remove_rendered(dir);
+  std::vector<fs::path> removed = remove_rendered(dir);
   for (const char* name : kAnimationFiles)
     if (fs::exists(scratch / name)) fs::rename(scratch / name, dir / name);
   // The statistics of these frames (BesideFrames), over those of the frames before.
@@ -243,6 +251,7 @@ void install_rendered(const fs::path& scratch, const fs::path& dir) {
   fs::remove_all(scratch);
   sync_folder(dir / "frames");
   sync_folder(dir);
+  return removed;
 }
 
 std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
@@ -301,15 +310,17 @@ void start_new_pack(const fs::path& dir) {
   fs::create_directories(dir / kNewPack);
 }
 
-void install_new_pack(const fs::path& dir) {
+std::vector<fs::path> install_new_pack(const fs::path& dir) {
   const fs::path staged = dir / kNewPack;
   sync_folder(staged);
   write_file_atomically(staged / kPackComplete, "");
   sync_folder(staged);
-  recover_folder(dir);
+  std::vector<fs::path> removed;
+  recover_folder(dir, &removed);
+  return removed;
 }
 
-bool recover_folder(const fs::path& dir) {
+bool recover_folder(const fs::path& dir, std::vector<fs::path>* removed) {
   const fs::path staged = dir / kNewPack, old = dir / kOldPack;
   std::error_code ec;
   // What a write killed midway left (write_file_atomically's temporaries): only names animpak writes.
@@ -342,7 +353,10 @@ bool recover_folder(const fs::path& dir) {
   const bool replaced = fs::exists(fs::symlink_status(old / "state.bin", ec));
   sync_folder(dir);
   // Frames of the packing before must not stay beside this one.
-  if (replaced) remove_rendered(dir);
+  if (replaced) {
+    const std::vector<fs::path> rendered = remove_rendered(dir);
+    if (removed) removed->insert(removed->end(), rendered.begin(), rendered.end());
+  }
   fs::remove_all(old);
   fs::remove_all(staged);
   sync_folder(dir);

@@ -54,8 +54,9 @@ PackedScene packed_scene(const std::filesystem::path& dir, const Checkpoint& che
 
 /// Removes the files a render writes (frames/frame_NNNN.png and .svg, animation.gif, .mp4, .json, .lottie,
 /// .svg, contact.png) and the pictures made from them (report.html, trajectory.svg)
-/// from `dir`, and frames/ when that leaves it empty; nothing else.
-void remove_rendered(const std::filesystem::path& dir);
+/// from `dir`, and frames/ when that leaves it empty; nothing else. Returns the files it removed, relative
+/// to `dir` (frames/frame_0000.png, animation.gif), the frames first, each kind in name order.
+std::vector<std::filesystem::path> remove_rendered(const std::filesystem::path& dir);
 
 /// DIR/.render-partial, emptied: where a render is written before install_rendered swaps it in, so that
 /// an interrupted render leaves the previous one whole.
@@ -63,7 +64,10 @@ std::filesystem::path render_scratch(const std::filesystem::path& dir);
 
 /// Replaces the rendered files in `dir` (and stats.json, when the scratch folder holds one) with those in
 /// `scratch`, each checked and flushed to disk before the first old one goes, then removes `scratch`.
-void install_rendered(const std::filesystem::path& scratch, const std::filesystem::path& dir);
+/// Returns the rendered files of the run before that it removed (remove_rendered's list): those the new
+/// render wrote again are among them.
+std::vector<std::filesystem::path> install_rendered(const std::filesystem::path& scratch,
+                                                    const std::filesystem::path& dir);
 
 /// A file named by the user (a scene, --scene): a regular file, links followed, at most 64 MB;
 /// InputError `<file>: <why>; <what_to_do>`.
@@ -98,10 +102,12 @@ std::filesystem::path new_pack_dir(const std::filesystem::path& dir);
 bool has_unfinished_pack(const std::filesystem::path& dir);
 /// Clears what an earlier new packing left and makes DIR/.pack-new.
 void start_new_pack(const std::filesystem::path& dir);
-/// Marks DIR/.pack-new whole and swaps it in, removing the packing before and its rendered files.
-void install_new_pack(const std::filesystem::path& dir);
+/// Marks DIR/.pack-new whole and swaps it in, removing the packing before and its rendered files; returns
+/// those files (remove_rendered's list; empty when there was no packing before).
+std::vector<std::filesystem::path> install_new_pack(const std::filesystem::path& dir);
 /// Finishes a swap a kill cut short (every command calls it under the lock before reading the folder);
-/// true when it swapped a packing in.
-bool recover_folder(const std::filesystem::path& dir);
+/// true when it swapped a packing in. The rendered files of the packing it replaced are added to `removed`
+/// when given.
+bool recover_folder(const std::filesystem::path& dir, std::vector<std::filesystem::path>* removed = nullptr);
 
 }  // namespace animpak::cli

@@ -90,9 +90,9 @@ FrameOutput frame_output(const FrameOptions& options) {
 }
 
 /// Writes the frames in the requested formats into a scratch folder, swaps them in for every rendered file
-/// already in `dir` and returns their quality.
-PackingQuality render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options,
-                             const BesideFrames& beside) {
+/// already in `dir` and returns their quality and the files of the render before it removed.
+Rendered render_frames(const World& world, const std::filesystem::path& dir, const FrameOptions& options,
+                       const BesideFrames& beside) {
   FrameOutput out = frame_output(options);
   out.dir = render_scratch(dir);
   RenderProgress progress;
@@ -102,8 +102,8 @@ PackingQuality render_frames(const World& world, const std::filesystem::path& di
   PackingQuality quality = write_frames(world, world.state, out);
   progress.finish();
   if (beside) beside(quality, out.dir);
-  install_rendered(out.dir, dir);
-  return quality;
+  std::vector<std::filesystem::path> removed = install_rendered(out.dir, dir);
+  return {std::move(quality), std::move(removed)};
 }
 
 void add_frame_options(CLI::App& cmd, FrameOptions& f) {
@@ -274,7 +274,8 @@ int render(const RenderOptions& options) {
   std::optional<StillReference> still;
   if (options.still_reference) still = read_still_reference(*options.still_reference);
   const FolderLock lock(options.dir, "animpak render " + options.dir.string());
-  if (recover_folder(options.dir))
+  std::vector<std::filesystem::path> removed;
+  if (recover_folder(options.dir, &removed))
     std::cerr << "animpak: finished swapping in the packing a killed pack left whole in " << options.dir.string()
               << "\n";
   const Checkpoint checkpoint = read_checkpoint(options.dir / "state.bin");
@@ -290,7 +291,7 @@ int render(const RenderOptions& options) {
   }
   if (!still) still = stored_still_reference(stats);
   std::string note, still_line;
-  const PackingQuality quality =
+  Rendered rendered =
       render_frames(loaded.world, options.dir, options.frames,
                     [&](const PackingQuality& frames, const std::filesystem::path& scratch) {
                       if (options.contact_plot) write_contact_plot(frames.frames, scratch / "contact.png");
@@ -298,9 +299,11 @@ int render(const RenderOptions& options) {
                       note = update_stats_quality(stats, scratch / "stats.json", checkpoint, loaded.world, frames);
                       if (still) still_line = add_still_reference(scratch / "stats.json", *still, frames);
                     });
+  const PackingQuality& quality = rendered.quality;
+  removed.insert(removed.end(), rendered.removed.begin(), rendered.removed.end());
   std::cerr << "animpak: rendered " << quality.frames.size() << " frames into " << options.dir.string() << "\n";
   if (!note.empty()) std::cerr << "animpak: " << note << "\n";
-  std::cerr << written_files(options.dir, WrittenBy::render);
+  std::cerr << written_files(options.dir, WrittenBy::render, removed);
   std::cout << quality_lines(quality) << still_line;
   return 0;
 }

@@ -41,7 +41,7 @@ class SolverFrontend final : public Frontend {
       std::cerr << "animpak: no frames rendered (animpak-solve has no rendering library); render them with "
                    "`animpak render "
                 << dir.string() << "` on a machine with the rendering stack\n";
-      return PackingQuality{};
+      return Rendered{};
     };
   }
 

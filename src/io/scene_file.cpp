@@ -548,4 +548,21 @@ SceneSpec load_scene(const fs::path& file) {
   return parse_scene(text, file, file.parent_path());
 }
 
+std::vector<std::string> scene_warnings(const SceneSpec& scene) {
+  std::vector<std::string> warnings;
+  if (scene.loop) return warnings;
+  for (const GuidedSpec& g : scene.guided) {
+    if (g.targets.size() < 2) continue;
+    const TargetSpec& first = g.targets.front();
+    const auto away = [&](const TargetSpec& t) { return std::hypot(t.x - first.x, t.y - first.y) > kLoopTolerance; };
+    // Back at its start after going somewhere: one held in place (every target at the start) is not a loop.
+    if (away(g.targets.back()) || std::none_of(g.targets.begin(), g.targets.end(), away)) continue;
+    warnings.push_back("guided element \"" + g.name + "\" ends where it starts (x " + format_number(first.x) + ", y " +
+                       format_number(first.y) +
+                       ") but the scene does not loop; add \"loop\": true to the scene to make the animation "
+                       "loop seamlessly");
+  }
+  return warnings;
+}
+
 }  // namespace animpak

@@ -223,6 +223,7 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
         throw InputError(scene.file.string() + ": element \"" + spec.name +
                          "\" has a non-looping animation but the scene loops; set its animation.loop to true or the "
                          "scene's loop to false");
+  for (const std::string& warning : scene_warnings(scene)) world.notes.push_back("warning: " + warning);
 
   // Envelope-triangle centroids sit a third of a slice gap off each slice; the 3×3×3 block reaches at
   // least one cell, so slices more than three cells apart in t never see each other's envelopes.

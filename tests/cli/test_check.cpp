@@ -205,6 +205,31 @@ TEST_CASE("animpak check SCENE.json: the scene's container with its outline and 
   CHECK(holed.err.find("is not a hole") == std::string::npos);
 }
 
+TEST_CASE("animpak check SCENE.json: a guided path that ends where it starts in a scene that does not loop warns") {
+  const animpak::test::TempDir scratch("animpak-check-scene-");
+  const std::string examples = std::string(ANIMPAK_SOURCE_DIR) + "/examples/";
+  const auto scene = [&](const std::string& loop) {
+    std::ofstream(scratch / "scene.json")
+        << R"({"container": ")" << examples << R"(shapes/heart-container.path", "elements": [{"name": "star", "art": ")"
+        << examples << R"(default/star.svg", "count": 0}], "guided": [{"name": "dove", "element": "star", "targets": [
+             {"x": 200, "y": 250, "t": 0}, {"x": 300, "y": 250, "t": 0.5}, {"x": 200, "y": 250, "t": 1}]}])"
+        << loop << "}";
+    return run_animpak("check " + (scratch / "scene.json").string() + " --json");
+  };
+  const CommandResult open = scene(R"(, "loop": false)");
+  INFO(open.err);
+  REQUIRE(open.code == 0);
+  CHECK_THAT(open.err, Catch::Matchers::Contains("animpak: warning: " + (scratch / "scene.json").string() +
+                                                 ": guided element \"dove\" ends where it starts (x 200, y 250) but "
+                                                 "the scene does not loop; add \"loop\": true"));
+  const nlohmann::json report = nlohmann::json::parse(open.out);
+  CHECK(report["ready"] == true);
+  CHECK_THAT(report["warnings"][0].get<std::string>(), Catch::Matchers::Contains("guided element \"dove\""));
+  const CommandResult looping = scene("");
+  REQUIRE(looping.code == 0);
+  CHECK(looping.err.find("ends where it starts") == std::string::npos);
+}
+
 TEST_CASE("animpak check --container: a .path hole (type 7) is counted and measured, and bad hole indices exit 2") {
   const animpak::test::TempDir scratch("animpak-check-");
   // A 400 x 200 frame with a 100 x 100 hole.

@@ -2,11 +2,13 @@
 // render's progress, and every file the run wrote listed with its size at the end.
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "console.hpp"
 #include "run_animpak.hpp"
@@ -81,6 +83,25 @@ TEST_CASE("console: the files of a run, each with its size, within 80 columns") 
   const std::string render = written_files(dir.path(), WrittenBy::render);
   CHECK_THAT(render, !Contains("state.bin") && !Contains("input/") && Contains("frames/"));
   CHECK(longest_line(pack) <= 80);
+  CHECK_THAT(pack, !Contains("removed"));
+  // The run before's files, all of them gone: after `removed:`, wrapped within 80 columns under the sizes.
+  std::vector<fs::path> removed;
+  for (int i = 0; i < 100000; i += 7) {
+    char frame[32];
+    std::snprintf(frame, sizeof frame, "frames/frame_%05d", i);
+    removed.push_back(std::string(frame) + ".png");
+    removed.push_back(std::string(frame) + ".svg");
+  }
+  for (const char* name : {"animation.gif", "animation.mp4", "animation.lottie", "animation.svg", "contact.png",
+                           "report.html", "trajectory.svg"})
+    removed.push_back(name);
+  removed.push_back("animation.json");  // written again: listed above, not as removed
+  const std::string replaced = written_files(dir.path(), WrittenBy::render, removed);
+  INFO(replaced);
+  CHECK_THAT(replaced, Contains("\n  removed:          frames/ (14286 PNG and 14286 SVG frames), animation.gif,\n"
+                                "                    animation.mp4, animation.lottie, animation.svg, contact.png,\n"
+                                "                    report.html, trajectory.svg\n"));
+  CHECK(longest_line(replaced) <= 80);
 }
 
 TEST_CASE("animpak render: says what it renders and lists every file it wrote with its size") {
@@ -96,7 +117,9 @@ TEST_CASE("animpak render: says what it renders and lists every file it wrote wi
   const CommandResult rendered = run_animpak("render " + out + " --frames 4 --size 32 --format png,svg");
   REQUIRE(rendered.code == 0);
   CHECK_THAT(rendered.err, Contains("rendering 4 frames") && Contains("4 PNG and 4 SVG frames") &&
-                               Contains("stats.json") && !Contains("state.bin") && !Contains("animation.gif"));
+                               Contains("stats.json") && !Contains("state.bin") && !Contains("animation.gif  "));
+  // The pack's GIF and Lottie, not rendered again: named as removed, not as written.
+  CHECK_THAT(rendered.err, Contains("\n  removed:          animation.gif, animation.json\n"));
   // Not a terminal: a line at each file written after the frames, none redrawn in place.
   CHECK_THAT(rendered.err, !Contains("\r"));
   CHECK(longest_line(packed.err, out) <= 80);

@@ -176,10 +176,11 @@ TEST_CASE("animpak render: on a full disk the render before stays whole and the 
   const std::string frame = read_text(out + "/frames/frame_0000.png"), gif = read_text(out + "/animation.gif"),
                     lottie = read_text(out + "/animation.json"), stats = read_text(out + "/stats.json");
   // A file size limit fails every write past it as a full disk does (EFBIG, with SIGXFSZ ignored).
-  for (const std::string& limit : {"4", "40"}) {
+  for (const char* const limit : {"4", "40"}) {
     INFO("ulimit -f " << limit);
-    const CommandResult full = run_command("bash -c \"trap '' XFSZ; ulimit -f " + limit + "; " + ANIMPAK_EXE +
-                                           " render " + out + " --frames 5 --size 256 --format png,gif,lottie\"");
+    const CommandResult full =
+        run_command("bash -c \"trap '' XFSZ; ulimit -f " + std::string(limit) + "; " + ANIMPAK_EXE + " render " + out +
+                    " --frames 5 --size 256 --format png,gif,lottie\"");
     CHECK(full.code == 2);
     CHECK_THAT(full.err, Contains("cannot write it: File too large") && Contains("free disk space"));
     CHECK(read_text(out + "/frames/frame_0000.png") == frame);

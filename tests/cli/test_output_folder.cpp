@@ -10,7 +10,9 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
+#include "console.hpp"
 #include "pack_output.hpp"
 #include "packed_folder.hpp"
 #include "run_animpak.hpp"
@@ -73,6 +75,36 @@ TEST_CASE("animpak render: replaces every rendered file of the run before, keeps
   CHECK(file_bytes(out + "/frames/mine.txt") == "mine");
   const nlohmann::json stats = nlohmann::json::parse(file_bytes(out + "/stats.json"));
   CHECK(stats["frames"].size() == 3);
+}
+
+TEST_CASE("animpak render and pack: list the files of the run before they removed, beside those they wrote") {
+  const ArtBox box("removed");
+  const std::string out = box.path("out");
+  const CommandResult packed = run_animpak("pack " + box.scene() + " --out " + out +
+                                           " --device reference --max-iterations 10 --frames 3 --size 16"
+                                           " --format png,gif");
+  REQUIRE(packed.code == 0);
+  CHECK_THAT(packed.err, !Contains("removed:"));  // a fresh folder: nothing of a run before
+  std::ofstream(out + "/notes.txt") << "mine";
+  std::ofstream(out + "/frames/mine.txt") << "mine";
+  // The formats of docs/animation-formats.md in place of the frames and the GIF: both named as gone.
+  const CommandResult animated =
+      run_animpak("render " + out + " --frames 2 --size 16 --format lottie,svg-anim,dotlottie");
+  REQUIRE(animated.code == 0);
+  CHECK_THAT(animated.err, Contains("animation.lottie  ") &&
+                               Contains("\n  removed:          frames/ (3 PNG frames), animation.gif\n"));
+  CHECK_THAT(animated.err, !Contains("notes.txt") && !Contains("mine.txt"));
+  // A file written again under its name is listed as written, not as removed.
+  const CommandResult lottie = run_animpak("render " + out + " --frames 2 --size 16 --format dotlottie");
+  REQUIRE(lottie.code == 0);
+  CHECK_THAT(lottie.err, Contains("\n  removed:          animation.json, animation.svg\n"));
+  // A pack over the packing removes its rendered files with it, also when it renders nothing.
+  const CommandResult again = run_animpak("pack " + box.scene() + " --out " + out +
+                                          " --device reference --max-iterations 5 --no-render --force");
+  REQUIRE(again.code == 0);
+  CHECK_THAT(again.err, Contains("\n  removed:          animation.lottie\n"));
+  CHECK(file_bytes(out + "/notes.txt") == "mine");
+  CHECK(file_bytes(out + "/frames/mine.txt") == "mine");
 }
 
 TEST_CASE("animpak pack: refuses a folder holding a packing, --force replaces it with its frames") {
@@ -187,7 +219,10 @@ TEST_CASE("install_rendered: an interrupted render leaves the one before whole, 
   fs::create_directories(scratch / "frames");
   std::ofstream(scratch / "frames/frame_0000.png") << "new";
   std::ofstream(scratch / "animation.mp4") << "new";
-  animpak::cli::install_rendered(scratch, dir.path());
+  const std::vector<fs::path> removed = animpak::cli::install_rendered(scratch, dir.path());
+  // What it removed, the frame it wrote again included; never the user's own files.
+  CHECK(removed == std::vector<fs::path>{"frames/frame_0000.png", "frames/frame_0001.png", "frames/frame_0001.svg",
+                                         "animation.gif", "animation.json"});
   CHECK(file_bytes(dir / "frames/frame_0000.png") == "new");
   CHECK(file_bytes(dir / "animation.mp4") == "new");
   for (const char* stale : {"frames/frame_0001.png", "frames/frame_0001.svg", "animation.gif", "animation.json"})
@@ -195,6 +230,9 @@ TEST_CASE("install_rendered: an interrupted render leaves the one before whole, 
   CHECK(file_bytes(dir / "frames/mine.png") == "old");
   CHECK(file_bytes(dir / "notes.txt") == "old");
   CHECK_FALSE(fs::exists(scratch));
+  CHECK_THAT(animpak::cli::written_files(dir.path(), animpak::cli::WrittenBy::render, removed),
+             Contains("\n  removed:          frames/ (1 PNG and 1 SVG frames), animation.gif,\n"
+                      "                    animation.json\n"));
 }
 
 TEST_CASE("animpak --help: lists exit code 130") { CHECK_THAT(run_animpak("--help").out, Contains("130")); }

@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "animpak/checkpoint.hpp"
+#include "evenness_output.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
@@ -232,6 +233,37 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK_FALSE(e["guided"].get<bool>());
   }
   CHECK_THAT(r.out, !Contains("unguided elements stray"));
+}
+
+TEST_CASE("animpak pack: the evenness line of a sparse packing says so and names what fills it") {
+  // Three stars grown for 5 steps: pockets of the heart far wider than a star.
+  const Sandbox box("sparse");
+  const CommandResult r = run_animpak("pack " + box.scene() + " --out " + box.path("out") +
+                                      " --device reference --max-iterations 5 --frames 2 --format png --size 32");
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
+  REQUIRE(stats["quality"]["frames"]["empty_disc"]["median"].get<double>() > 1.0);
+  const std::regex line(R"(\nevenness: [^\n]* element radii \(worst [0-9.]+\); sparse: try a smaller params\.offset, )"
+                        R"(higher counts \("count": "fill"\) or secondary elements\n)");
+  CHECK(std::regex_search(r.out, line));
+}
+
+TEST_CASE("evenness_line: names what fills a packing only when its median frame leaves a disc over one radius") {
+  animpak::cli::EvennessSummary e;
+  e.wall_ratio_median = e.wall_ratio_min = 0.5;
+  e.wall_ratio_max = 0.6;
+  e.empty_disc_median = 0.8;
+  e.empty_disc_worst = 1.4;  // the worst frame alone does not make a packing sparse
+  CHECK(animpak::cli::evenness_line(e) ==
+        "evenness: wall ratio 0.50 (0.50–0.60), largest empty disc 0.80 element radii (worst 1.40)");
+  e.empty_disc_median = 1.0;
+  CHECK_THAT(animpak::cli::evenness_line(e), !Contains("sparse"));
+  e.empty_disc_median = 1.2;
+  CHECK_THAT(animpak::cli::evenness_line(e),
+             Contains("(worst 1.40); sparse: try a smaller params.offset, higher counts (\"count\": \"fill\") or "
+                      "secondary elements"));
+  CHECK_THAT(animpak::cli::evenness_line(animpak::cli::EvennessSummary{}), !Contains("sparse"));  // no art
 }
 
 TEST_CASE("animpak pack: with a traveller, the motion line and stats.json say how far the others move and dip") {

@@ -372,6 +372,33 @@ TEST_CASE("parse_scene: guided paths that do not meet where they loop") {
             R"(, "loop": false)")) == "(no error)");
 }
 
+TEST_CASE("scene_warnings: a guided path that ends where it starts in a scene that does not loop") {
+  const auto warnings_of = [](const std::string& targets, const std::string& loop) {
+    return scene_warnings(
+        parse_scene_text(guided(R"([{"name": "dove", "element": "bird", "targets": [)" + targets + "]}]", loop)));
+  };
+  const std::string round =
+      R"({"x": 100, "y": 250, "t": 0}, {"x": 300, "y": 250, "t": 0.5}, {"x": 100, "y": 250, "t": 1})";
+  const std::vector<std::string> open = warnings_of(round, R"(, "loop": false)");
+  REQUIRE(open.size() == 1);
+  CHECK(open[0] ==
+        "guided element \"dove\" ends where it starts (x 100, y 250) but the scene does not loop; add \"loop\": true "
+        "to the scene to make the animation loop seamlessly");
+  // Within the 1e-6 art units a loop allows, as the loop check measures it.
+  CHECK(warnings_of(R"({"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 0.5}, {"x": 0, "y": 5e-7, "t": 1})",
+                    R"(, "loop": false)")
+            .size() == 1);
+  CHECK(warnings_of(round, "").empty());  // it loops
+  CHECK(warnings_of(R"({"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 0.5}, {"x": 0, "y": 1e-5, "t": 1})",
+                    R"(, "loop": false)")
+            .empty());
+  CHECK(warnings_of(R"({"x": 0, "y": 0, "t": 0}, {"x": 9, "y": 9, "t": 1})", R"(, "loop": false)").empty());
+  // Held in place (scaled or turned there): no path to close.
+  CHECK(warnings_of(R"({"x": 5, "y": 5, "t": 0}, {"x": 5, "y": 5, "t": 0.5, "scale": 2}, {"x": 5, "y": 5, "t": 1})",
+                    R"(, "loop": false)")
+            .empty());
+}
+
 TEST_CASE("parse_scene: duplicate guided names") {
   const std::string t = R"("targets": [{"x": 1, "y": 1, "t": 0}, {"x": 1, "y": 1, "t": 1}])";
   CHECK_THAT(scene_error_of(guided(R"([{"name": "a", "element": "bird", )" + t +

@@ -156,6 +156,20 @@ TEST_CASE("build_world: 3 targets on 9 slices give 3 target points, on the slice
   }
 }
 
+TEST_CASE("build_world: warns of a guided path that ends where it starts when the scene does not loop") {
+  const std::string round = R"(, "guided": [{"name": "dove", "element": "star", "targets": [
+    {"x": 200, "y": 250, "t": 0}, {"x": 300, "y": 250, "t": 0.5}, {"x": 200, "y": 250, "t": 1}]}])";
+  auto closed_path_warned = [](const World& w) {
+    return std::any_of(w.notes.begin(), w.notes.end(), [](const std::string& n) {
+      return n.rfind("warning: guided element \"dove\" ends where it starts", 0) == 0 &&
+             n.find("add \"loop\": true") != std::string::npos;
+    });
+  };
+  CHECK(closed_path_warned(world_of(
+      star_scene(0, kSlices, 1, {round + R"(, "loop": false)", ""}, R"({"preset": "pulse", "loop": false})"))));
+  CHECK_FALSE(closed_path_warned(world_of(star_scene(0, kSlices, 1, {round, ""}))));
+}
+
 TEST_CASE("build_world: a target path through a hole warns, a target outside or in a hole is an error") {
   auto ring = [](const std::string& targets) {
     return R"({"container": {"art": ")" + animpak::test::example_file("annulus/ring.svg") +
