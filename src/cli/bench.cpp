@@ -47,7 +47,10 @@ std::vector<BenchWorld> bench_worlds(const BenchOptions& options) {
   }
   // Packed states: the world rebuilt from the scene inside the checkpoint, at its packed state.
   for (const std::filesystem::path& given : options.states) {
-    const std::filesystem::path file = std::filesystem::is_directory(given) ? given / "state.bin" : given;
+    // A state named directly may be a link the user made (its folder's input/ is beside the file it points
+    // to); a folder's own state.bin is read as every command reads it, following no link.
+    const std::filesystem::path file =
+        std::filesystem::is_directory(given) ? given / "state.bin" : std::filesystem::weakly_canonical(given);
     const Checkpoint checkpoint = read_checkpoint(file);
     LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed_scene(file.parent_path(), checkpoint));
     const int elements = static_cast<int>(loaded.world.elements.size());
