@@ -213,7 +213,9 @@ std::vector<fs::path> remove_rendered(const fs::path& dir) {
   for (const char* name : kAnimationFiles)
     if (fs::remove(dir / name)) animations.push_back(name);
   const fs::path frames = dir / "frames";
-  if (fs::is_directory(frames)) {
+  // A frames/ that is a link is not this folder's: nothing in the folder it points to is removed.
+  std::error_code ec;
+  if (fs::is_directory(fs::symlink_status(frames, ec))) {
     for (const fs::directory_entry& e : fs::directory_iterator(frames))
       if (e.is_regular_file() && is_frame_file(e.path()))
         frame_files.push_back(fs::path("frames") / e.path().filename());

@@ -234,6 +234,9 @@ TEST_CASE("animpak render: links, FIFOs and a missing manifest entry in a folder
   CHECK(r.code == 2);
   CHECK_THAT(r.err, Contains("frames: is a symbolic link"));
   CHECK(read_text(box.path("elsewhere/frame_0000.png")) == "mine");
+  // Nor does a resume, which removes the frames of the state it continues from.
+  CHECK(run_animpak("pack --resume " + out + " --no-render --max-iterations 20").code == 0);
+  CHECK(read_text(box.path("elsewhere/frame_0000.png")) == "mine");
   fs::remove(fs::path(out) / "frames");
 
   // A manifest entry deleted: the art is not read from the scene's original place.
