@@ -371,20 +371,30 @@ std::string lower_count_to(const SceneSpec& scene, const Request& request, int n
     else
       fits = mid;
   }
-  // A smaller scale that fits them all: area goes with the square of the scale, so start from the scale
-  // at which the count that fits would cover as much as the count wanted, and step down until it places.
+  // The largest initial_scale at which all of them place, searched on the placement itself between the
+  // parameter's range ends, so the value offered does not depend on the scale the scene started from
+  // (scaling the given one by the share that fits offered 0.0365 from 0.1 but 0.0571 from 0.07). Placing
+  // is not strictly monotone in the scale (the seeds' margin moves with it), so the bisection finds a
+  // boundary, and the value offered, rounded down to three significant digits, is checked once more.
   std::optional<double> smaller;
-  double lowest = 0.0;
+  double lowest = 0.0, highest = 1.0;
   for (const ParamInfo& info : param_table())
-    if (info.name == "initial_scale") lowest = info.min;
-  double s = scale * std::sqrt(std::max(fits, 1) / static_cast<double>(request.wanted));
-  for (int attempt = 0; attempt < 8 && !smaller; ++attempt, s *= 0.9) {
-    const double digit = std::pow(10.0, std::floor(std::log10(s)) - 2);  // 3 significant digits, rounded down
-    const double rounded = std::floor(s / digit) * digit;
-    if (rounded < lowest) break;
+    if (info.name == "initial_scale") lowest = info.min, highest = info.max;
+  const auto places = [&](double s) {
     SceneSpec trial = scene;
-    trial.params.placement.initial_scale = rounded;
-    if (!unguided_misfit(trial, container, library, unguided_rng)) smaller = rounded;
+    trial.params.placement.initial_scale = s;
+    return !unguided_misfit(trial, container, library, unguided_rng);
+  };
+  if (places(lowest)) {
+    double fits_at = lowest, fails_at = highest;
+    for (int step = 0; step < 16 && fails_at - fits_at > 1e-4 * fails_at; ++step) {
+      const double mid = 0.5 * (fits_at + fails_at);
+      (places(mid) ? fits_at : fails_at) = mid;
+    }
+    const double digit = std::pow(10.0, std::floor(std::log10(fits_at)) - 2);  // 3 significant digits, down
+    double rounded = std::floor(fits_at / digit) * digit;
+    for (int step = 0; step < 10 && rounded >= lowest && !smaller; ++step, rounded -= digit)
+      if (places(rounded)) smaller = rounded;
   }
   throw InputError(scene.file.string() + ": " + std::to_string(request.wanted) + " elements requested, at most about " +
                    std::to_string(fits) + " fit in the container at params.initial_scale " + shown(scale) +

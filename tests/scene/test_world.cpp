@@ -315,6 +315,12 @@ TEST_CASE("build_world: more unguided elements than fit say how many do, and tha
                                          error.find(' ', error.find(to) + to.size()) - error.find(to) - to.size());
   CHECK(std::stod(scale) < 0.07);
   CHECK(world_of(star_scene(400, kSlices, 1, {"", R"("initial_scale": )" + scale})).elements.size() == 400);
+  // Searched on the placement, not scaled from the value given: the same offer from any start that fails.
+  for (const char* const start : {"0.09"}) {
+    INFO("initial_scale " << start);
+    const std::string from = error_of(star_scene(400, kSlices, 1, {"", R"("initial_scale": )" + std::string(start)}));
+    CHECK_THAT(from, Contains(to + scale + " all 400 fit)"));
+  }
 }
 
 TEST_CASE("build_world: the same scene and seed give identical bytes, another seed moves the seeds") {
