@@ -38,11 +38,6 @@ constexpr const char* kPackComplete = "complete";
 // What a packing is, besides its frames: moved as a whole when a new packing replaces it.
 const char* const kPackingFiles[] = {"input", "state.bin", "stats.json"};
 
-std::string read_in_folder(const fs::path& dir, const fs::path& relative, const std::string& what_to_do) {
-  refuse_links_below(dir, relative, what_to_do);
-  return read_regular_file(dir / relative, what_to_do, kMaxFolderFile);
-}
-
 struct ManifestArt {
   fs::path file;  ///< absolute
   std::string sha256;
@@ -66,7 +61,7 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
   std::error_code ec;
   if (!fs::exists(fs::symlink_status(m.file, ec))) return std::nullopt;
   const nlohmann::json j =
-      nlohmann::json::parse(read_in_folder(dir, "input/manifest.json", "restore the folder"), nullptr, false);
+      nlohmann::json::parse(read_folder_file(dir, "input/manifest.json", "restore the folder"), nullptr, false);
   try {
     if (j.is_discarded() || j.at("format_version").get<int>() > kManifestVersion) throw std::exception();
     m.scene_sha256 = j.at("scene").at("sha256").get<std::string>();
@@ -189,7 +184,7 @@ PackedScene packed_scene(const fs::path& dir, const Checkpoint& checkpoint, cons
                          "\", which the packed scene uses; restore the folder, or pass --scene FILE with the "
                          "scene it was packed from");
       const std::string what_to_do = "restore the folder, or pass --scene FILE";
-      if (sha256_hex(read_in_folder(dir, packed->file.lexically_relative(dir), what_to_do)) != packed->sha256)
+      if (sha256_hex(read_folder_file(dir, packed->file.lexically_relative(dir), what_to_do)) != packed->sha256)
         throw InputError(packed->file.string() + ": changed since it was packed (its SHA-256 is not the one in " +
                          manifest->file.string() + "); restore it, or pass --scene FILE with the packed art");
       return packed->file;
@@ -235,10 +230,8 @@ fs::path render_scratch(const fs::path& dir) {
 }
 
 std::vector<fs::path> install_rendered(const fs::path& scratch, const fs::path& dir) {
-  // Every file checked and on disk before the first of the render before is removed: a render that
-  // failed on a full disk leaves the one before whole.
-  for (const fs::directory_entry& e : fs::recursive_directory_iterator(scratch))
-    if (e.is_regular_file()) sync_written_file(e.path());
+  // Every file in `scratch` was checked and flushed by its writer (write_file_atomically; ffmpeg's output
+  // by run_ffmpeg), so a render that failed on a full disk never gets here and leaves the one before whole.
   refuse_links_below(dir, "frames", "move the link away; frames/ is written by animpak render");
   std::vector<fs::path> removed = remove_rendered(dir);
   for (const char* name : kAnimationFiles)
@@ -261,7 +254,8 @@ std::string read_bytes(const fs::path& file, const std::string& what_to_do) {
 }
 
 std::string read_folder_file(const fs::path& dir, const fs::path& relative, const std::string& what_to_do) {
-  return read_in_folder(dir, relative, what_to_do);
+  refuse_links_below(dir, relative, what_to_do);
+  return read_regular_file(dir / relative, what_to_do, kMaxFolderFile);
 }
 
 FolderLock::FolderLock(const fs::path& dir, const std::string& command) {

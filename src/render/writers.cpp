@@ -164,6 +164,8 @@ void run_ffmpeg(const std::string& args, const std::filesystem::path& target) {
   if (status != 0)
     throw InputError(target.string() + ": ffmpeg failed (" + (log.empty() ? "is ffmpeg installed?" : log) +
                      "); the PNG frames are kept in " + target.parent_path().string() + "/frames");
+  // ffmpeg's own writes are not ours to check: its file must be there, not empty, and on disk.
+  sync_written_file(target);
 }
 
 std::string quoted(const std::filesystem::path& p) {
