@@ -128,6 +128,9 @@ struct SceneSpec {
   std::uint64_t seed = 1;
   bool loop = true;  ///< loop constraint on: the t = 1 plane meets the t = 0 plane
   Params params;     ///< paper constants with the scene's overrides applied
+  /// The scene sets params.initial_scale itself. When it does not and the default crowds the elements
+  /// it asks for, build_world starts them smaller (docs/first-scene.md, "When the elements do not fit").
+  bool initial_scale_given = false;
 };
 
 /// Reads, parses and validates a scene file. Errors are InputError with the file and the field path,

@@ -533,7 +533,10 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
   if (auto f = root.optional("mirror")) scene.mirror = read_mirror(*f);
   if (auto f = root.optional("count")) read_count(*f, scene);
   if (auto f = root.optional("seed")) scene.seed = f->unsigned_integer();
-  if (auto f = root.optional("params")) read_params(*f, scene.params);
+  if (auto f = root.optional("params")) {
+    read_params(*f, scene.params);
+    scene.initial_scale_given = f->has("initial_scale");
+  }
   if (auto f = root.optional("slices")) {
     if (root.has("params") && root.required("params").has("slices"))
       f->fail("given twice, here and as params.slices; keep one");

@@ -57,6 +57,13 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
 void make_way(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
               const std::vector<Placement>& guided, std::vector<Placement>& unguided, double margin);
 
+/// For a scene that does not set params.initial_scale and whose unguided elements do not all place at the
+/// default: 0.9 × the largest initial_scale at which they do (rounded down to three significant digits,
+/// and placing), searched on the placement itself. Empty when the scene sets initial_scale, seeds as many
+/// as fit, places at its initial_scale already, or places at no initial_scale in the parameter's range.
+std::optional<double> picked_initial_scale(const SceneSpec& scene, const Container& container,
+                                           const std::vector<SpacetimeElement>& library, const Rng& unguided_rng);
+
 /// Throws InputError naming the elements and slice where two shrunken elements overlap or one leaves
 /// the container (for a guided element: on a slice of one of its targets). When unguided elements overlap
 /// in a scene that asks for a number of them, the error says how many fit instead: it places fewer from

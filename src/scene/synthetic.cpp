@@ -72,6 +72,7 @@ SyntheticWorld make_synthetic_world(const SyntheticSpec& spec) {
   const Container container = make_container(square_art(), scene.container);
   for (int attempt = 0;; ++attempt) {
     scene.params.placement.initial_scale = scale;
+    scene.initial_scale_given = true;  // this loop picks the start itself
     try {
       return {build_world(scene, container, library), count, scale, scene.params.element.slices};
     } catch (const InputError&) {

@@ -52,6 +52,9 @@ double closest_pair(const std::vector<Vec2>& points) {
 
 // Lloyd iterations over the picked seeds (docs/parameters.md, "Seeds for a fixed count").
 constexpr int seed_relaxation = 20;
+// A scene that sets no initial_scale and crowds the default starts at this share of the largest that places
+// (docs/first-scene.md, "When the elements do not fit").
+constexpr double kPickedScaleShare = 0.9;
 
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {
@@ -353,6 +356,37 @@ std::string lower_count_to(const SceneSpec& scene, const Request& request, int n
   return "the elements' counts to add up to " + std::to_string(n) + " (" + elements + ")";
 }
 
+// The largest initial_scale at which all of the scene's unguided elements place, times `share`, rounded
+// down to three significant digits and checked to place; empty when none in the parameter's range does.
+// Searched on the placement itself between the parameter's range ends, so the value does not depend on the
+// scale the scene started from (scaling the given one by the share that fits offered 0.0365 from 0.1 but
+// 0.0571 from 0.07). Placing is not strictly monotone in the scale (the seeds' margin moves with it), so
+// the bisection finds a boundary, and the rounded value is checked once more, stepping down until it places.
+std::optional<double> largest_placing_scale(const SceneSpec& scene, const Container& container,
+                                            const std::vector<SpacetimeElement>& library, const Rng& unguided_rng,
+                                            double share) {
+  double lowest = 0.0, highest = 1.0;
+  for (const ParamInfo& info : param_table())
+    if (info.name == "initial_scale") lowest = info.min, highest = info.max;
+  const auto places = [&](double s) {
+    SceneSpec trial = scene;
+    trial.params.placement.initial_scale = s;
+    return !unguided_misfit(trial, container, library, unguided_rng);
+  };
+  if (!places(lowest)) return std::nullopt;
+  double fits_at = lowest, fails_at = highest;
+  for (int step = 0; step < 16 && fails_at - fits_at > 1e-4 * fails_at; ++step) {
+    const double mid = 0.5 * (fits_at + fails_at);
+    (places(mid) ? fits_at : fails_at) = mid;
+  }
+  const double wanted = std::max(lowest, share * fits_at);
+  const double digit = std::pow(10.0, std::floor(std::log10(wanted)) - 2);  // 3 significant digits, down
+  double rounded = std::floor(wanted / digit) * digit;
+  for (int step = 0; step < 10 && rounded >= lowest; ++step, rounded -= digit)
+    if (places(rounded)) return rounded;
+  return std::nullopt;
+}
+
 // The error for unguided elements that overlap because the scene asks for more than fit: how many do fit,
 // found by placing them as build_world does (the same seeds from the same generator) for fewer and fewer;
 // the largest count that places without overlap is what the message offers, and the next one overlaps.
@@ -371,31 +405,7 @@ std::string lower_count_to(const SceneSpec& scene, const Request& request, int n
     else
       fits = mid;
   }
-  // The largest initial_scale at which all of them place, searched on the placement itself between the
-  // parameter's range ends, so the value offered does not depend on the scale the scene started from
-  // (scaling the given one by the share that fits offered 0.0365 from 0.1 but 0.0571 from 0.07). Placing
-  // is not strictly monotone in the scale (the seeds' margin moves with it), so the bisection finds a
-  // boundary, and the value offered, rounded down to three significant digits, is checked once more.
-  std::optional<double> smaller;
-  double lowest = 0.0, highest = 1.0;
-  for (const ParamInfo& info : param_table())
-    if (info.name == "initial_scale") lowest = info.min, highest = info.max;
-  const auto places = [&](double s) {
-    SceneSpec trial = scene;
-    trial.params.placement.initial_scale = s;
-    return !unguided_misfit(trial, container, library, unguided_rng);
-  };
-  if (places(lowest)) {
-    double fits_at = lowest, fails_at = highest;
-    for (int step = 0; step < 16 && fails_at - fits_at > 1e-4 * fails_at; ++step) {
-      const double mid = 0.5 * (fits_at + fails_at);
-      (places(mid) ? fits_at : fails_at) = mid;
-    }
-    const double digit = std::pow(10.0, std::floor(std::log10(fits_at)) - 2);  // 3 significant digits, down
-    double rounded = std::floor(fits_at / digit) * digit;
-    for (int step = 0; step < 10 && rounded >= lowest && !smaller; ++step, rounded -= digit)
-      if (places(rounded)) smaller = rounded;
-  }
+  const std::optional<double> smaller = largest_placing_scale(scene, container, library, unguided_rng, 1.0);
   throw InputError(scene.file.string() + ": " + std::to_string(request.wanted) + " elements requested, at most about " +
                    std::to_string(fits) + " fit in the container at params.initial_scale " + shown(scale) +
                    " (placed as pack places them, " + std::to_string(fits) + " do not overlap; with " +
@@ -426,6 +436,15 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
                     " unguided element(s) start on paths that step aside, at most " + shown(detour) +
                     " from their seeds (params.make_way 0: straight starts)");
   return out;
+}
+
+std::optional<double> picked_initial_scale(const SceneSpec& scene, const Container& container,
+                                           const std::vector<SpacetimeElement>& library, const Rng& unguided_rng) {
+  const Request request = request_of(scene);
+  if (scene.initial_scale_given || request.fill || request.wanted == 0) return std::nullopt;
+  if (!unguided_misfit(scene, container, library, unguided_rng)) return std::nullopt;
+  // A start a little below the largest that places, so that the elements do not start touching.
+  return largest_placing_scale(scene, container, library, unguided_rng, kPickedScaleShare);
 }
 
 void check_placements(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,

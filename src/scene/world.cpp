@@ -212,7 +212,16 @@ std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index) {
   return rng.next();
 }
 
-World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library) {
+World build_world(const SceneSpec& given, Container container, std::vector<SpacetimeElement> library) {
+  // A scene that sets no initial_scale and asks for more elements than place at the default starts them
+  // smaller (docs/first-scene.md, "When the elements do not fit"); every step below sees that scale.
+  SceneSpec picked;
+  const std::optional<double> start = scene_detail::picked_initial_scale(given, container, library, Rng(given.seed));
+  if (start) {
+    picked = given;
+    picked.params.placement.initial_scale = *start;
+  }
+  const SceneSpec& scene = start ? picked : given;
   World world;
   world.params = scene.params;
   world.seed = scene.seed;
@@ -224,6 +233,13 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
                          "\" has a non-looping animation but the scene loops; set its animation.loop to true or the "
                          "scene's loop to false");
   for (const std::string& warning : scene_warnings(scene)) world.notes.push_back("warning: " + warning);
+  if (start) {
+    std::ostringstream note;
+    note << "params.initial_scale is not set and the elements asked for do not all place at "
+         << given.params.placement.initial_scale << ": starting them at " << *start
+         << " (0.9 of the largest at which they do); set params.initial_scale to choose";
+    world.notes.push_back(note.str());
+  }
 
   // Envelope-triangle centroids sit a third of a slice gap off each slice; the 3×3×3 block reaches at
   // least one cell, so slices more than three cells apart in t never see each other's envelopes.

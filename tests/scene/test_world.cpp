@@ -295,7 +295,9 @@ TEST_CASE("build_world: overlapping shrunken elements and guided paths leaving t
 }
 
 TEST_CASE("build_world: more unguided elements than fit say how many do, and that many place") {
-  const std::string error = error_of(star_scene(400, kSlices, 1));
+  // A scene that sets initial_scale gets the error; one that does not is started smaller (below).
+  const SceneExtras at_default{"", R"("initial_scale": 0.07)"};
+  const std::string error = error_of(star_scene(400, kSlices, 1, at_default));
   INFO(error);
   const std::string lead = "tiny.json: 400 elements requested, at most about ";
   REQUIRE(error.rfind(lead, 0) == 0);
@@ -307,7 +309,8 @@ TEST_CASE("build_world: more unguided elements than fit say how many do, and tha
                         Contains("overlap at slice"));
   // The count it offers places; one more overlaps, and says the same count again.
   CHECK(world_of(star_scene(fits, kSlices, 1)).elements.size() == static_cast<std::size_t>(fits));
-  CHECK_THAT(error_of(star_scene(fits + 1, kSlices, 1)), Contains("about " + std::to_string(fits) + " fit"));
+  CHECK_THAT(error_of(star_scene(fits + 1, kSlices, 1, at_default)),
+             Contains("about " + std::to_string(fits) + " fit"));
   // The smaller initial_scale it offers fits all 400.
   const std::string to = "lower params.initial_scale (to ";
   REQUIRE(error.find(to) != std::string::npos);
@@ -321,6 +324,30 @@ TEST_CASE("build_world: more unguided elements than fit say how many do, and tha
     const std::string from = error_of(star_scene(400, kSlices, 1, {"", R"("initial_scale": )" + std::string(start)}));
     CHECK_THAT(from, Contains(to + scale + " all 400 fit)"));
   }
+}
+
+TEST_CASE("build_world: a scene without initial_scale that crowds the default starts its elements smaller") {
+  // The largest start at which all 400 place, as the error above offers it.
+  const std::string error = error_of(star_scene(400, kSlices, 1, {"", R"("initial_scale": 0.07)"}));
+  const std::string to = "lower params.initial_scale (to ";
+  REQUIRE(error.find(to) != std::string::npos);
+  const double offered = std::stod(error.substr(error.find(to) + to.size()));
+  const World w = world_of(star_scene(400, kSlices, 1));
+  CHECK(w.elements.size() == 400);
+  const double picked = w.params.placement.initial_scale;
+  CHECK(picked < 0.07);
+  // 0.9 of the largest that places; the offer is that largest rounded down to three digits (within 1 %).
+  CHECK(picked <= 0.9 * 1.01 * offered);
+  CHECK(picked >= 0.85 * offered);
+  bool said = false;
+  for (const std::string& note : w.notes)
+    said = said || (note.find("params.initial_scale is not set") != std::string::npos &&
+                    note.find("starting them at") != std::string::npos);
+  CHECK(said);
+  // A scene whose elements place at the default keeps it and says nothing.
+  const World fits = world_of(star_scene(5, kSlices, 1));
+  CHECK(fits.params.placement.initial_scale == 0.07);
+  for (const std::string& note : fits.notes) CHECK(note.find("initial_scale") == std::string::npos);
 }
 
 TEST_CASE("build_world: the same scene and seed give identical bytes, another seed moves the seeds") {
