@@ -104,6 +104,14 @@ std::string profile_text(const PhaseTimes& times, const std::vector<KernelTime>&
   return out.str();
 }
 
+double ProgressShare::update(double elapsed, std::optional<double> seconds_left) {
+  if (!seconds_left) return shown_;
+  const double total = elapsed + std::max(*seconds_left, 0.0);
+  const double share = total > 0.0 ? std::clamp(elapsed / total, 0.0, 1.0) : 0.0;
+  shown_ = std::max(shown_, share);
+  return shown_;
+}
+
 std::string progress_bar(double done) {
   const int width = 8;
   const int filled = static_cast<int>(width * std::clamp(done, 0.0, 1.0));

@@ -34,6 +34,18 @@ std::string profile_text(const PhaseTimes& times, const std::vector<KernelTime>&
 /// "[###.....]": `done` (0..1) of a bar of 8, the pack's progress line on a terminal.
 std::string progress_bar(double done);
 
+/// The share of a pack done that its progress bar shows: the time so far over the time so far plus the
+/// time left, and never less than it showed before (an estimate that grows holds the bar where it was
+/// until the run catches up with it, instead of moving it back).
+class ProgressShare {
+ public:
+  /// The share to show now; 0 while there is no estimate yet (`seconds_left` empty).
+  double update(double elapsed, std::optional<double> seconds_left);
+
+ private:
+  double shown_ = 0.0;
+};
+
 /// The render's progress text for `stage` as FrameOutput::on_progress reports it: "frame 37/100" with the
 /// time so far and the time left at the pace of the frames written, or the file being written.
 std::string render_progress_text(const std::string& stage, int done, int total, double elapsed);

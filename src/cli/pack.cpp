@@ -74,7 +74,8 @@ class Progress {
     const std::optional<StopEstimate> estimate = model_.estimate();
     const std::string line = pack_progress_text(st, elapsed, estimate, verbose_);
     if (tty_) {
-      const double done = estimate ? elapsed / std::max(elapsed + estimate->seconds_left, 1e-9) : 0.0;
+      const double done =
+          share_.update(elapsed, estimate ? std::optional<double>(estimate->seconds_left) : std::nullopt);
       std::cerr << "\r" << progress_bar(done) << " " << line << "\033[K" << std::flush;
     } else {
       std::cerr << "animpak: " << line << "\n";
@@ -91,6 +92,7 @@ class Progress {
   }
   bool tty_, verbose_;
   StopModel model_;
+  ProgressShare share_;
   double start_, last_print_ = -1e9;
 };
 

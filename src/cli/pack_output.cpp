@@ -290,7 +290,15 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
     rows.push_back({p.iteration, p.seconds, p.mean_growth, p.growing_share,
                     std::isfinite(p.max_gap) ? json(p.max_gap) : json(nullptr),  // no neighbour yet: JSON has no inf
                     p.overlapping, p.outside});
-  stats["progress"] = {{"columns", kProgressColumns}, {"rows", rows}};
+  // With the stop test's settings and the world's unit mesh density, the rows are a trace StopModel can be
+  // replayed over (scripts/progress-trace.py; docs/cli.md, "Progress and the time left").
+  const Params::Stop& stop = w.params.stop;
+  stats["progress"] = {
+      {"columns", kProgressColumns},
+      {"rows", rows},
+      {"unit_mesh_density", unit_mesh_density(w)},
+      {"stall", {{"window", stop.stall_window}, {"growth", stop.stall_growth}, {"tests", stop.stall_tests}}},
+      {"secondary", w.topology.has_secondary()}};
   if (!r.kernels.empty()) {
     json kernels = json::array();
     for (const KernelTime& k : r.kernels)

@@ -64,6 +64,28 @@ TEST_CASE("console: the pack's progress line fits 80 columns on a terminal and i
   CHECK_THAT(pack_progress_text(st, 1.0, std::nullopt, true), Contains("gap inf") && Contains("overlaps 0"));
 }
 
+TEST_CASE("console: the pack's progress bar never moves back when the time left grows") {
+  ProgressShare share;
+  CHECK(share.update(5.0, std::nullopt) == 0.0);  // estimating
+  CHECK(share.update(60.0, 60.0) == Approx(0.5));
+  // The estimate jumps from a minute left to five (as a run leaving free growth can): the bar holds.
+  CHECK(share.update(80.0, 300.0) == Approx(0.5));
+  CHECK(progress_bar(share.update(80.0, 300.0)) == "[####....]");
+  CHECK(share.update(100.0, std::nullopt) == Approx(0.5));  // no estimate: the bar stays
+  // The run catches up with the bar, then passes it.
+  CHECK(share.update(300.0, 100.0) == Approx(0.75));
+  CHECK(share.update(310.0, -5.0) == Approx(1.0));  // a stop already passed reads as done
+  // The swings a user saw (17, 23, 38, 32, 7, 6, 8, 4 minutes left, a minute apart): never back.
+  double before = 0.0, elapsed = 0.0;
+  ProgressShare swings;
+  for (const double left : {1020.0, 1380.0, 2280.0, 1920.0, 420.0, 360.0, 480.0, 240.0}) {
+    elapsed += 60.0;
+    const double now = swings.update(elapsed, left);
+    CHECK(now >= before);
+    before = now;
+  }
+}
+
 TEST_CASE("console: the files of a run, each with its size, within 80 columns") {
   const animpak::test::TempDir dir("animpak-console-");
   fs::create_directories(dir / "frames");
