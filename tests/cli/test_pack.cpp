@@ -168,6 +168,14 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
     CHECK(g["max"].get<double>() <= 1.0 + 20 * 0.01 * 0.05 + 1e-6);
     CHECK(g["mean"].get<double>() >= g["min"].get<double>());
   }
+  // The progress rows with what the time-left model needs to replay them (scripts/progress-trace.py).
+  const auto& progress = stats["progress"];
+  CHECK(progress["rows"].size() == 2);  // a check every check_interval (10) steps
+  CHECK(progress["unit_mesh_density"].get<double>() > 0.0);
+  CHECK(progress["unit_mesh_density"].get<double>() < 1.0);
+  CHECK(progress["stall"]["window"] == 400);
+  CHECK(progress["stall"]["tests"] == 4);
+  CHECK(progress["secondary"] == false);
   // The scene loops, so frame 4 would repeat frame 0: the 4 frames sit at i / 4.
   REQUIRE(stats["frames"].size() == 4);
   for (int i = 0; i < 4; ++i) {
