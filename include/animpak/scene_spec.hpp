@@ -97,6 +97,10 @@ struct GuidedSpec {
   std::string element;  ///< name of a library element
   std::vector<TargetSpec> targets;
   std::string loop_to;  ///< guided element whose t = 0 slice this one's t = 1 slice meets; empty: itself
+  /// `"orient": "path"`: its slices turn to face along the path (docs/scene-format.md, "Facing along the
+  /// path"), the art's `facing` direction (degrees, as drawn) along the path's; targets' angles still win.
+  bool orient_path = false;
+  double facing = 0.0;
 };
 
 enum class OrientationMode { random, fixed, field };

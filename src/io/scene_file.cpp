@@ -235,6 +235,13 @@ std::vector<GuidedSpec> read_guided(const JsonField& field, const std::vector<Li
       element.fail(unknown_name_problem(g.element, library_names, "element in `elements`"));
     g.targets = read_targets(item.required("targets"));
     if (auto f = item.optional("loop_to")) g.loop_to = f->non_empty_string();
+    if (auto f = item.optional("orient"))
+      g.orient_path = io_detail::read_choice(*f, io_detail::kGuidedObject.at("orient")) == 1;
+    if (auto f = item.optional("facing")) {
+      if (!g.orient_path)
+        f->fail("`facing` turns the art along its path, which needs \"orient\": \"path\"; add it or remove `facing`");
+      g.facing = read_number(*f, io_detail::kGuidedObject.at("facing"));
+    }
     guided.push_back(std::move(g));
   }
   check_guided_loops(field, guided, loop);

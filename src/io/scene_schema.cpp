@@ -31,6 +31,7 @@ constexpr std::array<std::string_view, 4> kPresets{"none", "rotate", "pulse", "s
 constexpr std::array<std::string_view, 3> kModes{"random", "fixed", "field"};
 constexpr std::array<std::string_view, 3> kKinds{"constant", "radial", "tangential"};
 constexpr std::array<std::string_view, 4> kKeepSides{"left", "right", "top", "bottom"};
+constexpr std::array<std::string_view, 2> kOrients{"none", "path"};
 
 const FieldSpec kPathIndex{.key = "", .type = Type::integer, .meaning = "", .range = kCount};
 const FieldSpec kFillWord{.key = "", .type = Type::word, .meaning = "as many as fit", .words = kFill};
@@ -160,6 +161,14 @@ const std::array kGuidedFields{
     FieldSpec{.key = "loop_to",
               .type = Type::string,
               .meaning = "the guided element its t = 1 slice meets at t = 0; default: itself"},
+    FieldSpec{.key = "orient",
+              .type = Type::choice,
+              .meaning = "\"path\": turned to face along its path (targets' angles still win); default \"none\"",
+              .words = kOrients},
+    FieldSpec{
+        .key = "facing",
+        .type = Type::number,
+        .meaning = "with orient \"path\": the way the art faces as drawn, in degrees (0 right, 90 down, 180 left)"},
 };
 
 const std::array kVectorFieldFields{

@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "animpak/error.hpp"
 
 namespace animpak::scene_detail {
 namespace {
+
+// A guided path whose last target lies this close to its first (art units) is closed: the tolerance of the
+// loop check (src/io/scene_file.cpp).
+constexpr double kClosedPathTolerance = 1e-6;
 
 Vec2 rotate(Vec2 v, double angle) {
   // y points down, so the usual rotation matrix turns clockwise on screen for a positive angle.
@@ -48,6 +53,16 @@ std::vector<GuideKnot> guide_knots(const SceneSpec& scene, std::size_t index, co
   for (const TargetSpec& k : g.targets) knots.push_back({k.t, unit(k)});
   if (after != nullptr && after->targets.size() >= 2)
     knots.push_back({after->targets[1].t + 1.0, unit(after->targets[1])});
+  // A path that ends where it starts in a scene that does not loop is still a closed curve: it runs on
+  // through its own start, so that it turns no corner there (an oval stays an oval, not a lens).
+  const std::size_t n = g.targets.size();
+  const bool closed = n >= 3 && std::hypot(g.targets.back().x - g.targets.front().x,
+                                           g.targets.back().y - g.targets.front().y) <= kClosedPathTolerance;
+  if (before == nullptr && after == nullptr && closed) {
+    const double period = g.targets.back().t - g.targets.front().t;
+    knots.insert(knots.begin(), {g.targets[n - 2].t - period, unit(g.targets[n - 2])});
+    knots.push_back({g.targets[1].t + period, unit(g.targets[1])});
+  }
   return knots;
 }
 
@@ -90,6 +105,54 @@ TargetSample sample_targets(const std::vector<TargetSpec>& targets, const std::v
   auto mix = [&](double u, double v) { return u + w * (v - u); };
   return {guide_position(knots, t, smooth), mix(a.scale.value_or(1.0), b.scale.value_or(1.0)),
           mix(a.angle.value_or(0.0), b.angle.value_or(0.0)) * std::numbers::pi / 180.0};
+}
+
+// A guided element's angle per slice with `"orient": "path"` (docs/scene-format.md, "Facing along the
+// path"): the art's `facing` direction turned along the path's direction at the slice's time, unwrapped
+// from slice to slice so that it turns continuously (a slice where the path stands still keeps the angle
+// before it). A target that gives an angle still wins at its slice: the difference there fades linearly in
+// t to nothing at the targets on either side (a target without an angle faces along the path).
+std::vector<double> path_angles(const GuidedSpec& g, const std::vector<GuideKnot>& knots, bool smooth,
+                                const std::vector<double>& slice_t) {
+  const double facing = g.facing * std::numbers::pi / 180.0;
+  const double lo = knots.front().t, hi = knots.back().t;
+  const auto direction = [&](double t) -> std::optional<double> {
+    constexpr double h = 1e-4;
+    const Vec2 d =
+        guide_position(knots, std::min(hi, t + h), smooth) - guide_position(knots, std::max(lo, t - h), smooth);
+    if (!(norm(d) > 1e-12)) return std::nullopt;
+    return std::atan2(d.y, d.x) - facing;
+  };
+  const auto nearest_turn = [](double angle, double to) {
+    return angle + 2.0 * std::numbers::pi * std::round((to - angle) / (2.0 * std::numbers::pi));
+  };
+  const std::size_t n = slice_t.size();
+  std::vector<std::optional<double>> raw(n);
+  for (std::size_t s = 0; s < n; ++s) raw[s] = direction(slice_t[s]);
+  std::vector<double> angles(n, -facing);
+  const auto first = std::find_if(raw.begin(), raw.end(), [](const auto& a) { return a.has_value(); });
+  if (first == raw.end()) return angles;  // the path never moves: the art as drawn
+  double previous = **first;
+  for (std::size_t s = 0; s < n; ++s) angles[s] = previous = raw[s] ? nearest_turn(*raw[s], previous) : previous;
+  // Each target's difference from the path's angle at its slice, in (−π, π]: 0 without an angle.
+  std::vector<std::pair<double, double>> fixes;
+  bool any = false;
+  for (const TargetSpec& k : g.targets) {
+    const auto s = static_cast<std::size_t>(std::lround(k.t * double(n - 1)));
+    const double wanted = k.angle ? *k.angle * std::numbers::pi / 180.0 : 0.0;
+    fixes.emplace_back(k.t, k.angle ? wanted - nearest_turn(angles[s], wanted) : 0.0);
+    any = any || k.angle.has_value();
+  }
+  if (!any) return angles;
+  for (std::size_t s = 0; s < n; ++s) {
+    const double t = slice_t[s];
+    std::size_t j = 0;
+    while (j + 2 < fixes.size() && fixes[j + 1].first <= t) ++j;
+    const double span = fixes[j + 1].first - fixes[j].first;
+    const double w = span > 0 ? std::clamp((t - fixes[j].first) / span, 0.0, 1.0) : 0.0;
+    angles[s] += fixes[j].second + w * (fixes[j + 1].second - fixes[j].second);
+  }
+  return angles;
 }
 
 std::string describe_target(const std::vector<TargetSpec>& targets, std::size_t k) {
@@ -191,10 +254,16 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
                          "; move them further apart in t or raise `slices`");
       key_of_slice[s] = static_cast<int>(k);
     }
+    std::vector<double> slice_t(e.slice_count);
+    for (int s = 0; s < e.slice_count; ++s)
+      slice_t[s] = key_of_slice[s] >= 0 ? g.targets[key_of_slice[s]].t
+                                        : static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
+    const std::vector<double> turned = g.orient_path ? path_angles(g, knots, smooth, slice_t) : std::vector<double>{};
     for (int s = 0; s < e.slice_count; ++s) {
       const float t = static_cast<float>(s) / static_cast<float>(e.slice_count - 1);
       const int key = key_of_slice[s];
-      const TargetSample target = sample_targets(g.targets, knots, smooth, key >= 0 ? g.targets[key].t : t);
+      TargetSample target = sample_targets(g.targets, knots, smooth, slice_t[s]);
+      if (g.orient_path) target.angle = turned[s];
       const double scale = scene.params.placement.initial_scale * target.scale;
       const Vec2 anchor = e.position(s, p.anchor);
       p.scale.push_back(scale);
@@ -204,7 +273,7 @@ std::vector<Placement> place_guided(const SceneSpec& scene, const Container& con
       if (key >= 0)
         p.keys.push_back({s,
                           {static_cast<float>(target.position.x), static_cast<float>(target.position.y), t},
-                          g.targets[key].angle.has_value()});
+                          g.orient_path || g.targets[key].angle.has_value()});
     }
     out.push_back(std::move(p));
   }
