@@ -254,6 +254,18 @@ TEST_CASE(
   CHECK_THAT(collect.err, Contains("plan.json: not found"));
   const CommandResult task = run_animpak("sweep-task " + out);
   CHECK(task.code == 2);
+
+  // A value in range that blows the simulation up fails its run with pack's own message; the other run stands.
+  const CommandResult nan =
+      run_animpak("sweep " + scene + " --out " + out + " --set k_edge=10,1e300 --max-iterations 30" + kRunOptions);
+  CHECK(nan.code == 2);
+  CHECK_THAT(nan.err, Contains("1 of 2 runs failed") && Contains("seed1-k_edge1e+300: ") && Contains("NaN/Inf"));
+  const auto rows = read_csv(fs::path(out) / "runs.csv");
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].at("state") == "done");
+  CHECK_FALSE(rows[0].at("coverage_min").empty());
+  CHECK(rows[1].at("state") == "failed");
+  CHECK_THAT(rows[1].at("message"), Contains("NaN/Inf") && Contains("lower params.dt or the stiffnesses"));
 }
 
 TEST_CASE(
