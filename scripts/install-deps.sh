@@ -21,6 +21,10 @@ packages=(
   # rlottie and Chromium, the players the Lottie and animated SVG exports are held to; python3-jsonschema,
   # the validator the example scenes are held to against docs/scene.schema.json
   catch2 openclipart-svg librsvg2-bin librlottie-dev chromium python3-jsonschema
+  # tests only: a real single-node Slurm (controller, node daemon, client commands, and munge, its
+  # authentication) that the sweep test submits an array job to (tests/sweep/slurm.sh starts and stops the
+  # daemons itself, with its own slurm.conf; the packages' own services are left alone)
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()

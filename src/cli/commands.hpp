@@ -93,6 +93,51 @@ using FrameRenderer =
 
 int pack(const PackOptions& options, const FrameRenderer& render_frames);
 
+/// What every run of a sweep passes to its `pack`, besides its scene and folder (docs/sweeps.md).
+struct SweepPackOptions {
+  std::optional<std::uint64_t> max_iterations;
+  std::string device;              ///< empty: pack's default rule
+  std::string grid_sort = "auto";  ///< auto, host or device
+  double checkpoint_seconds = 60.0;
+  FrameOptions frames;
+};
+
+struct SweepOptions {
+  std::filesystem::path scene;
+  std::filesystem::path out;
+  std::string seeds;                         ///< "1-8", "1,3,5-7"; empty: the scene's seed
+  std::vector<std::string> sets;             ///< "NAME=V1,V2,...": a parameter, slices, count or ELEMENT.count
+  std::optional<int> jobs;                   ///< packs at a time; unset: one per two cores (default_sweep_jobs)
+  bool plan_only = false;                    ///< write the plan and the cluster files, run nothing
+  std::string submit;                        ///< "slurm": submit the plan with sbatch (implies plan_only)
+  int cpus_per_task = 2;                     ///< the CPUs each cluster task asks for
+  std::string node_animpak;                  ///< the animpak the cluster files run; empty: this one's absolute path
+  std::string k8s_image;                     ///< the Indexed Job's image; empty: animpak:VERSION
+  std::string k8s_claim = "animpak-sweeps";  ///< the PersistentVolumeClaim that holds DIR
+  SweepPackOptions pack;
+};
+
+/// Plans a sweep of seeds and scene settings into DIR/plan.json and runs it (or only writes the cluster files).
+int sweep(const SweepOptions& options);
+
+struct SweepTaskOptions {
+  std::filesystem::path dir;
+  std::optional<long long> index;  ///< unset: SLURM_ARRAY_TASK_ID or JOB_COMPLETION_INDEX
+};
+
+/// Runs one run of a sweep's plan (a cluster's array task).
+int sweep_task(const SweepTaskOptions& options);
+
+struct SweepCollectOptions {
+  std::filesystem::path dir;
+};
+
+/// Writes DIR/sweep.html and DIR/runs.csv from the runs of DIR/plan.json.
+int sweep_collect(const SweepCollectOptions& options);
+
+/// Packs a local sweep runs at a time by default: one per two cores, at least one.
+int default_sweep_jobs();
+
 struct DevicesOptions {
   bool verbose = false;  ///< print every device's kernel build log
 };

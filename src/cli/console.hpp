@@ -13,6 +13,10 @@
 
 namespace animpak::cli {
 
+/// `word` (a path, an argument) as one word of a POSIX shell command line: as it is when it holds only plain
+/// path characters, else in single quotes.
+std::string shell_word(const std::string& word);
+
 /// HH:MM:SS.
 std::string clock_text(double seconds);
 

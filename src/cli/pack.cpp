@@ -96,17 +96,6 @@ class Progress {
   double start_, last_print_ = -1e9;
 };
 
-// `path` as one word of a shell command line: quoted when it holds anything but plain path characters.
-std::string shell_word(const std::filesystem::path& path) {
-  const std::string s = path.string();
-  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./+,:=@") ==
-                        std::string::npos)
-    return s;
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 // A packing that stopped on its own (not interrupted) is finished: resuming it would only step it on past
 // its stop, changing it. One stopped by its iteration limit continues under a larger limit.
 bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_iterations) {
@@ -200,7 +189,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     if (finished(checkpoint, options.max_iterations)) {
       std::cerr << "animpak: " << out.string() << " holds a finished packing (stopped after "
                 << checkpoint.state.iteration << " iterations: " << checkpoint.stop_reason
-                << "); nothing to resume, nothing changed. `animpak render " << shell_word(out) << "` renders it again"
+                << "); nothing to resume, nothing changed. `animpak render " << shell_word(out.string())
+                << "` renders it again"
                 << (checkpoint.stop_reason == "max_iterations" ? "; a larger --max-iterations continues it" : "")
                 << "\n";
       return 0;
@@ -322,7 +312,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
               << " lie outside the container after " << world.params.stop.settle_iterations
               << " settling steps; more slices (top-level \"slices\") or a larger params.settle_iterations may help\n";
   if (result.reason == StopReason::interrupted) {
-    std::string command = options.program + " pack --resume " + shell_word(out);
+    std::string command = options.program + " pack --resume " + shell_word(out.string());
     if (options.max_iterations) command += " --max-iterations " + std::to_string(*options.max_iterations);
     std::cerr << "animpak: interrupted; continue with: " << command << "\n";
   }

@@ -223,13 +223,88 @@ class RenderingFrontend final : public Frontend {
         ->check(CLI::Range(8, 20000));
     trajectory_cmd_->add_option("--out", trajectory_.out, "the SVG's file (default: the first DIR's trajectory.svg)");
 
+    add_sweep_commands(app);
+
     pack.add_flag("!--no-render", pack_render_, "do not render frames");
     add_frame_options(pack, pack_frames_);
 
     bench.add_option("--plot", bench_plot_, "draw ms/iteration against vertices into this PNG");
   }
 
+  void add_sweep_commands(CLI::App& app) {
+    sweep_cmd_ = app.add_subcommand(
+        "sweep",
+        "Pack a scene once per seed and per value of the settings given (--set), locally or on a cluster, and "
+        "gather the runs into one page to choose from (docs/sweeps.md)");
+    sweep_cmd_->add_option("SCENE", sweep_.scene, "scene file (.json)");
+    sweep_cmd_->add_option("--out", sweep_.out,
+                           "the sweep's folder: plan.json, runs/ID/ (each run an ordinary packed folder), "
+                           "sweep.html, runs.csv and the cluster files");
+    sweep_cmd_->add_option("--seeds", sweep_.seeds,
+                           "seeds: whole numbers and ranges, separated by commas (1-8, or 1,3,5-7); default: the "
+                           "scene's seed");
+    sweep_cmd_
+        ->add_option("--set", sweep_.sets,
+                     "NAME=V1,V2,...: pack once per value (repeatable: every combination); NAME is a parameter of "
+                     "`animpak params` (k_time), slices, count, or an element's count (NAME.count); each value is "
+                     "checked against the parameter's range before anything runs")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    sweep_cmd_
+        ->add_option("--jobs", sweep_.jobs,
+                     "packs at a time here; default: one per two cores (each pack's OpenCL device uses several), at "
+                     "least one: " +
+                         std::to_string(default_sweep_jobs()) + " on this machine")
+        ->check(CLI::Range(1, 1024));
+    sweep_cmd_->add_flag("--plan-only", sweep_.plan_only,
+                         "write plan.json and the cluster files (slurm.sbatch, k8s-job.yaml, commands.txt) and run "
+                         "nothing");
+    sweep_cmd_
+        ->add_option("--submit", sweep_.submit,
+                     "submit the runs not yet complete to a cluster: slurm (one array job, with sbatch; prints the "
+                     "job id)")
+        ->check(CLI::IsMember({"slurm"}));
+    sweep_cmd_->add_option("--cpus-per-task", sweep_.cpus_per_task, "CPUs each cluster task asks for")
+        ->check(CLI::Range(1, 1024));
+    sweep_cmd_->add_option("--animpak", sweep_.node_animpak,
+                           "the animpak the cluster files run on every node (default: this animpak's absolute path; "
+                           "in k8s-job.yaml: animpak on the image's PATH)");
+    sweep_cmd_->add_option("--k8s-image", sweep_.k8s_image,
+                           "the image of k8s-job.yaml's pods, one that holds animpak (default: animpak:VERSION)");
+    sweep_cmd_->add_option("--k8s-claim", sweep_.k8s_claim,
+                           "the PersistentVolumeClaim k8s-job.yaml mounts at the sweep folder's path");
+    sweep_cmd_->add_option("--max-iterations", sweep_.pack.max_iterations, "each run: stop after this many iterations")
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{100000000}));
+    sweep_cmd_->add_option("--device", sweep_.pack.device,
+                           "each run: 'reference', or part of an OpenCL device's name (as pack --device)");
+    sweep_cmd_->add_option("--grid-sort", sweep_.pack.grid_sort, "each run: auto, host or device (as pack --grid-sort)")
+        ->check(CLI::IsMember({"auto", "host", "device"}));
+    sweep_cmd_
+        ->add_option("--checkpoint-every", sweep_.pack.checkpoint_seconds,
+                     "each run: seconds between the states saved while it packs (as pack --checkpoint-every)")
+        ->check(finite_number() & CLI::Range(0.0, 86400.0));
+    add_frame_options(*sweep_cmd_, sweep_.pack.frames);
+    collect_cmd_ = sweep_cmd_->add_subcommand(
+        "collect", "Gather a sweep's runs into DIR/sweep.html (a card per run, sorted on the page) and DIR/runs.csv");
+    collect_cmd_->add_option("DIR", collect_.dir, "a sweep's folder (animpak sweep --out)")->required();
+
+    task_cmd_ =
+        app.add_subcommand("sweep-task", "Run one run of a sweep's plan: what each task of a cluster's array job runs");
+    task_cmd_->add_option("DIR", task_.dir, "a sweep's folder (animpak sweep --out), with its plan.json")->required();
+    task_cmd_
+        ->add_option("--index", task_.index,
+                     "the run's index in plan.json; default: SLURM_ARRAY_TASK_ID (Slurm) or JOB_COMPLETION_INDEX "
+                     "(Kubernetes)")
+        ->check(CLI::Range(0LL, 100000000LL));
+  }
+
   std::optional<int> run_own_command() override {
+    if (collect_cmd_->parsed()) return sweep_collect(collect_);
+    if (sweep_cmd_->parsed()) {
+      frame_output(sweep_.pack.frames);  // a bad frame option fails before the plan, not in every run
+      return sweep(sweep_);
+    }
+    if (task_cmd_->parsed()) return sweep_task(task_);
     if (inspect_cmd_->parsed()) return inspect(inspect_);
     if (check_cmd_->parsed()) return check(check_);
     if (render_cmd_->parsed()) return render(render_);
@@ -262,6 +337,12 @@ class RenderingFrontend final : public Frontend {
   InspectOptions inspect_;
   CheckOptions check_;
   RenderOptions render_;
+  CLI::App* sweep_cmd_ = nullptr;
+  CLI::App* collect_cmd_ = nullptr;
+  CLI::App* task_cmd_ = nullptr;
+  SweepOptions sweep_;
+  SweepCollectOptions collect_;
+  SweepTaskOptions task_;
   bool pack_render_ = true;
   FrameOptions pack_frames_;
   std::optional<std::filesystem::path> bench_plot_;

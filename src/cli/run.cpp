@@ -231,10 +231,10 @@ int run(int argc, char** argv, std::unique_ptr<Frontend> frontend) {
                        program + " " + std::string(animpak_version) + " (commit " + std::string(build_commit()) + ")");
   app.require_subcommand(1);
   app.footer(
-      "Exit codes: 0 success, 1 usage error, 2 bad input or environment (a file, a folder, a full disk), 3 "
-      "internal error, 4 validate found a device that differs from the reference, 130 pack interrupted by "
-      "Ctrl-C (143 by SIGTERM, 129 by SIGHUP; state.bin holds the state so far; pack --resume DIR continues "
-      "it).");
+      "Exit codes: 0 success, 1 usage error, 2 bad input or environment (a file, a folder, a full disk; a "
+      "sweep's run that failed), 3 internal error, 4 validate found a device that differs from the reference, "
+      "130 pack or sweep interrupted by Ctrl-C (143 by SIGTERM, 129 by SIGHUP; state.bin holds the state so "
+      "far; pack --resume DIR, or the same sweep, continues it).");
 
   // Every option's default in --help; subcommands copy this from the app when they are added.
   app.option_defaults()->always_capture_default();

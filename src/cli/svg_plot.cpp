@@ -40,8 +40,10 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
   }
   const double step = tick_step(hi - lo, 4);
   lo = std::floor(lo / step + 1e-9) * step, hi = std::ceil(hi / step - 1e-9) * step;
-  const double xs = (W - left - right) / (spec.x_max - spec.x_min), ys = (H - top - bottom) / (hi - lo);
-  const auto px = [&](double x) { return left + (x - spec.x_min) * xs; };
+  // On a log axis x is placed by its logarithm.
+  const auto tx = [&](double x) { return spec.log_x ? std::log10(x) : x; };
+  const double xs = (W - left - right) / (tx(spec.x_max) - tx(spec.x_min)), ys = (H - top - bottom) / (hi - lo);
+  const auto px = [&](double x) { return left + (tx(x) - tx(spec.x_min)) * xs; };
   const auto py = [&](double y) { return H - bottom - (y - lo) * ys; };
   std::ostringstream out;
   out.setf(std::ios::fixed);
@@ -57,10 +59,17 @@ std::string plot(const PlotSpec& spec, const std::vector<Series>& series) {
         << "\"/><text class=\"tick\" x=\"" << left - 6 << "\" y=\"" << py(y) + 4 << "\" text-anchor=\"end\">"
         << report_number(y, step < 1 ? int(std::ceil(-std::log10(step) - 1e-9)) : 0) << "</text>\n";
   }
-  const double xstep = tick_step(spec.x_max - spec.x_min, 4);
-  for (double x = spec.x_min; x <= spec.x_max + xstep * 1e-6; x += xstep)
-    out << "<text class=\"tick\" x=\"" << px(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
-        << report_number(x, xstep < 1 ? int(std::ceil(-std::log10(xstep) - 1e-9)) : 0) << "</text>\n";
+  if (spec.log_x) {
+    for (int k = int(std::ceil(std::log10(spec.x_min) - 1e-9)); k <= int(std::floor(std::log10(spec.x_max) + 1e-9));
+         ++k)
+      out << "<text class=\"tick\" x=\"" << px(std::pow(10.0, k)) << "\" y=\"" << H - bottom + 16
+          << "\" text-anchor=\"middle\">" << report_number(std::pow(10.0, k), std::max(0, -k)) << "</text>\n";
+  } else {
+    const double xstep = tick_step(spec.x_max - spec.x_min, 4);
+    for (double x = std::ceil(spec.x_min / xstep - 1e-9) * xstep; x <= spec.x_max + xstep * 1e-6; x += xstep)
+      out << "<text class=\"tick\" x=\"" << px(x) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\">"
+          << report_number(x, xstep < 1 ? int(std::ceil(-std::log10(xstep) - 1e-9)) : 0) << "</text>\n";
+  }
   out << "<line class=\"axis\" x1=\"" << left << "\" x2=\"" << left << "\" y1=\"" << top - 4 << "\" y2=\"" << H - bottom
       << "\"/><line class=\"axis\" x1=\"" << left << "\" x2=\"" << W - right << "\" y1=\"" << H - bottom << "\" y2=\""
       << H - bottom << "\"/>\n";

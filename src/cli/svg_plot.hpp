@@ -25,6 +25,7 @@ struct PlotSpec {
   bool time_axis = true;                               ///< x is the frame time: the scrubber's cursor moves over it
   std::optional<double> y_floor;                       ///< the y axis starts here at most (0 for shares)
   std::string empty_note = "no values in stats.json";  ///< written across a plot without any value
+  bool log_x = false;  ///< x on a logarithmic axis (x_min > 0), ticked at the powers of ten: a sweep's stiffness
 };
 
 /// A line plot 440 × 230 px: axes with round ticks, one polyline per run of values, the main series' points
