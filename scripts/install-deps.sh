@@ -21,11 +21,18 @@ packages=(
   # rlottie and Chromium, the players the Lottie and animated SVG exports are held to; python3-jsonschema,
   # the validator the example scenes are held to against docs/scene.schema.json
   catch2 openclipart-svg librsvg2-bin librlottie-dev chromium python3-jsonschema
-  # tests only: a real single-node Slurm (controller, node daemon, client commands, and munge, its
-  # authentication) that the sweep test submits an array job to (tests/sweep/slurm.sh starts and stops the
-  # daemons itself, with its own slurm.conf; the packages' own services are left alone)
-  slurmctld slurmd slurm-client munge
 )
+# With --tests (scripts/test.sh), also what only the test suite needs: a real single-node Slurm
+# (controller, node daemon, client commands, and munge, its authentication) that the sweep test submits an
+# array job to. tests/sweep/slurm.sh starts and stops the daemons itself, with its own slurm.conf; the
+# packages' own services are kept from starting while they install (policy-rc.d), so a workstation that
+# runs the tests gets no scheduler running in the background.
+test_packages=(slurmctld slurmd slurm-client munge)
+tests=0
+if [ "${1:-}" = "--tests" ]; then
+  tests=1
+  packages+=("${test_packages[@]}")
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -44,4 +51,11 @@ fi
 echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -q
+policy=/usr/sbin/policy-rc.d
+if [ "$tests" -eq 1 ] && [ ! -e "$policy" ]; then
+  # 101: "action not allowed" to invoke-rc.d and deb-systemd-invoke: installed services are not started.
+  printf '#!/bin/sh\nexit 101\n' | "${sudo_cmd[@]}" tee "$policy" >/dev/null
+  "${sudo_cmd[@]}" chmod 755 "$policy"
+  trap '"${sudo_cmd[@]}" rm -f "$policy"' EXIT
+fi
 "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -8,7 +8,7 @@
 # goes back to one object per source for incremental work.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh --tests
 bash scripts/format-check.sh
 for preset in release debug; do
   start=$SECONDS

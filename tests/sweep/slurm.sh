@@ -26,7 +26,7 @@ skip() {
 [ "$(id -u)" -eq 0 ] || skip "not root: slurmd must run as root to start each task as its user"
 for tool in munged slurmctld slurmd sbatch squeue sinfo scontrol; do
   command -v "$tool" >/dev/null ||
-    skip "$tool is not installed (Debian packages munge, slurmctld, slurmd, slurm-client; bash scripts/install-deps.sh)"
+    skip "$tool is not installed (Debian packages munge, slurmctld, slurmd, slurm-client; bash scripts/install-deps.sh --tests)"
 done
 
 work=$(mktemp -d /tmp/animpak-slurm-XXXXXX)
