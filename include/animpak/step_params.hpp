@@ -1,7 +1,7 @@
 // The float constants of one step (paper §5), converted from Params once, in one place that belongs to
-// neither backend (docs/architecture.md, "One block of step constants"): the OpenCL host passes this block
-// to the kernels by value. It is the C struct ForceParams of kernels/shared_types.h, so the kernels read it
-// in the same layout.
+// neither backend (docs/architecture.md, "One block of step constants"): the reference reads its constants
+// from this block and the OpenCL host passes the same block to the kernels by value. It is the C struct
+// ForceParams of kernels/shared_types.h, so the kernels read it in the same layout.
 #pragma once
 
 #include "animpak/params.hpp"

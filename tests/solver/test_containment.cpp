@@ -60,7 +60,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
     b.add_element(slices);
     const test::TinyWorld w = b.build();
     const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    const StepForces f = step_forces(w.topo, w.state, step_params(p), g, nullptr);
     for (int s = 0; s < 26; ++s) {
       std::uint8_t bits = 0;
       float gap = std::numeric_limits<float>::infinity();
@@ -107,7 +107,7 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
     CHECK(edge_crosses_container(w.topo.container, 0.9f, 0.5f, 1.1f, 0.5f));
 
     const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    const StepForces f = step_forces(w.topo, w.state, step_params(p), g, nullptr);
     for (int v = 0; v < 12; ++v) {
       INFO("vertex " << v);
       CHECK(((f.contact[v] & contact_outside) != 0) == (v == 6));

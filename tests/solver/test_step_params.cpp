@@ -1,5 +1,6 @@
-// The one conversion of Params into the step's float block (include/animpak/step_params.hpp), which the
-// kernels read: each field is checked here against the expression ForceParams documents, written out again.
+// The one conversion of Params into the step's float block (include/animpak/step_params.hpp). Both
+// backends read this block, so the equivalence suite cannot see an error in it: each field is checked
+// here against the expression ForceParams documents, written out again.
 #include <catch2/catch.hpp>
 
 #include <initializer_list>
