@@ -36,6 +36,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   std::uint64_t iteration = result.last_good.iteration;
   const auto rebuild = static_cast<std::uint64_t>(params.forces.grid_rebuild_interval);
   const auto check = static_cast<std::uint64_t>(params.stop.check_interval);
+  const auto max_iterations = static_cast<std::uint64_t>(std::max(params.stop.max_iterations, 0));
   // The gap the step's contact test uses (the wall's contact_wall), from the same block.
   const float stop_gap = step_params(params).stop_gap;
   // Nothing overlapping another element and nothing outside the container: what a settling run waits for.
@@ -60,7 +61,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       result.reason = StopReason::interrupted;
       break;
     }
-    if (iteration >= control.max_iterations) {
+    if (iteration >= max_iterations) {
       result.reason = StopReason::max_iterations;
       break;
     }

@@ -137,9 +137,7 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
       "tiny.json", "/"));
   REQUIRE(w.elements.size() == 1);
   auto backend = make_reference_backend(w.topology, w.state, w.params);
-  RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
-  const RunResult r = run_simulation(*backend, w.params, control);
+  const RunResult r = run_simulation(*backend, w.params, RunControl{});
   INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, gap "
                    << r.last.max_slice_gap << ", g " << r.last.min_growth << " to " << r.last.max_growth);
   REQUIRE((r.reason == StopReason::gap || r.reason == StopReason::stalled));
