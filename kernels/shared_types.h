@@ -1,5 +1,6 @@
 /* Structs and constants shared by the OpenCL kernels and the C++ host (docs/architecture.md, "Layout shared by host and kernels"). The
- * kernels see this file first in every program; the host includes it from src/solver/opencl. Only
+ * kernels see this file first in every program; the host includes it from src/solver/opencl, and the
+ * solver stage for ForceParams (include/animpak/step_params.hpp), the block both backends read. Only
  * 4-byte scalars, so both compilers lay the structs out alike; the host static_asserts the sizes and
  * offsets (src/solver/opencl/layout.cpp) and that the constants match VertexFlag and SpringClass. */
 #ifndef ANIMPAK_KERNELS_SHARED_TYPES_H
@@ -97,8 +98,9 @@ typedef struct {
   ap_int band_segments, cell_start, cell_segments;
 } ContainerIndexInfo;
 
-/* Every Params constant a kernel uses, converted once to float by the host exactly as the reference
- * converts it (static_cast<float>, products formed in double first). */
+/* Every Params constant of the step's arithmetic, converted once to float (static_cast<float>, products
+ * formed in double first) by step_params (src/solver/step_params.cpp): the kernels get it by value, the
+ * reference reads the same block. */
 typedef struct {
   ap_float k_repulsion, repulsion_epsilon;
   ap_float k_wall;                      /* wall_repulsion * k_repulsion */

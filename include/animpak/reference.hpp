@@ -4,9 +4,10 @@
 // no double intermediates) and every force is GATHERED: a vertex's force is computed from one
 // snapshot of all positions and written only to that vertex.
 //
-// Float constants: each double in Params is converted once with static_cast<float> (products such as
-// the velocity cap are formed in double first, then converted), exactly as the host hands them to the
-// kernels.
+// Float constants: every function of the step reads them from the block step_params makes
+// (include/animpak/step_params.hpp), each double of Params converted once, the same block the OpenCL host
+// hands to the kernels; none converts Params itself. Only the collision grid's cell size and far-field
+// switch, which shape the grid rather than enter the step's arithmetic, come from Params.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include "animpak/simulation.hpp"
 #include "animpak/spring_class.hpp"
 #include "animpak/state.hpp"
+#include "animpak/step_params.hpp"
 
 namespace animpak::reference {
 
@@ -117,7 +119,7 @@ struct RepulsionResult {
 /// `overlapping` (Eq. 3 takes over) or v is not a boundary vertex; `closest` is computed for every
 /// boundary vertex.
 /// repulsion.cpp.
-RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
+RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const ForceParams& params,
                                 const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
                                 const std::vector<std::int32_t>& far, bool overlapping);
 
@@ -190,23 +192,24 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
 /// Eq. 3, k_ovr Σ (p_i − x) over centroids p_i of v's incident slice triangles, plus, when v (or a point
 /// between slices next to it) is inside another element, k_ovr_depth · (out_x, out_y), its way out, so
 /// the push grows with depth (docs/parameters.md). overlap.cpp.
-Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
+Vec3f overlap_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v,
                     const OverlapResult& overlap);
 
-/// Stiffness of one spring class (Eq. 2's k_edg per class).
-float spring_stiffness(const Params& params, SpringClass c);
+/// Stiffness of one spring class (Eq. 2's k_edg per class): params.k_spring[c], 0 for an unknown class (as
+/// kernels/springs.cl reads it).
+float spring_stiffness(const ForceParams& params, SpringClass c);
 
 /// Eq. 2 summed over v's CSR slots in slot order. springs.cpp.
-Vec3f spring_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+Vec3f spring_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
 /// The fold guard (docs/parameters.md, "Folds"): for every slice triangle of v whose signed area (oriented
 /// as its rest copy's) is below fold_area · g² · its rest copy's, k_fold · the height it misses, along the
 /// normal of the edge opposite v; summed in v's incident-triangle order. Zero with k_fold 0. springs.cpp.
-Vec3f fold_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+Vec3f fold_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
 /// Eq. 2 for the target-point spring of an anchor vertex (rest length 0, class target); zero for
 /// vertices without a target. target.cpp.
-Vec3f target_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+Vec3f target_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
 /// Where a point lies against the container (x, y only: the container is the same at every t).
 struct ContainerQuery {
@@ -227,10 +230,10 @@ bool edge_crosses_container(const ContainerGeometry& box, float px, float py, fl
 /// The container's force on a point, from its query: outside, Eq. 4, k_bdr (p_b − x) in x, y; inside, for
 /// a boundary vertex (`boundary`), the wall repels like a neighbour, wall_repulsion · k_rpl · u/|u| ·
 /// 1/(ε + |u|²) with u = x − p_b (Eq. 1's form; docs/parameters.md, "Containment"). boundary.cpp.
-Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, float py, bool boundary);
+Vec3f boundary_force(const ForceParams& params, const ContainerQuery& q, float px, float py, bool boundary);
 
 /// The container's force on vertex v. boundary.cpp.
-Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+Vec3f boundary_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
 /// The wall as the mirror image of the element (docs/parameters.md, "Containment"): for a boundary vertex
 /// inside the container within wall_range of its nearest wall point q (`wall`, its query with the nearest
@@ -239,19 +242,19 @@ Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& 
 /// across the wall's tangent at q (s − 2 (s·n) n in x, y with n = (x − q)/|x − q|; t unchanged) and
 /// weighted wall_mirror · k_rpl. The reflected element is a neighbour at twice the wall distance, so the
 /// wall presses as a neighbour would. Zero otherwise, and when wall_mirror is 0. repulsion.cpp.
-Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
-                        std::int32_t v, const ContainerQuery& wall);
+Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const ForceParams& params,
+                        const CollisionGrid& grid, std::int32_t v, const ContainerQuery& wall);
 
 /// Current centroid of every slice (mean of its vertices in index order), for Eq. 5. torsion.cpp.
 void slice_centroids(const Topology& topo, const SimState& state, std::vector<float>& cx, std::vector<float>& cy);
 
 /// Eq. 5 with the slice centroid (cx, cy) of v's slice, at k_target_angle for a vertex_hold_angle vertex
 /// and k_torsion otherwise. torsion.cpp.
-Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v, float cx,
+Vec3f torsion_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v, float cx,
                     float cy);
 
 /// Eq. 6: k_tmp (rest_t − t) along t. temporal.cpp.
-Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v);
+Vec3f temporal_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
 // ---- one step ------------------------------------------------------------------------------------------
 
@@ -281,11 +284,11 @@ struct StepForces {
 };
 
 /// Eq. 7 for every vertex from one snapshot of positions. forces.cpp.
-StepForces step_forces(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
-                       ForceBreakdown* out);
+StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
+                       const CollisionGrid& grid, ForceBreakdown* out);
 
 /// Symplectic Euler with the velocity cap (§5). integrate.cpp.
-void integrate(const ForceField& force, const Params& params, SimState& state);
+void integrate(const ForceField& force, const ForceParams& params, SimState& state);
 
 // ---- constraints (§5.2), constraints.cpp ------------------------------------------------------------------
 
@@ -320,9 +323,6 @@ enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shra
 /// boost_speed × the velocity cap per step) unless that is below 1. Not in the paper, which grows every
 /// free slice at one rate.
 float growth_multiplier(float gap, float boost_gap, float boost, float speed_limit);
-/// boost_speed · velocity_cap · Δt² as float (products in double): the largest outward step of an outline
-/// vertex that the room's boost may ask for (growth_multiplier's speed_limit).
-float boost_step(const Params& params);
 
 /// Each slice's own next g from its contacts (docs/parameters.md, "Growth"), into `proposed`: a slice
 /// with a vertex outside the container, or one that overlaps an element no larger there (contact_yield),
@@ -331,12 +331,12 @@ float boost_step(const Params& params);
 /// Δt_sim × growth_multiplier of its gap. Without `growing` (the settling phase) no slice grows, and every overlapping or spilling slice
 /// shrinks by settle_shrink_rate · Δt_sim.
 void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const std::vector<float>& closest,
-                    const Params& params, bool growing, const SimState& state, std::vector<float>& proposed);
+                    const ForceParams& params, bool growing, const SimState& state, std::vector<float>& proposed);
 
 /// Every slice's new g: its proposal, limited to growth_ratio × the smallest proposal of its element and
 /// to neighbour_growth_ratio × the proposal of each time neighbour. `changed` marks what moved; returns
 /// how many slices grew.
-std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
+std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const ForceParams& params,
                          SimState& state, std::vector<std::uint8_t>& changed);
 
 /// Recomputes the rest length of every spring with an end on a slice marked in `changed`.

@@ -8,8 +8,8 @@
 
 namespace animpak {
 
+/// How a run talks to its caller; what stops it is in Params (params.stop).
 struct RunControl {
-  std::uint64_t max_iterations = 0;                     ///< absolute iteration count to stop at
   const std::atomic<bool>* interrupt = nullptr;         ///< set by a signal handler (Ctrl-C)
   std::function<void(const StepStatistics&)> on_check;  ///< progress, after every statistics check
   /// Called with the state at most every `checkpoint_seconds` of wall time (0: at every check), on a
@@ -27,8 +27,9 @@ struct RunResult {
 };
 
 /// Steps until the largest per-slice gap falls below params.stop.stop_gap, every g passes
-/// params.stop.stop_growth (when set), the iteration count reaches control.max_iterations, an interrupt
-/// arrives, or a NaN/Inf appears (then last_good holds the last finite state).
+/// params.stop.stop_growth (when set), the iteration count reaches params.stop.max_iterations (an absolute
+/// count: a resumed state's earlier steps count; a state already there, or a limit below 1, steps no more),
+/// an interrupt arrives, or a NaN/Inf appears (then last_good holds the last finite state).
 RunResult run_simulation(Backend& backend, const Params& params, const RunControl& control);
 
 }  // namespace animpak

@@ -224,6 +224,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     }
   }();
   World& world = loaded.world;
+  // --max-iterations replaces the scene's limit for this run; run_simulation stops there (an absolute count).
   if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
   // A resumed run repeats no set-up report (the seeding it did not do again), only its warnings.
   for (const std::string& note : world.notes)
@@ -246,7 +247,6 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   Progress progress(world.params, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
                     options.verbose);
   RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(world.params.stop.max_iterations);
   control.interrupt = &interrupted;
   control.on_check = [&](const StepStatistics& st) { progress(st); };
   // The state so far, every --checkpoint-every seconds: a run killed outright (SIGKILL, a power cut)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "animpak/step_params.hpp"
+
 namespace animpak {
 
 const char* stop_reason_name(StopReason r) {
@@ -34,6 +36,9 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
   std::uint64_t iteration = result.last_good.iteration;
   const auto rebuild = static_cast<std::uint64_t>(params.forces.grid_rebuild_interval);
   const auto check = static_cast<std::uint64_t>(params.stop.check_interval);
+  const auto max_iterations = static_cast<std::uint64_t>(std::max(params.stop.max_iterations, 0));
+  // The gap the step's contact test uses (the wall's contact_wall), from the same block.
+  const float stop_gap = step_params(params).stop_gap;
   // Nothing overlapping another element and nothing outside the container: what a settling run waits for.
   const auto clean_step = [](const StepStatistics& st) {
     return st.overlapping_vertices == 0 && st.outside_vertices == 0;
@@ -56,7 +61,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       result.reason = StopReason::interrupted;
       break;
     }
-    if (iteration >= control.max_iterations) {
+    if (iteration >= max_iterations) {
       result.reason = StopReason::max_iterations;
       break;
     }
@@ -110,7 +115,7 @@ RunResult run_simulation(Backend& backend, const Params& params, const RunContro
       if (!stalled) mark_progress(false);
     }
     // A clean stop is `gap` when every slice touches a neighbour or the wall, `stalled` otherwise.
-    const bool touching = result.last.max_slice_gap < static_cast<float>(params.stop.stop_gap);
+    const bool touching = result.last.max_slice_gap < stop_gap;
     if (settling_since == 0 && (stalled || touching)) {
       // Secondary elements (docs/parameters.md, "Secondary elements") wait for the primary ones to stop;
       // then they grow, and the stall test starts a fresh window for them.

@@ -18,7 +18,7 @@ struct Coverage {
 Coverage check_forces(const TinyWorld& w, const Params& params, const std::string& label) {
   const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
   reference::ForceBreakdown ref_parts;
-  const reference::StepForces ref = reference::step_forces(w.topo, w.state, params, grid, &ref_parts);
+  const reference::StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, &ref_parts);
   Coverage c;
   for (std::size_t v = 0; v < ref.contact.size(); ++v) {
     c.inside += (ref.contact[v] & contact_inside) != 0;
@@ -299,9 +299,9 @@ TEST_CASE("forces: the wall as the element's mirror image, at the outline, a hol
     // Not vacuous: the mirror changes the wall's force on some vertices.
     const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
     reference::ForceBreakdown on, off;
-    reference::step_forces(w.topo, w.state, params, grid, &on);
+    reference::step_forces(w.topo, w.state, step_params(params), grid, &on);
     params.forces.wall_mirror = 0.0;
-    reference::step_forces(w.topo, w.state, params, grid, &off);
+    reference::step_forces(w.topo, w.state, step_params(params), grid, &off);
     int changed = 0;
     for (std::size_t v = 0; v < on.boundary.x.size(); ++v)
       changed += on.boundary.x[v] != off.boundary.x[v] || on.boundary.t[v] != off.boundary.t[v];
@@ -410,7 +410,7 @@ TEST_CASE("forces: folded and squeezed slice triangles, the fold guard", "[equiv
       p.forces.k_fold = 200.0;
       int folded = 0;
       for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
-        const Vec3f f = reference::fold_force(w.topo, w.state, p, v);
+        const Vec3f f = reference::fold_force(w.topo, w.state, step_params(p), v);
         folded += f.x != 0.0f || f.y != 0.0f;
       }
       CHECK(folded > w.topo.vertex_count() / 4);  // the guard acts on many vertices, or this says little

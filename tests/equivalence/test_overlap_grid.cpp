@@ -108,7 +108,7 @@ TEST_CASE("overlap broadphase: a device build that outgrows its room drops the g
     const TinyWorld w = random_world(seed, shape);
     const Params params;
     const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
-    const reference::StepForces ref = reference::step_forces(w.topo, w.state, params, grid, nullptr);
+    const reference::StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, nullptr);
     overlapping += static_cast<int>(
         std::count_if(ref.contact.begin(), ref.contact.end(), [](auto c) { return (c & contact_overlap) != 0; }));
     for (const DeviceChoice& d : devices) {

@@ -53,13 +53,11 @@ TEST_CASE("run_simulation: three stars in the heart pack to the gap criterion wi
   CHECK(initial < 0.03);
 
   auto backend = make_reference_backend(w.topology, w.state, w.params);
-  RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
-  const RunResult r = run_simulation(*backend, w.params, control);
+  const RunResult r = run_simulation(*backend, w.params, RunControl{});
   INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, gap "
                    << r.last.max_slice_gap);
   REQUIRE(r.reason == StopReason::gap);
-  CHECK(r.last_good.iteration < control.max_iterations);
+  CHECK(r.last_good.iteration < static_cast<std::uint64_t>(w.params.stop.max_iterations));
   CHECK(r.last.max_slice_gap < static_cast<float>(w.params.stop.stop_gap));
 
   w.state = r.last_good;

@@ -60,7 +60,7 @@ TEST_CASE("containment: a slice whose boundary touches the wall is flagged and s
     b.add_element(slices);
     const test::TinyWorld w = b.build();
     const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    const StepForces f = step_forces(w.topo, w.state, step_params(p), g, nullptr);
     for (int s = 0; s < 26; ++s) {
       std::uint8_t bits = 0;
       float gap = std::numeric_limits<float>::infinity();
@@ -107,7 +107,7 @@ TEST_CASE("containment: a boundary edge across a reflex corner of the container 
     CHECK(edge_crosses_container(w.topo.container, 0.9f, 0.5f, 1.1f, 0.5f));
 
     const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
-    const StepForces f = step_forces(w.topo, w.state, p, g, nullptr);
+    const StepForces f = step_forces(w.topo, w.state, step_params(p), g, nullptr);
     for (int v = 0; v < 12; ++v) {
       INFO("vertex " << v);
       CHECK(((f.contact[v] & contact_outside) != 0) == (v == 6));
@@ -137,9 +137,7 @@ TEST_CASE("containment: a lone element in a large container stops at the wall, i
       "tiny.json", "/"));
   REQUIRE(w.elements.size() == 1);
   auto backend = make_reference_backend(w.topology, w.state, w.params);
-  RunControl control;
-  control.max_iterations = static_cast<std::uint64_t>(w.params.stop.max_iterations);
-  const RunResult r = run_simulation(*backend, w.params, control);
+  const RunResult r = run_simulation(*backend, w.params, RunControl{});
   INFO("stopped: " << stop_reason_name(r.reason) << " after " << r.last_good.iteration << " iterations, gap "
                    << r.last.max_slice_gap << ", g " << r.last.min_growth << " to " << r.last.max_growth);
   REQUIRE((r.reason == StopReason::gap || r.reason == StopReason::stalled));

@@ -373,14 +373,14 @@ TEST_CASE("growth: the room's boost moves no outline faster than boost_speed × 
   params.growth.boost_gap = 0.01;
   params.growth.boost_speed = 0.5;
   const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
-  const float largest = reference::boost_step(params);
+  const float largest = step_params(params).boost_step;
   CHECK(largest == static_cast<float>(0.5 * params.forces.velocity_cap * params.forces.dt * params.forces.dt));
   std::vector<float> closest(topo.vertex_count(), 1.0f);  // far from everything
   std::vector<std::uint8_t> contact(topo.vertex_count(), 0);
   for (const double cap : {1e6, 0.035, 1e-9}) {
     INFO("velocity_cap " << cap);
     params.forces.velocity_cap = cap;
-    const float limit_step = reference::boost_step(params);
+    const float limit_step = step_params(params).boost_step;
     SimState state = w.state;
     std::fill(state.growth.begin(), state.growth.end(), 1.5f);
     std::vector<std::uint8_t> changed;

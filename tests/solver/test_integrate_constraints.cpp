@@ -35,7 +35,7 @@ TEST_CASE("integrate: velocity first, then position from the new velocity") {
   p.forces.velocity_cap = 10;  // cap 5: not reached
   test::TinyWorld w = loose_points(1);
   w.state.vx[0] = 0.25f;
-  integrate(field({{1.0f, -0.5f, 0.25f}}), p, w.state);
+  integrate(field({{1.0f, -0.5f, 0.25f}}), step_params(p), w.state);
   CHECK(w.state.vx[0] == 0.75f);
   CHECK(w.state.vy[0] == -0.25f);
   CHECK(w.state.vt[0] == 0.125f);
@@ -54,7 +54,7 @@ TEST_CASE("integrate: the cap bounds the 3D speed and keeps the direction") {
   for (int v = 0; v < 200; ++v) forces.push_back({force(rng), force(rng), v % 10 == 0 ? 0.0f : force(rng)});
   forces[0] = {1e-3f, 0.0f, 0.0f};  // slow: untouched by the cap
   const test::TinyWorld before = w;
-  integrate(field(forces), p, w.state);
+  integrate(field(forces), step_params(p), w.state);
   for (int v = 0; v < 200; ++v) {
     INFO(v);
     const double speed = std::sqrt(double(w.state.vx[v]) * w.state.vx[v] + double(w.state.vy[v]) * w.state.vy[v] +

@@ -56,14 +56,14 @@ TEST_CASE("repulsion: Eq. 1 from the exact closest point of a near triangle") {
   const Query q = query(w, g, 0);
   REQUIRE(q.near.size() == 1);
   REQUIRE(q.far.empty());
-  const RepulsionResult r = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, false);
+  const RepulsionResult r = repulsion_force(w.topo, w.state, step_params(p), g, 0, q.near, q.far, false);
   // u = x − (0.5, 0.5, 0.53125) = (0, 0, −0.03125): F = 10 · (0, 0, −1) / (1 + 0.03125²).
   CHECK(r.force.x == 0.0f);
   CHECK(r.force.y == 0.0f);
   CHECK(r.force.t == Approx(-10.0 / (1.0 + 0.0009765625)).epsilon(1e-6));
   CHECK(r.closest == 0.03125f);
 
-  const RepulsionResult inside = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, true);
+  const RepulsionResult inside = repulsion_force(w.topo, w.state, step_params(p), g, 0, q.near, q.far, true);
   CHECK((inside.force.x == 0.0f && inside.force.y == 0.0f && inside.force.t == 0.0f));
   CHECK(inside.closest == 0.03125f);  // growth and the stop test still see the distance
 }
@@ -75,7 +75,7 @@ TEST_CASE("repulsion: Eq. 1 from the centroid of a far triangle") {
   const Query q = query(w, g, 0);
   REQUIRE(q.near.empty());
   REQUIRE(q.far.size() == 1);
-  const RepulsionResult r = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, false);
+  const RepulsionResult r = repulsion_force(w.topo, w.state, step_params(p), g, 0, q.near, q.far, false);
   const double ux = 0.5 - g.cx[0], uy = 0.5 - g.cy[0], ut = 0.5 - g.ct[0];
   const double d2 = ux * ux + uy * uy + ut * ut, s = 10.0 / std::sqrt(d2) / (1.0 + d2);
   CHECK(r.force.x == Approx(ux * s).epsilon(1e-5));
@@ -108,7 +108,7 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
   const CollisionGrid each = build_collision_grid(w.topo, w.state, p);
   Query q = query(w, each, 0);
   REQUIRE(q.far.size() == 2);
-  const RepulsionResult r0 = repulsion_force(w.topo, w.state, p, each, 0, q.near, q.far, false);
+  const RepulsionResult r0 = repulsion_force(w.topo, w.state, step_params(p), each, 0, q.near, q.far, false);
   double expected0[3] = {0, 0, 0};
   for (int tri = 0; tri < 2; ++tri) term(0.5 - each.cx[tri], 0.5 - each.cy[tri], 0.5 - each.ct[tri], 1.0, expected0);
   CHECK(r0.force.x == Approx(expected0[0]).epsilon(1e-5));
@@ -118,7 +118,7 @@ TEST_CASE("repulsion: a far cell's triangles of one element act from their mean 
   const CollisionGrid cells = build_collision_grid(w.topo, w.state, p);
   q = query(w, cells, 0);
   REQUIRE(q.far.size() == 1);
-  const RepulsionResult r1 = repulsion_force(w.topo, w.state, p, cells, 0, q.near, q.far, false);
+  const RepulsionResult r1 = repulsion_force(w.topo, w.state, step_params(p), cells, 0, q.near, q.far, false);
   const double mx = (cells.cx[0] + cells.cx[1]) / 2, my = (cells.cy[0] + cells.cy[1]) / 2,
                mt = (cells.ct[0] + cells.ct[1]) / 2;
   double expected1[3] = {0, 0, 0};
@@ -155,7 +155,7 @@ TEST_CASE("repulsion: near terms add into four partial sums by grid slot mod 4, 
   const Query q = query(w, g, 0);
   REQUIRE(q.near.size() == 11);
   REQUIRE(q.far.size() == 1);
-  const RepulsionResult r = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, false);
+  const RepulsionResult r = repulsion_force(w.topo, w.state, step_params(p), g, 0, q.near, q.far, false);
 
   const auto pt = [&](std::int32_t i) { return Vec3f{w.state.x[i], w.state.y[i], w.state.t[i]}; };
   const float eps = static_cast<float>(p.forces.repulsion_epsilon);
@@ -192,7 +192,7 @@ TEST_CASE("repulsion: interior vertices get none") {
   w.topo.flags[0] = 0;
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   const Query q = query(w, g, 0);
-  const RepulsionResult r = repulsion_force(w.topo, w.state, p, g, 0, q.near, q.far, false);
+  const RepulsionResult r = repulsion_force(w.topo, w.state, step_params(p), g, 0, q.near, q.far, false);
   CHECK((r.force.x == 0.0f && r.force.y == 0.0f && r.force.t == 0.0f));
   CHECK(std::isinf(r.closest));
 }
@@ -289,8 +289,8 @@ TEST_CASE("overlap: a vertex two cells deep inside another element stays flagged
   CHECK(r.overlap);
   CHECK(r.inside);
   // The depth term of the overlap force grows with depth: it points to B's outline, 0.095 away.
-  const Vec3f f = overlap_force(w.topo, w.state, p, v, r);
-  const Vec3f eq3 = overlap_force(w.topo, w.state, p, v, OverlapResult{true, false});
+  const Vec3f f = overlap_force(w.topo, w.state, step_params(p), v, r);
+  const Vec3f eq3 = overlap_force(w.topo, w.state, step_params(p), v, OverlapResult{true, false});
   CHECK(std::hypot(f.x - eq3.x, f.y - eq3.y) == Approx(p.forces.k_overlap_depth * 0.095).epsilon(1e-4));
 }
 

@@ -64,11 +64,7 @@ Params run_params() {
   return p;
 }
 
-RunResult run(Backend& backend, const Params& p) {
-  RunControl control;
-  control.max_iterations = 100000;
-  return run_simulation(backend, p, control);
-}
+RunResult run(Backend& backend, const Params& p) { return run_simulation(backend, p, RunControl{}); }
 
 }  // namespace
 
@@ -164,9 +160,9 @@ TEST_CASE("run: the stall test's marks are saved, so a resumed run tests against
     return growing(1.0 + 0.01 * double(std::min<std::uint64_t>(i, 430)), 0.02f, settling ? 0 : 3);
   };
   ScriptedBackend first(script);
-  RunControl control;
-  control.max_iterations = 470;
-  const RunResult part = run_simulation(first, p, control);
+  Params stopped_early = p;
+  stopped_early.stop.max_iterations = 470;
+  const RunResult part = run(first, stopped_early);
   REQUIRE(part.reason == StopReason::max_iterations);
   // Marks at 400, 420, 440, 460: the newest and the three before it.
   CHECK(part.last_good.mark_iteration == 460);
@@ -195,10 +191,24 @@ TEST_CASE("run: a stall window of 0 turns the stall test off") {
   p.stop.stall_window = 0;
   p.stop.max_iterations = 1000;
   ScriptedBackend b([](std::uint64_t, bool) { return growing(2.0, 0.02f, 0); });
-  RunControl control;
-  control.max_iterations = 1000;
-  const RunResult r = run_simulation(b, p, control);
+  const RunResult r = run(b, p);
   CHECK(r.reason == StopReason::max_iterations);
+  CHECK(r.last_good.iteration == 1000);
+}
+
+TEST_CASE("run: params.stop.max_iterations counts from the start of the packing, not of this run") {
+  Params p = run_params();
+  p.stop.stall_window = 0;
+  ScriptedBackend b([](std::uint64_t, bool) { return growing(2.0, 0.02f, 0); });
+  for (int i = 0; i < 300; ++i) b.step();  // a resumed state
+  p.stop.max_iterations = 350;
+  const RunResult r = run(b, p);
+  CHECK(r.reason == StopReason::max_iterations);
+  CHECK(r.last_good.iteration == 350);
+  p.stop.max_iterations = 320;  // already past it: no step
+  const RunResult again = run(b, p);
+  CHECK(again.reason == StopReason::max_iterations);
+  CHECK(again.last_good.iteration == 350);
 }
 
 TEST_CASE("run: with secondary elements, the first stop starts their growth and a fresh stall window") {

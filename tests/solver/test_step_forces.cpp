@@ -47,8 +47,8 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
   const test::TinyWorld w = two_tubes(0.52f, 0.05f, 5);  // 0.02 apart
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   ForceBreakdown parts;
-  const StepForces f = step_forces(w.topo, w.state, p, g, &parts);
-  const StepForces again = step_forces(w.topo, w.state, p, g, nullptr);
+  const StepForces f = step_forces(w.topo, w.state, step_params(p), g, &parts);
+  const StepForces again = step_forces(w.topo, w.state, step_params(p), g, nullptr);
   std::vector<float> cx, cy;
   slice_centroids(w.topo, w.state, cx, cy);
   std::vector<std::int32_t> near, far;
@@ -66,21 +66,21 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
     repulsion_near_slots(g, q, w.topo.element[v], near);
     repulsion_far_slots(g, q, w.topo.element[v], far);
     CHECK((f.contact[v] & contact_overlap) == 0);
-    const RepulsionResult rr = repulsion_force(w.topo, w.state, p, g, v, near, far, false);
+    const RepulsionResult rr = repulsion_force(w.topo, w.state, step_params(p), g, v, near, far, false);
     CHECK(same(r, rr.force));
     // The slice gap counts the container's wall as a neighbour.
     const ContainerQuery wall = container_query(w.topo.container, q.x, q.y, true);
     const float d = std::sqrt(wall.distance2);
     const float expected = std::min(d + d, rr.closest);  // the wall's mirror image is twice as far; no overlap
     CHECK(f.closest[v] == expected);
-    CHECK(same(e, spring_force(w.topo, w.state, p, v)));
-    CHECK(same(tg, target_force(w.topo, w.state, p, v)));
-    const Vec3f point = boundary_force(w.topo, w.state, p, v),
-                mirror = wall_mirror_force(w.topo, w.state, p, g, v, wall);
+    CHECK(same(e, spring_force(w.topo, w.state, step_params(p), v)));
+    CHECK(same(tg, target_force(w.topo, w.state, step_params(p), v)));
+    const Vec3f point = boundary_force(w.topo, w.state, step_params(p), v),
+                mirror = wall_mirror_force(w.topo, w.state, step_params(p), g, v, wall);
     CHECK(same(b, Vec3f{point.x + mirror.x, point.y + mirror.y, point.t + mirror.t}));
     CHECK(same(o, Vec3f{}));
-    CHECK(same(to, torsion_force(w.topo, w.state, p, v, cx[w.topo.slice[v]], cy[w.topo.slice[v]])));
-    CHECK(same(tm, temporal_force(w.topo, w.state, p, v)));
+    CHECK(same(to, torsion_force(w.topo, w.state, step_params(p), v, cx[w.topo.slice[v]], cy[w.topo.slice[v]])));
+    CHECK(same(tm, temporal_force(w.topo, w.state, step_params(p), v)));
     if (f.closest[v] < 0.04f) ++with_neighbour;
   }
   CHECK(with_neighbour > 26);  // the facing sides see each other
@@ -93,7 +93,7 @@ TEST_CASE("step_forces: a vertex inside another element gets overlap instead of 
   const test::TinyWorld w = two_tubes(0.47f, 0.07f, 6);
   const CollisionGrid g = build_collision_grid(w.topo, w.state, p);
   ForceBreakdown parts;
-  const StepForces f = step_forces(w.topo, w.state, p, g, &parts);
+  const StepForces f = step_forces(w.topo, w.state, step_params(p), g, &parts);
   int inside = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
     INFO("vertex " << v);
@@ -107,7 +107,7 @@ TEST_CASE("step_forces: a vertex inside another element gets overlap instead of 
     slice_boxes(w.topo, w.state, test::tangents(w), boxes);
     OverlapGrid grid;
     build_overlap_grid(w.topo, boxes, grid);
-    CHECK(same(parts.overlap.at(v), overlap_force(w.topo, w.state, p, v,
+    CHECK(same(parts.overlap.at(v), overlap_force(w.topo, w.state, step_params(p), v,
                                                   overlap_test(w.topo, w.state, boxes, grid, test::tangents(w), v,
                                                                p.forces.interval_points))));
     CHECK(f.closest[v] == 0.0f);  // an overlapping vertex touches

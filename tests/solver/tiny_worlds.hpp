@@ -20,8 +20,9 @@ inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8
                               const std::vector<float>& closest, const Params& params, bool growing, SimState& state,
                               std::vector<std::uint8_t>& changed) {
   std::vector<float> proposed;
-  reference::propose_growth(topo, contact, closest, params, growing, state, proposed);
-  return reference::grow_slices(topo, proposed, params, state, changed);
+  const ForceParams step = step_params(params);
+  reference::propose_growth(topo, contact, closest, step, growing, state, proposed);
+  return reference::grow_slices(topo, proposed, step, state, changed);
 }
 inline std::int32_t grow_step(const Topology& topo, const std::vector<std::uint8_t>& contact, const Params& params,
                               bool growing, SimState& state, std::vector<std::uint8_t>& changed) {

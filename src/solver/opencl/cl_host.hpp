@@ -45,9 +45,6 @@ std::string device_build_options(const cl::Device& device);
 /// Builds program_source() for `device`; OpenclError carrying the device name and full log on failure.
 cl::Program build_program(const cl::Context& context, const cl::Device& device);
 
-/// Params as the kernels see them: each double converted once to float exactly as the reference does.
-ForceParams force_params(const Params& params);
-
 /// The grid description for `triangles` envelope triangles (cells per axis as reference::grid_cells_per_axis).
 GridInfo grid_info(const Params& params, std::int32_t triangles);
 

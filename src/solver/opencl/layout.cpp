@@ -1,5 +1,6 @@
 // The host side of kernels/shared_types.h: the layouts and constants the kernels rely on are checked
-// here at compile time, and Params is converted to the kernels' floats in exactly one place.
+// here at compile time. ForceParams, the step's float constants, comes from step_params
+// (include/animpak/step_params.hpp), the one conversion of Params both backends read.
 #include <cstddef>
 
 #include "animpak/curve.hpp"
@@ -36,42 +37,6 @@ static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == re
               AP_GROWTH_HELD == reference::growth_held);
 static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);
 static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
-
-ForceParams force_params(const Params& params) {
-  ForceParams p{};
-  p.k_repulsion = static_cast<float>(params.forces.k_repulsion);
-  p.repulsion_epsilon = static_cast<float>(params.forces.repulsion_epsilon);
-  p.k_wall = static_cast<float>(params.forces.wall_repulsion * params.forces.k_repulsion);
-  for (int c = 0; c < AP_SPRING_CLASSES; ++c)
-    p.k_spring[c] = reference::spring_stiffness(params, static_cast<SpringClass>(c));
-  p.k_target = static_cast<float>(params.forces.k_target);
-  p.k_overlap = static_cast<float>(params.forces.k_overlap);
-  p.k_overlap_depth = static_cast<float>(params.forces.k_overlap_depth);
-  p.k_boundary = static_cast<float>(params.forces.k_boundary);
-  p.k_torsion = static_cast<float>(params.forces.k_torsion);
-  p.k_temporal = static_cast<float>(params.forces.k_temporal);
-  p.dt = static_cast<float>(params.forces.dt);
-  // Products in double first, then one conversion (integrate.cpp, growth.cpp).
-  p.velocity_cap = static_cast<float>(params.forces.velocity_cap * params.forces.dt);
-  p.growth_step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
-  p.shrink_step = static_cast<float>(params.growth.shrink_rate * params.forces.dt);
-  p.settle_shrink_step = static_cast<float>(params.growth.settle_shrink_rate * params.forces.dt);
-  p.growth_ratio = static_cast<float>(params.growth.growth_ratio);
-  p.neighbour_growth_ratio = static_cast<float>(params.growth.neighbour_growth_ratio);
-  p.max_growth = static_cast<float>(params.growth.max_growth);
-  p.stop_gap = static_cast<float>(params.stop.stop_gap);
-  p.k_target_angle = static_cast<float>(params.forces.k_target_angle);
-  p.wall_range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
-  p.interval_points = params.forces.interval_points;
-  p.motion_curve = params.forces.motion_curve;
-  p.k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
-  p.k_fold = static_cast<float>(params.forces.k_fold);
-  p.fold_area = static_cast<float>(params.forces.fold_area);
-  p.growth_boost = static_cast<float>(params.growth.growth_boost);
-  p.boost_gap = static_cast<float>(params.growth.boost_gap);
-  p.boost_step = reference::boost_step(params);
-  return p;
-}
 
 ContainerIndexInfo container_index_info(const ContainerIndex& index) {
   return {index.x0,         index.y0,           index.cell, index.nx, index.ny, index.band_segments,

@@ -13,6 +13,7 @@
 
 #include "../counting_sort.hpp"
 #include "animpak/error.hpp"
+#include "animpak/step_params.hpp"
 #include "boundary_order.hpp"
 #include "device_buffers.hpp"
 #include "device_sort.hpp"
@@ -91,7 +92,7 @@ class DeviceBackend final : public OpenclBackend {
     boundary_ = opencl::BoundaryOrder(context_, queue_, program, std::move(boundary), grid_, x_, y_, t_,
                                       sort_ == GridSort::device);
     bind_grid_kernels(program);
-    bind_step_kernels(program, opencl::force_params(params));
+    bind_step_kernels(program, step_params(params));
     check(queue_.finish(), "clFinish(upload)");
   }
 

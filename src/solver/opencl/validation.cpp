@@ -7,6 +7,7 @@
 #include "animpak/compare.hpp"
 #include "animpak/reference.hpp"
 #include "animpak/simulation.hpp"
+#include "animpak/step_params.hpp"
 
 namespace animpak {
 namespace {
@@ -35,7 +36,7 @@ void compare_forces(DeviceValidation& v, const Topology& topology, const Params&
                     OpenclBackend& device) {
   const reference::CollisionGrid grid = reference::build_collision_grid(topology, ref_state, params);
   reference::ForceBreakdown ref_parts, dev_parts;
-  const reference::StepForces ref = reference::step_forces(topology, ref_state, params, grid, &ref_parts);
+  const reference::StepForces ref = reference::step_forces(topology, ref_state, step_params(params), grid, &ref_parts);
   const reference::StepForces dev = device.evaluate_forces(&dev_parts);
   const auto state = static_cast<std::int64_t>(ref_state.iteration);
   for (std::size_t i = 0; i < breakdown_forces.size(); ++i)

@@ -11,7 +11,7 @@ namespace {
 class ReferenceBackend final : public Backend {
  public:
   ReferenceBackend(const Topology& topology, SimState initial, const Params& params)
-      : topo_(topology), state_(std::move(initial)), params_(params) {
+      : topo_(topology), state_(std::move(initial)), params_(params), step_(step_params(params)) {
     // Before the first step: no gap, no contact, nothing grown.
     closest_.assign(topo_.vertex_count(), std::numeric_limits<float>::infinity());
     contact_.assign(topo_.vertex_count(), 0);
@@ -30,11 +30,11 @@ class ReferenceBackend final : public Backend {
     reference::StepForces forces;
     {
       PhaseStopwatch w(times_.forces);
-      forces = reference::step_forces(topo_, state_, params_, grid_, nullptr);
+      forces = reference::step_forces(topo_, state_, step_, grid_, nullptr);
     }
     {
       PhaseStopwatch w(times_.integrate);
-      reference::integrate(forces.total, params_, state_);
+      reference::integrate(forces.total, step_, state_);
     }
     {
       PhaseStopwatch w(times_.constraints);
@@ -53,9 +53,9 @@ class ReferenceBackend final : public Backend {
     }
     {
       PhaseStopwatch w(times_.growth);
-      reference::propose_growth(topo_, forces.contact, forces.closest, params_, state_.settling_since == 0, state_,
+      reference::propose_growth(topo_, forces.contact, forces.closest, step_, state_.settling_since == 0, state_,
                                 proposed_);
-      grown_ = reference::grow_slices(topo_, proposed_, params_, state_, changed_);
+      grown_ = reference::grow_slices(topo_, proposed_, step_, state_, changed_);
       reference::update_rest_lengths(topo_, changed_, state_);
     }
     closest_ = std::move(forces.closest);
@@ -87,7 +87,8 @@ class ReferenceBackend final : public Backend {
  private:
   Topology topo_;
   SimState state_;
-  Params params_;
+  Params params_;     ///< the grid's settings (grid_rebuild_interval, cell_size, far_cells)
+  ForceParams step_;  ///< every float constant of the step, converted once (animpak/step_params.hpp)
   reference::CollisionGrid grid_;
   std::vector<float> closest_;
   std::vector<std::uint8_t> contact_, changed_;

@@ -75,25 +75,24 @@ bool edge_crosses_container(const ContainerGeometry& box, float px, float py, fl
   return false;
 }
 
-Vec3f boundary_force(const Params& params, const ContainerQuery& q, float px, float py, bool boundary) {
+Vec3f boundary_force(const ForceParams& params, const ContainerQuery& q, float px, float py, bool boundary) {
   if (!q.inside) {
-    const float k = static_cast<float>(params.forces.k_boundary);
+    const float k = params.k_boundary;
     return {k * (q.qx - px), k * (q.qy - py), 0.0f};
   }
   // Inside, a boundary vertex is pushed off the wall as by a neighbour's closest point (Eq. 1), so an
   // element pressed to the wall, which stops growing there, moves back into open space. Only within
   // wall_range, as a neighbour's triangles repel only within the repulsion shell: a wall felt from
   // across the container presses every element towards the middle (docs/parameters.md, "Containment").
-  const float range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
-  if (!boundary || !(q.distance2 > 0.0f) || !(q.distance2 < range2)) return {};
+  if (!boundary || !(q.distance2 > 0.0f) || !(q.distance2 < params.wall_range2)) return {};
   const float ux = px - q.qx, uy = py - q.qy;
   const float inv_len = 1.0f / std::sqrt(q.distance2);
-  const float w = inv_len * (1.0f / (static_cast<float>(params.forces.repulsion_epsilon) + q.distance2));
-  const float k = static_cast<float>(params.forces.wall_repulsion * params.forces.k_repulsion);
+  const float w = inv_len * (1.0f / (params.repulsion_epsilon + q.distance2));
+  const float k = params.k_wall;
   return {k * (ux * w), k * (uy * w), 0.0f};
 }
 
-Vec3f boundary_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
+Vec3f boundary_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
   const float px = state.x[v], py = state.y[v];
   const bool boundary = (topo.flags[v] & vertex_boundary) != 0;
   return boundary_force(params, container_query(topo.container, px, py, boundary), px, py, boundary);

@@ -17,8 +17,8 @@ void ForceField::assign(std::size_t n) {
   t.assign(n, 0.0f);
 }
 
-StepForces step_forces(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
-                       ForceBreakdown* out) {
+StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
+                       const CollisionGrid& grid, ForceBreakdown* out) {
   const std::int32_t n = topo.vertex_count();
   StepForces r;
   r.total.assign(n);
@@ -36,13 +36,13 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
   slice_centroids(topo, state, cx, cy);
   // The curve between slices that the overlap test walks, as the frames show it; the boxes hold it.
   CurveTangents tangents;
-  curve_tangents(topo, curve_links(topo), state, params.forces.motion_curve, tangents);
+  curve_tangents(topo, curve_links(topo), state, params.motion_curve, tangents);
   SliceBoxes boxes;
   slice_boxes(topo, state, tangents, boxes);
   OverlapGrid overlap_grid;
   build_overlap_grid(topo, boxes, overlap_grid);
-  const float stop_gap = static_cast<float>(params.stop.stop_gap);
-  const float k_mirror = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
+  const float stop_gap = params.stop_gap;
+  const float k_mirror = params.k_mirror;
 
   std::vector<std::int32_t> near, far;
   for (std::int32_t v = 0; v < n; ++v) {
@@ -55,8 +55,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const Params
       repulsion_near_slots(grid, q, topo.element[v], near);
       repulsion_far_slots(grid, q, topo.element[v], far);
     }
-    const OverlapResult overlap =
-        overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.forces.interval_points);
+    const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
     const Vec3f springs = spring_force(topo, state, params, v);

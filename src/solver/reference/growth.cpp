@@ -11,11 +11,6 @@
 
 namespace animpak::reference {
 
-float boost_step(const Params& params) {
-  return static_cast<float>(params.growth.boost_speed * params.forces.velocity_cap * params.forces.dt *
-                            params.forces.dt);
-}
-
 float growth_multiplier(float gap, float boost_gap, float boost, float speed_limit) {
   float m = gap / boost_gap;
   if (m > boost) m = boost;  // also a gap of +inf (no boundary vertex)
@@ -24,15 +19,14 @@ float growth_multiplier(float gap, float boost_gap, float boost, float speed_lim
 }
 
 void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& contact, const std::vector<float>& closest,
-                    const Params& params, bool growing, const SimState& state, std::vector<float>& proposed) {
-  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
+                    const ForceParams& params, bool growing, const SimState& state, std::vector<float>& proposed) {
+  const float step = params.growth_step;  // growth_rate · Δt_sim
   // Settling (growing false) only clears overlaps, so it may back off faster than growth came in.
-  const float shrink =
-      static_cast<float>((growing ? params.growth.shrink_rate : params.growth.settle_shrink_rate) * params.forces.dt);
-  const float cap = static_cast<float>(params.growth.max_growth);
-  const float boost = static_cast<float>(params.growth.growth_boost);
-  const float boost_gap = static_cast<float>(params.growth.boost_gap);
-  const float largest_step = boost_step(params);
+  const float shrink = growing ? params.shrink_step : params.settle_shrink_step;
+  const float cap = params.max_growth;
+  const float boost = params.growth_boost;
+  const float boost_gap = params.boost_gap;
+  const float largest_step = params.boost_step;  // boost_speed · velocity_cap · Δt²
   const std::int32_t slices = topo.slice_count();
   proposed.assign(slices, 0.0f);
   for (std::int32_t s = 0; s < slices; ++s) {
@@ -67,11 +61,11 @@ void propose_growth(const Topology& topo, const std::vector<std::uint8_t>& conta
   }
 }
 
-std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const Params& params,
+std::int32_t grow_slices(const Topology& topo, const std::vector<float>& proposed, const ForceParams& params,
                          SimState& state, std::vector<std::uint8_t>& changed) {
-  const float ratio = static_cast<float>(params.growth.growth_ratio);
-  const float step = static_cast<float>(params.growth.growth_rate * params.forces.dt);
-  const float neighbour_ratio = static_cast<float>(params.growth.neighbour_growth_ratio);
+  const float ratio = params.growth_ratio;
+  const float step = params.growth_step;
+  const float neighbour_ratio = params.neighbour_growth_ratio;
   // The element's smallest proposal bounds every slice of it, and each slice's time neighbours bound it.
   changed.assign(topo.slice_count(), growth_kept);
   std::int32_t grown = 0;

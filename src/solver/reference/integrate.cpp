@@ -14,9 +14,9 @@
 
 namespace animpak::reference {
 
-void integrate(const ForceField& force, const Params& params, SimState& state) {
-  const float dt = static_cast<float>(params.forces.dt);
-  const float cap = static_cast<float>(params.forces.velocity_cap * params.forces.dt);
+void integrate(const ForceField& force, const ForceParams& params, SimState& state) {
+  const float dt = params.dt;
+  const float cap = params.velocity_cap;  // velocity_cap · Δt
   const std::size_t n = state.x.size();
   for (std::size_t v = 0; v < n; ++v) {
     float vx = state.vx[v] + force.x[v] * dt;

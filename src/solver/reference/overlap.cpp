@@ -395,7 +395,7 @@ OverlapResult overlap_test(const Topology& topo, const SimState& state, const Sl
   return r;
 }
 
-Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v,
+Vec3f overlap_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v,
                     const OverlapResult& overlap) {
   if (!overlap.overlap) return {};
   const float x = state.x[v], y = state.y[v], t = state.t[v];
@@ -410,10 +410,10 @@ Vec3f overlap_force(const Topology& topo, const SimState& state, const Params& p
     sum.y = sum.y + (py - y);
     sum.t = sum.t + (pt - t);
   }
-  const float k_ovr = static_cast<float>(params.forces.k_overlap);
+  const float k_ovr = params.k_overlap;
   Vec3f f{k_ovr * sum.x, k_ovr * sum.y, k_ovr * sum.t};
   if (overlap.inside) {
-    const float k_depth = static_cast<float>(params.forces.k_overlap_depth);
+    const float k_depth = params.k_overlap_depth;
     f.x = f.x + k_depth * overlap.out_x;
     f.y = f.y + k_depth * overlap.out_y;
   }

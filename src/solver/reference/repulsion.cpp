@@ -60,29 +60,27 @@ Vec3f eq1_sum(const Topology& topo, const SimState& state, const CollisionGrid& 
 
 }  // namespace
 
-RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const Params& params,
+RepulsionResult repulsion_force(const Topology& topo, const SimState& state, const ForceParams& params,
                                 const CollisionGrid& grid, std::int32_t v, const std::vector<std::int32_t>& near,
                                 const std::vector<std::int32_t>& far, bool overlapping) {
   RepulsionResult r;
   if ((topo.flags[v] & vertex_boundary) == 0) return r;
   const Vec3f x{state.x[v], state.y[v], state.t[v]};
-  const float eps = static_cast<float>(params.forces.repulsion_epsilon);
   float closest2 = 0.0f;
-  const Vec3f sum = eq1_sum(topo, state, grid, x, near, far, eps, closest2);
+  const Vec3f sum = eq1_sum(topo, state, grid, x, near, far, params.repulsion_epsilon, closest2);
   // The closest distance feeds the stop test even while the vertex overlaps.
   r.closest = std::sqrt(closest2);
   if (overlapping) return r;
-  const float k = static_cast<float>(params.forces.k_repulsion);
+  const float k = params.k_repulsion;
   r.force = {k * sum.x, k * sum.y, k * sum.t};
   return r;
 }
 
-Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const Params& params, const CollisionGrid& grid,
-                        std::int32_t v, const ContainerQuery& wall) {
-  const float k = static_cast<float>(params.forces.wall_mirror * params.forces.k_repulsion);
+Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const ForceParams& params,
+                        const CollisionGrid& grid, std::int32_t v, const ContainerQuery& wall) {
+  const float k = params.k_mirror;
   if (k == 0.0f || (topo.flags[v] & vertex_boundary) == 0 || !wall.inside) return {};
-  const float range2 = static_cast<float>(params.forces.wall_range * params.forces.wall_range);
-  if (!(wall.distance2 > 0.0f) || !(wall.distance2 < range2)) return {};
+  if (!(wall.distance2 > 0.0f) || !(wall.distance2 < params.wall_range2)) return {};
   const float px = state.x[v], py = state.y[v];
   // The vertex's reflection in the wall, and Eq. 1 there from the element's own triangles: the force the
   // mirror image of the element puts on the vertex, seen from the other side.
@@ -91,8 +89,7 @@ Vec3f wall_mirror_force(const Topology& topo, const SimState& state, const Param
   repulsion_near_slots(grid, mirror, topo.element[v], near, true);
   repulsion_far_slots(grid, mirror, topo.element[v], far, true);
   float closest2 = 0.0f;
-  const Vec3f s =
-      eq1_sum(topo, state, grid, mirror, near, far, static_cast<float>(params.forces.repulsion_epsilon), closest2);
+  const Vec3f s = eq1_sum(topo, state, grid, mirror, near, far, params.repulsion_epsilon, closest2);
   // Back across the wall's tangent: s − 2 (s·n) n with n = (x − q)/|x − q|, written with the unnormalised
   // normal over its squared length.
   const float nx = px - wall.qx, ny = py - wall.qy;

@@ -12,23 +12,12 @@
 
 namespace animpak::reference {
 
-float spring_stiffness(const Params& params, SpringClass c) {
-  switch (c) {
-    case SpringClass::edge:
-      return static_cast<float>(params.forces.k_edge);
-    case SpringClass::shear:
-      return static_cast<float>(params.forces.k_shear);
-    case SpringClass::negative_space:
-      return static_cast<float>(params.forces.k_negative_space);
-    case SpringClass::time:
-      return static_cast<float>(params.forces.k_time);
-    case SpringClass::target:
-      return static_cast<float>(params.forces.k_target);
-  }
-  return 0.0f;
+float spring_stiffness(const ForceParams& params, SpringClass c) {
+  const int i = static_cast<int>(c);
+  return i < AP_SPRING_CLASSES ? params.k_spring[i] : 0.0f;
 }
 
-Vec3f spring_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
+Vec3f spring_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
   const float xa = state.x[v], ya = state.y[v], ta = state.t[v];
   Vec3f sum;
   for (std::int32_t k = topo.spring_begin[v]; k < topo.spring_begin[v + 1]; ++k) {
@@ -50,11 +39,11 @@ Vec3f spring_force(const Topology& topo, const SimState& state, const Params& pa
   return sum;
 }
 
-Vec3f fold_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
-  const float k_fold = static_cast<float>(params.forces.k_fold);
+Vec3f fold_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
+  const float k_fold = params.k_fold;
   Vec3f sum;
   if (!(k_fold > 0.0f)) return sum;
-  const float floor_share = static_cast<float>(params.forces.fold_area);
+  const float floor_share = params.fold_area;
   const float g = state.growth[topo.slice[v]];
   const float g2 = g * g;
   const float vx = state.x[v], vy = state.y[v];

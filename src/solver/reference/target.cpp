@@ -8,7 +8,7 @@
 
 namespace animpak::reference {
 
-Vec3f target_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
+Vec3f target_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
   const std::int32_t p = topo.target[v];
   if (p < 0 || (topo.flags[v] & vertex_anchor) == 0) return {};
   const float ux = topo.target_x[p] - state.x[v], uy = topo.target_y[p] - state.y[v],
@@ -18,7 +18,7 @@ Vec3f target_force(const Topology& topo, const SimState& state, const Params& pa
   const float len = std::sqrt(d2);
   const float inv_len = 1.0f / len;
   // Eq. 2 with ℓ = 0: s = +1 and (|u| − ℓ)² = |u|².
-  const float w = static_cast<float>(params.forces.k_target) * inv_len * (len * len);
+  const float w = params.k_target * inv_len * (len * len);
   return {ux * w, uy * w, ut * w};
 }
 

@@ -4,8 +4,8 @@
 
 namespace animpak::reference {
 
-Vec3f temporal_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v) {
-  return {0.0f, 0.0f, static_cast<float>(params.forces.k_temporal) * (topo.rest_t[v] - state.t[v])};
+Vec3f temporal_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
+  return {0.0f, 0.0f, params.k_temporal * (topo.rest_t[v] - state.t[v])};
 }
 
 }  // namespace animpak::reference

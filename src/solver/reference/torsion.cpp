@@ -36,7 +36,7 @@ void slice_centroids(const Topology& topo, const SimState& state, std::vector<fl
   }
 }
 
-Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& params, std::int32_t v, float cx,
+Vec3f torsion_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v, float cx,
                     float cy) {
   const float ux = state.x[v] - cx, uy = state.y[v] - cy;
   const float cross = topo.rest_dir_x[v] * uy - topo.rest_dir_y[v] * ux;
@@ -44,8 +44,7 @@ Vec3f torsion_force(const Topology& topo, const SimState& state, const Params& p
   // the centroid or one without a rest direction, since cross is 0 there.
   if (cross == 0.0f) return {};
   const float inv_len = 1.0f / std::sqrt(ux * ux + uy * uy);
-  const float k = static_cast<float>((topo.flags[v] & vertex_hold_angle) != 0 ? params.forces.k_target_angle
-                                                                              : params.forces.k_torsion);
+  const float k = (topo.flags[v] & vertex_hold_angle) != 0 ? params.k_target_angle : params.k_torsion;
   const float signed_k = cross > 0.0f ? -k : k;
   return {signed_k * (-uy * inv_len), signed_k * (ux * inv_len), 0.0f};
 }
