@@ -38,11 +38,23 @@ NormalizedArt normalize_art(const ArtShape& art);
 /// (positive signed area), holes clockwise, in the art's own coordinates.
 std::vector<std::vector<Vec2>> painted_region(const ArtShape& art);
 
-/// The element's outer outline: union of all paths, offset by `offset`, largest piece kept.
+/// One of the disjoint pieces the art's offset outline comes in before they are bridged
+/// (docs/parameters.md, "Bridging detached art").
+struct OutlinePiece {
+  double share = 0.0;      ///< of the area the art paints (fills, and strokes at their width)
+  std::vector<int> paths;  ///< indices into the art's paths of those that paint in it (one may paint in several)
+  bool dropped = false;    ///< farther than the largest closing bridges: outside the outline, its art still drawn
+};
+
+/// The element's outer outline: union of all paths, offset by `offset`, its pieces bridged into one.
 struct Outline {
   std::vector<Vec2> ring;          ///< simple polygon, counter-clockwise in y-up terms, no repeat
   std::vector<std::string> notes;  ///< e.g. "dropped 2 pieces smaller than the largest"
   std::string source;              ///< the art file, named in build_slice's errors
+  /// Every disjoint piece, largest first (the one the others are bridged to), when there are several;
+  /// empty when the art is one piece.
+  std::vector<OutlinePiece> pieces;
+  double bridge_radius = 0.0;  ///< the closing that bridged pieces; 0 when none was needed or none reached
 };
 Outline element_outline(const NormalizedArt& art, double offset);
 
@@ -115,6 +127,8 @@ struct SpacetimeElement {
   SpringCsr springs;               ///< edge, shear and negative-space springs on every slice, plus time springs
   std::vector<Triangle> envelope;  ///< two time edges and one boundary edge each; vertex ids
   std::vector<std::string> notes;  ///< what building it changed, e.g. the outline's dropped pieces
+  std::vector<OutlinePiece> outline_pieces;  ///< Outline::pieces
+  double bridge_radius = 0.0;                ///< Outline::bridge_radius
   /// slice_advice of its script (include/animpak/animation.hpp): about the fewest slices that keep the curve
   /// between slices within 1 % of its size of the script (0: it barely moves), and the largest distance
   /// at slice_count, as a share of its size.

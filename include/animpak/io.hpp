@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "animpak/error.hpp"
 #include "animpak/geometry.hpp"
 
 namespace animpak {
@@ -31,9 +32,20 @@ struct Polyline {
   bool closed = true;
 };
 
+/// One SVG element a path is drawn through: its tag, id and classes (each may be empty).
+struct ArtOrigin {
+  std::string tag;
+  std::string id;
+  std::vector<std::string> classes;
+};
+
 /// One drawable path: one or more subpaths painted together under one style.
 struct ArtPath {
-  std::string id;        ///< SVG id (or "path<N>" for .path files); used in messages
+  std::string id;  ///< SVG id (or "path<N>" for .path files); used in messages
+  /// SVG: the elements the path is drawn through, outermost first, from the root's child down to its own
+  /// element (a `<use>` is followed by what it draws); empty for .path files. `animpak check` names the
+  /// pieces of the art with it and the `exclude` entry that leaves one out.
+  std::vector<ArtOrigin> lineage;
   int source_index = 0;  ///< position of the path in its file (0-based), stable for scene references
   int path_type = 0;     ///< `.path` pathType (0 boundary … 7 hole); 0 for SVG
   std::vector<Polyline> polylines;
@@ -62,7 +74,31 @@ struct SvgOptions {
   double flatten_tolerance = 0.1;
   /// Files larger than this are refused before parsing (an attack or not clip art).
   std::uintmax_t max_file_bytes = 32u << 20;
+  /// SVG elements to leave out, each with everything inside it, as if deleted from the file: CSS selectors
+  /// as `<style>` rules take them, "#id", ".class", or types, ids and classes joined by spaces or `>`
+  /// (docs/scene-format.md, "Leaving pieces of the art out"). Each must match an element (ExcludeError);
+  /// a .path file takes none.
+  std::vector<std::string> exclude;
 };
+
+/// An `exclude` selector (SvgOptions::exclude) that does not parse or matches no element of the file:
+/// `index` into the list, the selector as given, and `problem`, the rest of the message (what is wrong and
+/// what to do), so that a scene can name its own field instead.
+class ExcludeError : public InputError {
+ public:
+  ExcludeError(const std::string& file, std::size_t at, std::string text, std::string what_is_wrong)
+      : InputError(file + ": exclude \"" + text + "\": " + what_is_wrong),
+        index(at),
+        selector(std::move(text)),
+        problem(std::move(what_is_wrong)) {}
+  std::size_t index;
+  std::string selector;
+  std::string problem;
+};
+
+/// "g#layer1 > path#path3421.shadow": the path's lineage as a selector would write it, each element as its
+/// tag, #id and .classes; "path 4" for a path without one (a .path file's).
+std::string lineage_text(const ArtPath& path);
 
 /// Reads an SVG document. Throws InputError naming the file and element for malformed or unusable input.
 /// Never loads another file: external entities and external references are refused.

@@ -141,6 +141,11 @@ double unit_mesh_density(const World& world);
 /// element does not change the others.
 std::uint64_t element_seed(std::uint64_t scene_seed, std::size_t index);
 
+/// The art of `scene.elements[index]` as pack builds it: read with the scene's flatten_tolerance and its
+/// `exclude` left out. A selector that does not parse or matches nothing is an InputError naming the
+/// scene's field (`scene.json: elements[3].exclude[0]: …`).
+ArtShape load_element_art(const SceneSpec& scene, std::size_t index);
+
 /// Loads the scene's art, builds the library elements and calls build_world.
 World make_world(const SceneSpec& scene);
 

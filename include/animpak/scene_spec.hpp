@@ -73,6 +73,9 @@ struct ContainerSpec {
 struct LibraryElementSpec {
   std::string name;  ///< unique; defaults to the art file's stem
   std::filesystem::path art;
+  /// Selectors of the SVG elements left out of the art, from its outline and its drawing alike
+  /// (SvgOptions::exclude; docs/scene-format.md, "Leaving pieces of the art out").
+  std::vector<std::string> exclude;
   AnimationSpec animation;
   std::optional<int> count;  ///< exact number of unguided copies; otherwise drawn by weight
   double weight = 1.0;

@@ -187,6 +187,142 @@ Json element_json(const SpacetimeElement& e, const ArtOutline& outline, const Pa
           {"holes", outline.hole_areas}};
 }
 
+// A name a selector can use as it is (Compound's identifiers in src/io/svg_document.cpp).
+bool selectable(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return std::isalnum(u) || c == '-' || c == '_' || u >= 0x80;
+  });
+}
+
+// The `exclude` entries that leave out `piece` and nothing else: for each of its paths, the outermost
+// element it is drawn through whose #id (else one of its .classes) selects only paths of the piece;
+// `unnamed` gets the paths that no such selector reaches (they need an id). A path that also paints in
+// another piece cannot be left out without it and is in neither list.
+struct PieceExclusion {
+  std::vector<std::string> selectors;
+  std::vector<int> unnamed;
+};
+
+PieceExclusion piece_exclusion(const ArtShape& art, const std::vector<OutlinePiece>& pieces, std::size_t k) {
+  const auto in_piece = [&](int path, std::size_t piece) {
+    const std::vector<int>& paths = pieces[piece].paths;
+    return std::find(paths.begin(), paths.end(), path) != paths.end();
+  };
+  const auto only_here = [&](int path) {
+    for (std::size_t other = 0; other < pieces.size(); ++other)
+      if (other != k && in_piece(path, other)) return false;
+    return in_piece(path, k);
+  };
+  // Whether `selects(origin)` holds only on paths drawn wholly in this piece.
+  const auto confined = [&](const auto& selects) {
+    for (std::size_t i = 0; i < art.paths.size(); ++i)
+      for (const ArtOrigin& o : art.paths[i].lineage)
+        if (selects(o) && !only_here(static_cast<int>(i))) return false;
+    return true;
+  };
+  PieceExclusion out;
+  std::vector<int> covered;
+  for (const int path : pieces[k].paths) {
+    if (!only_here(path) || std::find(covered.begin(), covered.end(), path) != covered.end()) continue;
+    std::string chosen;
+    for (const ArtOrigin& o : art.paths[path].lineage) {
+      if (selectable(o.id) && confined([&](const ArtOrigin& x) { return x.id == o.id; })) chosen = "#" + o.id;
+      for (std::size_t c = 0; chosen.empty() && c < o.classes.size(); ++c)
+        if (selectable(o.classes[c]) && confined([&](const ArtOrigin& x) {
+              return std::find(x.classes.begin(), x.classes.end(), o.classes[c]) != x.classes.end();
+            }))
+          chosen = "." + o.classes[c];
+      if (!chosen.empty()) break;
+    }
+    if (chosen.empty()) {
+      out.unnamed.push_back(path);
+      continue;
+    }
+    out.selectors.push_back(chosen);
+    // Everything the selector leaves out is covered.
+    const bool by_id = chosen[0] == '#';
+    const std::string name = chosen.substr(1);
+    for (std::size_t i = 0; i < art.paths.size(); ++i)
+      for (const ArtOrigin& o : art.paths[i].lineage)
+        if (by_id ? o.id == name : std::find(o.classes.begin(), o.classes.end(), name) != o.classes.end())
+          covered.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+// The pieces the art's offset outline comes in (docs/check.md, "Pieces of the art"): each one's share of
+// the painted area, whether it was bridged or dropped, its paths and the `exclude` entries that leave it out.
+Json pieces_json(const ArtShape& art, const SpacetimeElement& e) {
+  Json pieces = Json::array();
+  for (std::size_t k = 0; k < e.outline_pieces.size(); ++k) {
+    const OutlinePiece& piece = e.outline_pieces[k];
+    Json paths = Json::array();
+    for (const int i : piece.paths)
+      paths.push_back({{"index", i}, {"id", art.paths[i].id}, {"element", lineage_text(art.paths[i])}});
+    Json entry = {{"share", piece.share},
+                  {"state", k == 0          ? "largest"
+                            : piece.dropped ? "dropped"
+                                            : "bridged"},
+                  {"paths", paths}};
+    if (k > 0) {
+      const PieceExclusion exclusion = piece_exclusion(art, e.outline_pieces, k);
+      entry["exclude"] = exclusion.selectors;
+      entry["unnamed_paths"] = exclusion.unnamed;
+    }
+    pieces.push_back(entry);
+  }
+  return pieces;
+}
+
+void print_pieces(const Json& element, const std::string& file, bool path_file) {
+  const Json& pieces = element["pieces"];
+  if (pieces.empty()) return;
+  const double radius = element["bridge_radius"].get<double>();
+  char bridged[64] = "";
+  if (radius > 0.0) std::snprintf(bridged, sizeof bridged, ", bridged with a closing of radius %g", radius);
+  std::printf("pieces     the art's outline comes in %zu pieces%s; paths numbered as in the table above:\n",
+              pieces.size(), bridged);
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Json& piece = pieces[k];
+    const Json& paths = piece["paths"];
+    std::printf(
+        "  %zu  %5.1f %% of the art's area, %s: %zu path%s\n", k + 1, 100.0 * piece["share"].get<double>(),
+        piece["state"].get<std::string>() == "largest" ? "the largest" : piece["state"].get<std::string>().c_str(),
+        paths.size(), paths.size() == 1 ? "" : "s");
+    if (k == 0) continue;
+    const std::size_t shown = std::min<std::size_t>(paths.size(), 6);
+    for (std::size_t i = 0; i < shown; ++i)
+      std::printf("       path %d: %s\n", paths[i]["index"].get<int>(), paths[i]["element"].get<std::string>().c_str());
+    if (paths.size() > shown) std::printf("       and %zu more\n", paths.size() - shown);
+    const std::vector<std::string> selectors = piece["exclude"];
+    const std::vector<int> unnamed = piece["unnamed_paths"];
+    if (path_file) {
+      std::printf("     a .path file cannot leave a piece out: delete it in an editor, or use the art as SVG\n");
+      continue;
+    }
+    if (!selectors.empty()) {
+      std::string entry, flags;
+      for (const std::string& s : selectors) {
+        entry.append(entry.empty() ? "" : ", ").append(Json(s).dump());
+        flags += " --exclude '" + s + "'";
+      }
+      std::printf("     to leave it out, add to the scene's element: \"exclude\": [%s]\n", entry.c_str());
+      std::printf("     (animpak check %s%s --png OUT shows the art without it)\n", file.c_str(), flags.c_str());
+    }
+    if (!unnamed.empty()) {
+      std::string list;
+      for (const int i : unnamed) list.append(list.empty() ? "" : ", ").append(std::to_string(i));
+      std::printf(
+          "     path%s %s %s no id or class of %s own that selects only this piece: give %s an id in your "
+          "editor to leave %s out\n",
+          unnamed.size() == 1 ? "" : "s", list.c_str(), unnamed.size() == 1 ? "has" : "have",
+          unnamed.size() == 1 ? "its" : "their", unnamed.size() == 1 ? "it" : "each",
+          unnamed.size() == 1 ? "it" : "them");
+    }
+  }
+}
+
 std::string path_name(const ArtShape& art, int source_index) {
   for (const ArtPath& p : art.paths)
     if (p.source_index == source_index && !p.id.empty())
@@ -315,8 +451,16 @@ void print_text(const Json& report) {
     const std::size_t holes = e["holes"].size();
     if (holes > 0)
       std::printf("holes      %zu in the art, filled by the element (its outline is the outer boundary only)\n", holes);
+    std::string extension = std::filesystem::path(report["file"].get<std::string>()).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    print_pieces(e, report["file"].get<std::string>(), extension == ".path");
   }
   if (container) print_container(report["container"]);
+  if (report.contains("exclude")) {
+    std::string list;
+    for (const Json& s : report["exclude"]) list.append(list.empty() ? "" : " ").append(s.get<std::string>());
+    std::printf("excluded   %s (left out of the outline and the drawing)\n", list.c_str());
+  }
   std::printf("warnings   %zu%s\n", report["warnings"].size(), report["warnings"].empty() ? "" : " (on stderr)");
   if (report.contains("png")) std::printf("preview    %s\n", report["png"].get<std::string>().c_str());
   if (container)
@@ -360,6 +504,15 @@ int check(const CheckOptions& options) {
   } else if (options.container) {
     container = ContainerSpec{options.file, options.outline, std::nullopt};
     if (!options.holes.empty()) container->holes = options.holes;
+  }
+  if (!options.exclude.empty()) {
+    // Only an element leaves pieces out (its scene entry's `exclude`); a scene's container has no such field.
+    if (container)
+      throw UsageError(
+          "--exclude leaves pieces out of an element's art; a scene's container cannot (check the "
+          "element's art file instead)");
+    import.exclude = options.exclude;
+    report["exclude"] = options.exclude;
   }
   const std::string file = art_file.string();
   ArtShape art;
@@ -424,6 +577,8 @@ int check(const CheckOptions& options) {
       for (std::size_t i = 0; i < outline.on_outline.size(); ++i)
         report["paths"][i]["on_outline"] = outline.on_outline[i];
       report["element"] = element_json(element, outline, params);
+      report["element"]["pieces"] = pieces_json(element.art.art, element);
+      report["element"]["bridge_radius"] = element.bridge_radius;
       warnings.insert(warnings.end(), element.notes.begin(), element.notes.end());
     } catch (const InputError& e) {
       report["warnings"] = warnings;

@@ -36,6 +36,7 @@ struct CheckOptions {
   bool container = false;                    ///< check the art file as a container
   std::optional<int> outline;                ///< as a container: the outline's path (container.outline)
   std::vector<int> holes;                    ///< as a container: the holes' paths (container.holes); none: default
+  std::vector<std::string> exclude;          ///< SVG elements to leave out, as an element's `exclude` does
   std::optional<std::filesystem::path> png;  ///< draw the art as imported into this PNG
   int size = 512;                            ///< the PNG's longer side in pixels
   bool json = false;                         ///< print the report as JSON on stdout

@@ -31,7 +31,7 @@ std::vector<Built> build_all(const InspectOptions& options) {
     if (options.slices) scene.params.element.slices = *options.slices;
     for (std::size_t i = 0; i < scene.elements.size(); ++i) {
       const LibraryElementSpec& spec = scene.elements[i];
-      const ArtShape art = load_art(spec.art);
+      const ArtShape art = load_element_art(scene, i);
       built.push_back(
           {build_element(spec.name, art, spec.animation, scene.params, element_seed(scene.seed, i)), art.warnings});
     }

@@ -183,6 +183,12 @@ class RenderingFrontend final : public Frontend {
         ->delimiter(',')
         ->check(CLI::NonNegativeNumber)
         ->needs(as_container);
+    check_cmd_
+        ->add_option("--exclude", check_.exclude,
+                     "leave this SVG element out, as an element's \"exclude\" entry does: \"#id\" or \".class\" "
+                     "(repeat for more)")
+        ->allow_extra_args(false)
+        ->excludes(as_container);
     check_cmd_->add_option("--png", check_.png,
                            "draw the art as imported at the document's viewport into this PNG (transparent "
                            "background), to hold next to a browser's rendering");

@@ -23,6 +23,8 @@ SpacetimeElement build_element(const std::string& name, const ArtShape& art, con
       slice_advice(slice, outline, normalized.frame, spec, params.element.slices, params.forces.motion_curve);
   SpacetimeElement element = extrude(name, std::move(normalized), std::move(binding), std::move(slice), per_slice);
   element.notes = std::move(outline.notes);
+  element.outline_pieces = std::move(outline.pieces);
+  element.bridge_radius = outline.bridge_radius;
   element.slices_needed = advice.slices;
   element.motion_error = advice.error;
   return element;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
 #include <polyclipping/clipper.hpp>
 #include <sstream>
 
@@ -370,6 +371,53 @@ void refuse_crossing_art(const ArtShape& art, const std::vector<std::vector<std:
                    " times (most: " + path_of(c.per_path) + ")" + advice);
 }
 
+// Where each piece of the offset outline comes from (`pieces`, before bridging, largest first): its
+// share of the painted area (the rings of the art's union, each lying in one piece, holes negative),
+// the paths that paint in it (each polyline lies in one), and whether the closing left it out of `kept`,
+// the outline's contour.
+std::vector<OutlinePiece> trace_pieces(const ArtShape& art, const std::vector<std::pair<cl::IntPoint, double>>& rings,
+                                       const std::vector<Piece>& pieces, const cl::Path& kept) {
+  const auto piece_of = [&](const cl::IntPoint& p) {
+    for (std::size_t k = 0; k < pieces.size(); ++k)
+      if (cl::PointInPolygon(p, pieces[k].contour) != 0) return static_cast<int>(k);
+    return -1;
+  };
+  std::vector<OutlinePiece> out(pieces.size());
+  double total = 0.0;
+  for (const auto& [point, area] : rings) {
+    total += area;
+    if (const int k = piece_of(point); k >= 0) out[k].share += area;
+  }
+  for (OutlinePiece& piece : out) piece.share = total > 0.0 ? piece.share / total : 0.0;
+  for (std::size_t i = 0; i < art.paths.size(); ++i)
+    for (const Polyline& line : art.paths[i].polylines) {
+      if (line.points.empty()) continue;
+      const int k = piece_of(to_int(line.points.front()));
+      if (k >= 0 && std::find(out[k].paths.begin(), out[k].paths.end(), static_cast<int>(i)) == out[k].paths.end())
+        out[k].paths.push_back(static_cast<int>(i));
+    }
+  for (std::size_t k = 1; k < pieces.size(); ++k)
+    out[k].dropped = !pieces[k].contour.empty() && cl::PointInPolygon(pieces[k].contour.front(), kept) == 0;
+  return out;
+}
+
+// "path 43 ('shadow') 3.9 %" for a piece of one path; "3 paths (path 4, path 5 ('eye'), …) 0.5 %" for more.
+std::string piece_text(const ArtShape& art, const OutlinePiece& piece) {
+  std::ostringstream text;
+  if (piece.paths.size() == 1) {
+    text << path_label(art.paths[piece.paths.front()]);
+  } else {
+    text << piece.paths.size() << " paths (";
+    const std::size_t shown = std::min<std::size_t>(piece.paths.size(), 3);
+    for (std::size_t i = 0; i < shown; ++i) text << (i ? ", " : "") << path_label(art.paths[piece.paths[i]]);
+    if (piece.paths.size() > shown) text << " and " << piece.paths.size() - shown << " more";
+    text << ")";
+  }
+  text.precision(2);
+  text << " " << std::fixed << 100.0 * piece.share << " %";
+  return text.str();
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
@@ -436,9 +484,11 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   cl::Paths shape = painted_union(art.art, drawn);
   double shape_area = 0.0;
   std::size_t hole_vertices = 0;
+  std::vector<std::pair<cl::IntPoint, double>> rings;  // a point and the signed area of each ring
   for (const cl::Path& p : shape) {
     shape_area += cl::Area(p);
     hole_vertices += cl::Orientation(p) ? 0 : p.size();
+    if (!p.empty()) rings.emplace_back(p.front(), cl::Area(p));
   }
   if (!(shape_area > 0.0))
     throw InputError(name + ": the art encloses no area (no filled region and no stroke with a width)");
@@ -459,6 +509,7 @@ Outline element_outline(const NormalizedArt& art, double offset) {
   // outline (offset out by r, offset back) with the smallest radius r, in steps, that joins the pieces.
   // The union with the plain offset keeps every point of the outline at least Δs from the art.
   const std::size_t separate = pieces.size();
+  const std::vector<Piece> apart = separate > 1 ? pieces : std::vector<Piece>{};
   double radius = 0.0;
   while (pieces.size() > 1 && radius < max_bridge_radius) {
     radius = std::min(radius + bridge_step, max_bridge_radius);
@@ -481,6 +532,18 @@ Outline element_outline(const NormalizedArt& art, double offset) {
       note << (i > 1 ? ", " : " ") << pieces[i].area / (clipper_scale * clipper_scale);
     note << " (farther than a closing of radius " << max_bridge_radius
          << " bridges; their art is still drawn, bound to the nearest triangle)";
+  }
+  if (separate > 1) {
+    // Which art each piece is: a drop shadow or a stray mark that became part of the outline is left out
+    // by the element's `exclude` (docs/scene-format.md, "Leaving pieces of the art out").
+    out.pieces = trace_pieces(art.art, rings, apart, pieces.front().contour);
+    out.bridge_radius = pieces.size() < separate ? radius : 0.0;
+    note << ". The largest piece is " << std::fixed << std::setprecision(2) << 100.0 * out.pieces.front().share
+         << " % of the art's area; apart from it:";
+    for (std::size_t k = 1; k < out.pieces.size(); ++k)
+      note << (k > 1 ? "," : "") << " " << piece_text(art.art, out.pieces[k])
+           << (out.pieces[k].dropped ? " (dropped)" : "");
+    note << "; `animpak check` names each piece and the element's \"exclude\" entry that leaves it out";
   }
   if (note.tellp() > 0) out.notes.push_back(note.str());
 

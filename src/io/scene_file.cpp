@@ -101,6 +101,21 @@ std::vector<LibraryElementSpec> read_elements(const JsonField& field, const fs::
         (name ? *name : item)
             .fail("name " + backticked(e.name) + (name ? "" : " (the art file's stem)") + " is already used by " +
                   field.item(j).path() + "; give each element a unique `name`");
+    if (auto f = item.optional("exclude")) {
+      std::string extension = e.art.extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (extension == ".path")
+        f->fail(
+            "a .path file has no ids or classes to select a piece by; remove `exclude`, or use the art as SVG "
+            "with an id on the piece");
+      for (std::size_t k = 0, count = f->array_size(); k < count; ++k) {
+        const std::string selector = f->item(k).non_empty_string();
+        if (std::find(e.exclude.begin(), e.exclude.end(), selector) != e.exclude.end())
+          f->item(k).fail("\"" + selector + "\" is listed twice");
+        e.exclude.push_back(selector);
+      }
+    }
     if (auto f = item.optional("animation")) e.animation = io_detail::read_animation(*f);
     if (auto f = item.optional("count")) e.count = read_integer(*f, format.at("count"));
     if (auto f = item.optional("weight")) {

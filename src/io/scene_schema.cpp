@@ -34,6 +34,7 @@ constexpr std::array<std::string_view, 4> kKeepSides{"left", "right", "top", "bo
 constexpr std::array<std::string_view, 2> kOrients{"none", "path"};
 
 const FieldSpec kPathIndex{.key = "", .type = Type::integer, .meaning = "", .range = kCount};
+const FieldSpec kSelector{.key = "", .type = Type::string, .meaning = ""};
 const FieldSpec kFillWord{.key = "", .type = Type::word, .meaning = "as many as fit", .words = kFill};
 const FieldSpec kRandomWord{.key = "", .type = Type::word, .meaning = "each copy at its own slice", .words = kRandom};
 
@@ -113,6 +114,11 @@ const FieldSpec kElementItem{.key = "", .type = Type::object, .meaning = "", .ob
 const std::array kElementFields{
     FieldSpec{.key = "name", .type = Type::string, .meaning = "unique; default: the art file's stem"},
     FieldSpec{.key = "art", .type = Type::art, .meaning = "the element's art file", .required = true},
+    FieldSpec{.key = "exclude",
+              .type = Type::array,
+              .meaning = "SVG elements left out of the art, from its outline and its drawing: \"#id\", \".class\"",
+              .items = &kSelector,
+              .distinct = true},
     FieldSpec{.key = "animation",
               .type = Type::object,
               .meaning = "its scripted animation (§3.2)",

@@ -390,6 +390,14 @@ void ShapeContext::on_exit_element() {
   }
   if (path.polylines.empty()) return;
   path.id = attribute(node_, "id");
+  for (const Lineage* l = lineage_.get(); l; l = l->parent.get()) {
+    ArtOrigin& origin = path.lineage.emplace_back();
+    origin.tag = reinterpret_cast<const char*>(l->node->name);
+    origin.id = attribute(l->node, "id");
+    std::istringstream classes(attribute(l->node, "class"));
+    for (std::string c; classes >> c;) origin.classes.push_back(c);
+  }
+  std::reverse(path.lineage.begin(), path.lineage.end());
   path.fill_rule = style_.fill_rule;
   path.paint_order = style_.paint_order;
   // What a nested viewport clips away entirely is not drawn, and nothing is said of its stroke.
@@ -500,7 +508,8 @@ void UseContext::on_exit_element() {
 }
 
 ArtShape run_traversal(const std::string& text, const std::string& name, const SvgOptions& options) {
-  const Document doc(text, name);
+  Document doc(text, name);
+  doc.exclude(options.exclude);
   ArtShape out;
   out.source = name;
   State state(doc, options, out);

@@ -162,6 +162,7 @@ class BaseContext : public Reporter {
       set_percent_box(w, h);
     else
       set_percent_box(100, 100);
+    disabled_ = state.doc.excluded(node);
     read_paint_order();
     apply_own_transform();
   }
@@ -175,12 +176,15 @@ class BaseContext : public Reporter {
         box_height_(parent.box_height_),
         clips_(parent.clips_),
         ref_width_(parent.use_width_),
-        ref_height_(parent.use_height_) {
+        ref_height_(parent.use_height_),
+        lineage_(std::make_shared<const Lineage>(Lineage{node, parent.lineage_})) {
     state_->spend(node, 1, 0);
+    // What the scene's `exclude` leaves out draws nothing, as if deleted from the file.
+    disabled_ = state_->doc.excluded(node);
     if (parent.is_switch_) {
       // <switch> draws its first child whose conditions hold; we support no extensions, which is
       // how Illustrator's <foreignObject requiredExtensions=…> gives way to the plain SVG copy.
-      disabled_ = parent.switch_chosen_ || !attribute(node, "requiredExtensions").empty();
+      disabled_ = disabled_ || parent.switch_chosen_ || !attribute(node, "requiredExtensions").empty();
       if (!disabled_) parent.switch_chosen_ = true;
     }
     is_switch_ = xmlStrEqual(node->name, BAD_CAST "switch");
@@ -302,6 +306,13 @@ class BaseContext : public Reporter {
   bool switch_chosen_ = false;
   std::optional<double> use_width_, use_height_;  // set by <use>, read by the <svg>/<symbol> it draws
   std::optional<double> ref_width_, ref_height_;
+  // The elements this one is drawn through, innermost first (itself, its parent or the <use> that draws
+  // it, …), the root left out: what ArtPath::lineage lists outermost first.
+  struct Lineage {
+    const xmlNode* node;
+    std::shared_ptr<const Lineage> parent;
+  };
+  std::shared_ptr<const Lineage> lineage_;
 };
 
 using GroupContext = BaseContext;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "json_fields.hpp"
 #include "svg_internal.hpp"
 
 namespace animpak::svg {
@@ -275,7 +276,89 @@ bool draws(const std::string& declarations) {
   return false;
 }
 
+// Elements that draw or hold what draws: what an `exclude` selector is meant to name.
+bool draws_art(const xmlNode* n) {
+  static const char* const tags[] = {"path", "rect", "circle", "ellipse", "line",   "polyline", "polygon",
+                                     "g",    "use",  "svg",    "a",       "switch", "symbol"};
+  return std::any_of(std::begin(tags), std::end(tags), [&](const char* t) { return is_svg_element(n, t); });
+}
+
+// What to say of an `exclude` selector that matches nothing: the id or class it most likely meant, else
+// the ids and classes of the elements that draw, the first few of each.
+std::string exclude_hint(const std::string& selector, const std::vector<xmlNode*>& all) {
+  std::vector<std::string> ids, classes;
+  for (const xmlNode* n : all) {
+    // The root is all of the art, never a piece of it.
+    if (!draws_art(n) || n == all.front()) continue;
+    const std::string id = attribute(n, "id");
+    Compound selectable;
+    if (!id.empty() && selectable.parse("#" + id)) ids.push_back("#" + id);
+    for (const std::string& c : classes_of(n))
+      if (std::find(classes.begin(), classes.end(), "." + c) == classes.end() && selectable.parse("." + c))
+        classes.push_back("." + c);
+  }
+  std::vector<std::string_view> names(ids.begin(), ids.end());
+  names.insert(names.end(), classes.begin(), classes.end());
+  const std::string near = io_detail::closest_name(selector, names);
+  if (!near.empty()) return "did you mean \"" + near + "\"?";
+  if (names.empty())
+    return "no element of it that draws has an id or a class; give the piece an id in your editor and exclude "
+           "\"#that-id\"";
+  const auto listed = [](const std::vector<std::string>& v) {
+    std::string text;
+    const std::size_t shown = std::min<std::size_t>(v.size(), 8);
+    for (std::size_t i = 0; i < shown; ++i) text += (i ? ", " : "") + v[i];
+    if (v.size() > shown) text += " and " + std::to_string(v.size() - shown) + " more";
+    return text;
+  };
+  const std::string what =
+      ids.empty() ? "the elements that draw have no ids; their classes are " + listed(classes)
+      : classes.empty()
+          ? "the ids of the elements that draw are " + listed(ids) + "; they have no classes"
+          : "the ids of the elements that draw are " + listed(ids) + "; their classes are " + listed(classes);
+  return what + " (`animpak check` names the pieces of the art and how to leave each out)";
+}
+
 }  // namespace
+
+void Document::exclude(const std::vector<std::string>& selectors) {
+  if (selectors.empty()) return;
+  std::vector<xmlNode*> all;  // every element, in document order
+  std::vector<xmlNode*> stack{root_};
+  while (!stack.empty()) {
+    xmlNode* n = stack.back();
+    stack.pop_back();
+    all.push_back(n);
+    std::vector<xmlNode*> children;
+    for (xmlNode* c = n->children; c; c = c->next)
+      if (c->type == XML_ELEMENT_NODE) children.push_back(c);
+    stack.insert(stack.end(), children.rbegin(), children.rend());
+  }
+  for (std::size_t k = 0; k < selectors.size(); ++k) {
+    const std::string text = trim(selectors[k]);
+    Selector selector;
+    if (!selector.parse(text))
+      throw ExcludeError(name_, k, selectors[k],
+                         "not a selector; give \"#id\" or \".class\" (or types, #ids and .classes joined by spaces "
+                         "or >, as a <style> rule takes them)");
+    bool matched = false;
+    for (xmlNode* n : all) {
+      if (!selector.matches(n)) continue;
+      matched = true;
+      // Everything inside it goes too, so that a <use> of something inside draws nothing either.
+      std::vector<const xmlNode*> inside{n};
+      while (!inside.empty()) {
+        const xmlNode* m = inside.back();
+        inside.pop_back();
+        if (!excluded_.insert(m).second) continue;
+        for (const xmlNode* c = m->children; c; c = c->next)
+          if (c->type == XML_ELEMENT_NODE) inside.push_back(c);
+      }
+    }
+    if (!matched)
+      throw ExcludeError(name_, k, selectors[k], "matches no element of the file; " + exclude_hint(text, all));
+  }
+}
 
 void Document::apply_class_styles() {
   // Exporters write `<style>.st0{fill:#F00;}</style>` and class="st0" (Illustrator), or type and id

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,11 @@ class Document {
   const std::string& name() const { return name_; }
   /// What the document itself could not apply, as (element, problem) warnings.
   const std::vector<std::pair<std::string, std::string>>& notes() const { return notes_; }
+  /// Leaves out every element `selectors` match, with everything inside it (SvgOptions::exclude); throws
+  /// ExcludeError for a selector that does not parse or matches no element.
+  void exclude(const std::vector<std::string>& selectors);
+  /// Whether the element was left out, itself or by an element it lies in.
+  bool excluded(const xmlNode* node) const { return excluded_.contains(node); }
 
  private:
   void index(xmlNode* node, int depth);
@@ -88,6 +94,7 @@ class Document {
   xmlNs* svg_ns_ = nullptr;
   std::map<std::string, xmlNode*> by_id_;
   std::vector<std::pair<std::string, std::string>> notes_;
+  std::set<const xmlNode*> excluded_;
 };
 
 /// The warning for path data `d` that svgpp's grammar read up to offset `stop` only: the character to

@@ -325,6 +325,21 @@ World build_world(const SceneSpec& given, Container container, std::vector<Space
   return world;
 }
 
+ArtShape load_element_art(const SceneSpec& scene, std::size_t index) {
+  const LibraryElementSpec& spec = scene.elements.at(index);
+  SvgOptions options;
+  options.flatten_tolerance = scene.params.art.flatten_tolerance;
+  options.exclude = spec.exclude;
+  try {
+    return load_art(spec.art, options);
+  } catch (const ExcludeError& e) {
+    // The scene's entry is what the designer edits: name it, and the element and art it applies to.
+    throw InputError(scene.file.string() + ": elements[" + std::to_string(index) + "].exclude[" +
+                     std::to_string(e.index) + "]: \"" + e.selector + "\" in " + spec.art.string() + " (element `" +
+                     spec.name + "`): " + e.problem);
+  }
+}
+
 World make_world(const SceneSpec& scene) {
   Container container =
       make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
@@ -341,7 +356,7 @@ World make_world(const SceneSpec& scene) {
   std::vector<SpacetimeElement> library;
   for (std::size_t i = 0; i < scene.elements.size(); ++i) {
     const LibraryElementSpec& spec = scene.elements[i];
-    const ArtShape art = load_art(spec.art, {scene.params.art.flatten_tolerance});
+    const ArtShape art = load_element_art(scene, i);
     library.push_back(build_element(spec.name, art, spec.animation, scene.params, element_seed(scene.seed, i)));
   }
   return build_world(scene, std::move(container), std::move(library));

@@ -267,3 +267,87 @@ TEST_CASE("animpak check --container: a .path hole (type 7) is counted and measu
             "path 5: container.holes names a path the file does not have") != std::string::npos);
   CHECK(run_animpak("check " + frame.string() + " --holes 1").code == 1);  // --holes needs --container
 }
+
+namespace {
+
+// A square body and, apart from it, a drop-shadow ellipse with an id and a class: two outline pieces.
+constexpr const char* kShadowedSvg = R"svg(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 300 100">
+  <g id="bee"><rect id="body" x="0" y="0" width="100" height="100" fill="#fc0"/></g>
+  <ellipse id="shadow" class="shade" cx="250" cy="90" rx="40" ry="10" fill="#000" fill-opacity="0.5"/></svg>)svg";
+
+// The alpha of the --png picture at pixel (x, y).
+int png_alpha(const std::filesystem::path& png, int x, int y) {
+  auto in = OIIO::ImageInput::open(png.string());
+  REQUIRE(in);
+  const OIIO::ImageSpec spec = in->spec();
+  REQUIRE(spec.nchannels == 4);
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(spec.width) * spec.height * 4);
+  REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, pixels.data()));
+  return pixels[(static_cast<std::size_t>(y) * spec.width + x) * 4 + 3];
+}
+
+}  // namespace
+
+TEST_CASE("animpak check: every piece of the outline it bridges is named, with its share and the exclude entry") {
+  const animpak::test::TempDir scratch("animpak-check-");
+  const auto svg = scratch_svg(scratch, "bee.svg", kShadowedSvg);
+  const CommandResult text = run_animpak("check " + svg.string());
+  INFO(text.out << text.err);
+  REQUIRE(text.code == 0);
+  CHECK(text.out.find("pieces     the art's outline comes in 2 pieces, bridged with a closing of radius") !=
+        std::string::npos);
+  CHECK(text.out.find("  2   11.1 % of the art's area, bridged: 1 path") != std::string::npos);
+  CHECK(text.out.find("path 1: ellipse#shadow.shade") != std::string::npos);
+  CHECK(text.out.find("to leave it out, add to the scene's element: \"exclude\": [\"#shadow\"]") != std::string::npos);
+  CHECK(text.out.find("(animpak check " + svg.string() + " --exclude '#shadow' --png OUT shows the art without it)") !=
+        std::string::npos);
+  CHECK(text.err.find("apart from it: path 1 ('shadow') 11.11 %") != std::string::npos);
+
+  const CommandResult json = run_animpak("check " + svg.string() + " --json");
+  REQUIRE(json.code == 0);
+  const nlohmann::json pieces = nlohmann::json::parse(json.out)["element"]["pieces"];
+  REQUIRE(pieces.size() == 2);
+  CHECK(pieces[0]["state"] == "largest");
+  CHECK(pieces[1]["state"] == "bridged");
+  CHECK(pieces[1]["share"].get<double>() == Approx(0.1116).epsilon(0.01));  // π·40·10 of 100² + π·40·10
+  CHECK(pieces[1]["paths"][0]["id"] == "shadow");
+  CHECK(pieces[1]["paths"][0]["element"] == "ellipse#shadow.shade");
+  CHECK(pieces[1]["exclude"] == nlohmann::json::array({"#shadow"}));
+}
+
+TEST_CASE(
+    "animpak check --exclude: the piece is gone from the outline and the picture, and one that matches nothing is "
+    "an error") {
+  const animpak::test::TempDir scratch("animpak-check-");
+  const auto svg = scratch_svg(scratch, "bee.svg", kShadowedSvg);
+  const auto png = scratch / "bee.png";
+  // 150 x 50 pixels, half a pixel per art unit: the shadow's middle is at (125, 45), the body's at (25, 25).
+  REQUIRE(run_animpak("check " + svg.string() + " --png " + png.string() + " --size 150").code == 0);
+  CHECK(png_alpha(png, 125, 45) > 64);
+  for (const std::string selector : {"#shadow", ".shade"}) {
+    INFO(selector);
+    const CommandResult r = run_animpak("check " + svg.string() + " --exclude '" + selector + "' --png " +
+                                        png.string() + " --size 150 --json");
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const nlohmann::json report = nlohmann::json::parse(r.out);
+    REQUIRE(report["paths"].size() == 1);
+    CHECK(report["paths"][0]["id"] == "body");
+    CHECK(report["element"]["pieces"].empty());
+    CHECK(report["element"]["bridge_radius"] == 0.0);
+    CHECK(report["exclude"] == nlohmann::json::array({selector}));
+    CHECK(r.err.find("bridged") == std::string::npos);
+    CHECK(png_alpha(png, 125, 45) == 0);
+    CHECK(png_alpha(png, 25, 25) == 255);
+  }
+  const CommandResult text = run_animpak("check " + svg.string() + " --exclude '#shadow' --exclude '#bee'");
+  CHECK(text.code == 2);
+  CHECK(text.err.find("no drawable geometry") != std::string::npos);
+
+  const CommandResult unknown = run_animpak("check " + svg.string() + " --exclude '#shadw'");
+  CHECK(unknown.code == 2);
+  CHECK(unknown.err.find("bee.svg: exclude \"#shadw\": matches no element of the file; did you mean \"#shadow\"?") !=
+        std::string::npos);
+  const CommandResult container = run_animpak("check " + svg.string() + " --container --exclude '#shadow'");
+  CHECK(container.code == 1);
+}

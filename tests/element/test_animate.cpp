@@ -14,7 +14,7 @@ namespace {
 
 // A 5 × 5 grid filling [0.3, 0.7]², its square outline, and the identity frame.
 SliceMesh square() { return grid_slice(5, 5, 0.1, {0.3, 0.3}); }
-Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}, {}}; }
+Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}, {}, {}, 0.0}; }
 const ArtFrame identity{};
 
 double mesh_area(const SliceMesh& mesh, const std::vector<Vec2>& p) {

@@ -219,3 +219,56 @@ TEST_CASE("element_outline refuses art too dense to count its crossings in bound
                     Catch::Contains("back-and-forth.svg: the art has so many long segments lying over one another") &&
                         Catch::Contains("simplify the path in your editor"));
 }
+
+TEST_CASE("element_outline names the pieces it bridges or drops, with each one's share of the art's area",
+          "[element][outline][pieces]") {
+  // A square body and, apart from it, a drop-shadow ellipse: two pieces, bridged; docs/scene-format.md,
+  // "Leaving pieces of the art out".
+  const std::string svg = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 400 200">
+    <g id="bee"><rect id="body" x="0" y="0" width="100" height="100" fill="#fc0"/></g>
+    <ellipse id="shadow" class="shade" cx="250" cy="90" rx="40" ry="10" fill="#000" fill-opacity="0.2"/></svg>)";
+  const ArtShape art = parse_svg(svg, "bee.svg");
+  const auto area_of = [](const ArtShape& a) {
+    double area = 0.0;
+    for (const auto& ring : painted_region(a)) area += signed_area(ring);
+    return area;
+  };
+  const double whole = area_of(art);
+  const Outline outline = element_outline(normalize_art(art), 0.04);
+  REQUIRE(outline.pieces.size() == 2);
+  CHECK(outline.bridge_radius > 0.0);
+  const OutlinePiece& shadow = outline.pieces[1];
+  CHECK(shadow.paths == std::vector<int>{1});
+  CHECK_FALSE(shadow.dropped);
+  CHECK(outline.pieces[0].paths == std::vector<int>{0});
+  CHECK(outline.pieces[0].share + shadow.share == Approx(1.0));
+  // The ellipse's polygon: a little under π·40·10 of the square's 100².
+  CHECK(shadow.share == Approx(3.1416 * 400 / (10000 + 3.1416 * 400)).epsilon(0.01));
+  REQUIRE(outline.notes.size() == 1);
+  CHECK_THAT(outline.notes.front(), Catch::Contains("bridged 2 disjoint outline pieces") &&
+                                        Catch::Contains("apart from it: path 1 ('shadow') 11.") &&
+                                        Catch::Contains("\"exclude\""));
+
+  // Left out by its id or its class: one piece, no bridge, and the area smaller by its share.
+  for (const std::string selector : {"#shadow", ".shade"}) {
+    INFO(selector);
+    SvgOptions options;
+    options.exclude = {selector};
+    const ArtShape without = parse_svg(svg, "bee.svg", options);
+    REQUIRE(without.paths.size() == 1);
+    CHECK(area_of(without) == Approx(whole * (1.0 - shadow.share)).epsilon(1e-9));
+    const Outline one = element_outline(normalize_art(without), 0.04);
+    CHECK(one.pieces.empty());
+    CHECK(one.bridge_radius == 0.0);
+    CHECK(one.notes.empty());
+  }
+
+  // Too far to bridge: the smaller blob is dropped, and its one path paints in both pieces.
+  const Outline blobs = element_outline(normalize_art(two_blobs_art()), 0.04);
+  REQUIRE(blobs.pieces.size() == 2);
+  CHECK(blobs.pieces[1].dropped);
+  CHECK(blobs.pieces[1].paths == std::vector<int>{0});
+  CHECK(blobs.pieces[0].paths == std::vector<int>{0});
+  CHECK(blobs.pieces[1].share == Approx(9.0 / 409.0));
+  CHECK_THAT(blobs.notes.front(), Catch::Contains("path 0 ('path0') 2.20 % (dropped)"));
+}

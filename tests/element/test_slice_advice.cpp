@@ -14,7 +14,7 @@ namespace {
 
 // A 5 × 5 grid filling [0.3, 0.7]² with its square outline: corners 0.28 from the centre.
 SliceMesh square() { return grid_slice(5, 5, 0.1, {0.3, 0.3}); }
-Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}, {}}; }
+Outline square_outline() { return Outline{{{0.3, 0.7}, {0.7, 0.7}, {0.7, 0.3}, {0.3, 0.3}}, {}, {}, {}, 0.0}; }
 
 AnimationSpec rotate(double turns) {
   AnimationSpec spec;

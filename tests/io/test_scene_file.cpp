@@ -604,3 +604,18 @@ TEST_CASE("parse_scene: nesting deeper than 64 levels is refused while parsing, 
       R"({"container": {"art": "heart.path"}, "elements": )" + std::string(63, '[') + std::string(63, ']') + "}";
   CHECK_THAT(scene_error_of(text), !Contains("nested more than"));
 }
+
+TEST_CASE("parse_scene: an element's exclude is a list of distinct selectors, and only for SVG art") {
+  const std::string star = std::string(ANIMPAK_SOURCE_DIR) + "/examples/default/star.svg";
+  const auto with = [&](const std::string& exclude) {
+    return scene(R"([{"art": ")" + star + R"(", "exclude": )" + exclude + "}]");
+  };
+  const SceneSpec s = parse_scene_text(with(R"(["#shadow", ".shade", "g#layer1 > path"])"));
+  CHECK(s.elements[0].exclude == std::vector<std::string>{"#shadow", ".shade", "g#layer1 > path"});
+  CHECK(parse_scene_text(scene(kBird)).elements[0].exclude.empty());
+  CHECK(scene_error_of(with(R"("#shadow")")) == "scene.json: elements[0].exclude: expected an array, got \"#shadow\"");
+  CHECK(scene_error_of(with(R"([""])")) == "scene.json: elements[0].exclude[0]: expected a non-empty string, got \"\"");
+  CHECK(scene_error_of(with(R"(["#a", "#a"])")) == "scene.json: elements[0].exclude[1]: \"#a\" is listed twice");
+  CHECK_THAT(scene_error_of(scene(R"([{"art": "bird.path", "exclude": ["#a"]}])")),
+             StartsWith("scene.json: elements[0].exclude: a .path file has no ids or classes to select a piece by"));
+}
