@@ -47,7 +47,7 @@ typedef float ap_float;
 /* How far inside the container the containment projection puts a vertex (reference.hpp). */
 #define AP_CONTAINMENT_MARGIN 1e-5f
 
-/* SpringClass values (element.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
+/* SpringClass values (include/animpak/spring_class.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
 #define AP_SPRING_CLASSES 5
 
 /* ForceParams.motion_curve: the curve between slices (include/animpak/curve.hpp, CurveMode). */

@@ -28,32 +28,11 @@ std::string script_json(const json& value) {
   return text;
 }
 
-// The value at a dotted path ("quality.frames.coverage.mean", "final_growth.3.min"), null when absent.
-const json& at_path(const json& root, const std::string& path) {
-  static const json null_value;
-  const json* node = &root;
-  std::size_t begin = 0;
-  while (begin <= path.size()) {
-    const std::size_t end = std::min(path.find('.', begin), path.size());
-    const std::string key = path.substr(begin, end - begin);
-    if (node->is_object() && node->contains(key)) {
-      node = &(*node)[key];
-    } else if (node->is_array() && !key.empty() && key.find_first_not_of("0123456789") == std::string::npos &&
-               std::stoul(key) < node->size()) {
-      node = &(*node)[std::stoul(key)];
-    } else {
-      return null_value;
-    }
-    begin = end + 1;
-  }
-  return *node;
-}
-
 // One figure of stats.json in a <span data-stat>: the value at `path` times `scale` with `decimals`
 // decimals and `unit` after it, or a dash for null (the page then carries no number to compare).
 std::string stat(const json& stats, const std::string& path, int decimals, double scale = 1.0,
                  const std::string& unit = "") {
-  const json& value = at_path(stats, path);
+  const json& value = stats_at(stats, path);
   if (!value.is_number()) return "<span class=\"none\" data-stat-none=\"" + xml_escaped(path) + "\">–</span>";
   std::ostringstream out;
   out << "<span data-stat=\"" << xml_escaped(path) << "\"";
@@ -63,7 +42,7 @@ std::string stat(const json& stats, const std::string& path, int decimals, doubl
 }
 
 std::string text_of(const json& stats, const std::string& path) {
-  const json& value = at_path(stats, path);
+  const json& value = stats_at(stats, path);
   if (value.is_string()) return xml_escaped(value.get<std::string>());
   if (value.is_null()) return "–";
   return xml_escaped(value.dump());
@@ -165,7 +144,7 @@ std::string base64(const std::string& bytes) {
 
 std::string report_page(const ReportInput& input) {
   const json& stats = input.stats;
-  const json& frames = at_path(stats, "frames");
+  const json& frames = stats_at(stats, "frames");
   if (!frames.is_array() || frames.empty())
     throw InputError(
         "stats.json: no frames (packed with --no-render, or by animpak-solve); run `animpak render DIR` first, "
@@ -173,8 +152,8 @@ std::string report_page(const ReportInput& input) {
   const std::size_t n = frames.size();
   std::vector<double> t(n);
   std::vector<std::optional<double>> coverage(n), channel(n), wall(n), kink(n);
-  const json& peaks = at_path(stats, "motion.acceleration.frame_peak");
-  const std::optional<double> median = number_at(at_path(stats, "motion.acceleration"), "median");
+  const json& peaks = stats_at(stats, "motion.acceleration.frame_peak");
+  const std::optional<double> median = number_at(stats_at(stats, "motion.acceleration"), "median");
   for (std::size_t i = 0; i < n; ++i) {
     t[i] = number_at(frames[i], "t").value_or(double(i) / double(n));
     coverage[i] = number_at(frames[i], "coverage");
@@ -215,7 +194,7 @@ std::string report_page(const ReportInput& input) {
               stat(stats, fq + "coverage.mean", 1, 100, " %") + " (" + stat(stats, fq + "coverage.min", 1, 100, " %") +
                   " – " + stat(stats, fq + "coverage.max", 1, 100, " %") + ")",
               "mean over the frames (lowest – highest)");
-  if (at_path(stats, "still_reference.mean_over_still").is_number())
+  if (stats_at(stats, "still_reference.mean_over_still").is_number())
     page << row("against standing still", stat(stats, "still_reference.mean_over_still", 2),
                 "mean coverage over the still packing's " + stat(stats, "still_reference.coverage", 1, 100, " %"));
   page << row("art outside",
@@ -232,7 +211,7 @@ std::string report_page(const ReportInput& input) {
        << row("slices show", stat(stats, "motion.slice_ratio", 2),
               "acceleration next to a slice over elsewhere; 1 when they do not show");
   std::size_t worst = 0;
-  const json& sizes = at_path(stats, "motion.size_over_script");
+  const json& sizes = stats_at(stats, "motion.size_over_script");
   for (std::size_t e = 0; sizes.is_array() && e < sizes.size(); ++e)
     if (number_at(sizes[e], "ratio").value_or(0.0) > number_at(sizes[worst], "ratio").value_or(0.0)) worst = e;
   if (sizes.is_array() && !sizes.empty())
@@ -244,7 +223,7 @@ std::string report_page(const ReportInput& input) {
   // The plots.
   std::vector<double> between_t;
   std::vector<std::optional<double>> between_coverage;
-  for (const json& b : at_path(stats, "between_slices")) {
+  for (const json& b : stats_at(stats, "between_slices")) {
     between_t.push_back(number_at(b, "t").value_or(0.0));
     between_coverage.push_back(number_at(b, "coverage"));
   }
@@ -256,7 +235,7 @@ std::string report_page(const ReportInput& input) {
   page << "<h2>Per frame</h2>\n<div id=\"plots\">\n";
   std::vector<Series> coverage_series{{"frames", t, coverage_percent, "#1f6fb2"}};
   if (!between_t.empty()) coverage_series.push_back({"between slices", between_t, between_percent, "#8fb7dc", "extra"});
-  if (const auto still = number_at(at_path(stats, "still_reference"), "coverage"))
+  if (const auto still = number_at(stats_at(stats, "still_reference"), "coverage"))
     coverage_series.push_back(level("standing still", *still * 100.0, "#777"));
   page << plot({"plot-coverage", "Coverage", "frame time t", "% of the container", 0.0, t_max, true, std::nullopt},
                coverage_series);
@@ -265,13 +244,13 @@ std::string report_page(const ReportInput& input) {
   page << plot({"plot-wall", "Wall ratio", "frame time t", "wall gap / art gap", 0.0, t_max, true, 0.0},
                {{"frames", t, wall, "#a0522d"}, level("even: 0.5", 0.5, "#777")});
   std::vector<Series> kink_series{{"frames", t, kink, "#7b3fa0"}};
-  if (const auto overall = number_at(at_path(stats, "motion"), "kink"))
+  if (const auto overall = number_at(stats_at(stats, "motion"), "kink"))
     kink_series.push_back(level("kink", *overall, "#777"));
   page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0,
                 "rendered before animpak 0.11.0: run animpak render DIR"},
                kink_series);
-  const json& contact = at_path(stats, "quality.frames.contact.mean");
-  const double contact_step = number_at(at_path(stats, "quality.frames.contact"), "step").value_or(0.05);
+  const json& contact = stats_at(stats, "quality.frames.contact.mean");
+  const double contact_step = number_at(stats_at(stats, "quality.frames.contact"), "step").value_or(0.05);
   std::vector<Series> contact_series;
   double r_max = contact_step;
   if (contact.is_array()) {
@@ -344,6 +323,26 @@ std::string report_page(const ReportInput& input) {
   page << "<script id=\"frame-data\" type=\"application/json\">" << script_json(data) << "</script>\n<script>"
        << kScript << "</script>\n</body></html>\n";
   return page.str();
+}
+
+const json& stats_at(const json& root, const std::string& path) {
+  static const json null_value;
+  const json* node = &root;
+  std::size_t begin = 0;
+  while (begin <= path.size()) {
+    const std::size_t end = std::min(path.find('.', begin), path.size());
+    const std::string key = path.substr(begin, end - begin);
+    if (node->is_object() && node->contains(key)) {
+      node = &(*node)[key];
+    } else if (node->is_array() && !key.empty() && key.find_first_not_of("0123456789") == std::string::npos &&
+               std::stoul(key) < node->size()) {
+      node = &(*node)[std::stoul(key)];
+    } else {
+      return null_value;
+    }
+    begin = end + 1;
+  }
+  return *node;
 }
 
 }  // namespace animpak::cli

@@ -14,6 +14,11 @@
 
 namespace animpak::cli {
 
+/// The value of stats.json (or any JSON) at a dotted path ("quality.frames.coverage.mean",
+/// "final_growth.3.min": a number indexes an array), null when absent. The report page, the sweep's page and
+/// table, and their tests all read stats.json through it.
+const nlohmann::json& stats_at(const nlohmann::json& root, const std::string& path);
+
 /// One row of the page's table of elements.
 struct ReportElement {
   std::string name;       ///< the element's name in stats.json ("star#3", a guided element's own name)

@@ -19,23 +19,9 @@ namespace {
 
 using nlohmann::json;
 
-const json& stat_at(const json& root, const std::string& path) {
-  static const json null_value;
-  const json* node = &root;
-  std::size_t begin = 0;
-  while (begin <= path.size()) {
-    const std::size_t end = std::min(path.find('.', begin), path.size());
-    const std::string key = path.substr(begin, end - begin);
-    if (!node->is_object() || !node->contains(key)) return null_value;
-    node = &(*node)[key];
-    begin = end + 1;
-  }
-  return *node;
-}
-
 std::optional<double> measure_value(const CollectedRun& r, const SweepMeasure& m) {
   if (r.state != "done") return std::nullopt;
-  const json& v = stat_at(r.stats, m.path);
+  const json& v = stats_at(r.stats, m.path);
   return v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt;
 }
 
@@ -264,8 +250,8 @@ std::string sweep_csv(const SweepCollection& c) {
     for (const auto& [name, value] : run.set) out << "," << value_text(value);
     // Each figure as stats.json writes it, to the last digit.
     for (const SweepMeasure& m : sweep_measures())
-      out << "," << (measure_value(r, m) ? stat_at(r.stats, m.path).dump() : std::string());
-    const json& reason = stat_at(r.stats, "stop_reason");
+      out << "," << (measure_value(r, m) ? stats_at(r.stats, m.path).dump() : std::string());
+    const json& reason = stats_at(r.stats, "stop_reason");
     out << "," << (reason.is_string() ? csv_field(reason.get<std::string>()) : std::string()) << ","
         << csv_field(r.message) << ",runs/" << csv_field(run.id) << "\n";
   }

@@ -18,31 +18,13 @@
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
+using animpak::cli::stats_at;
 using Catch::Matchers::Contains;
 using nlohmann::json;
 
 namespace {
 
 bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
-
-const json& at_path(const json& root, const std::string& path) {
-  static const json null_value;
-  const json* node = &root;
-  std::size_t begin = 0;
-  while (begin <= path.size()) {
-    const std::size_t end = std::min(path.find('.', begin), path.size());
-    const std::string key = path.substr(begin, end - begin);
-    if (node->is_object() && node->contains(key))
-      node = &(*node)[key];
-    else if (node->is_array() && !key.empty() && std::isdigit(static_cast<unsigned char>(key[0])) &&
-             std::stoul(key) < node->size())
-      node = &(*node)[std::stoul(key)];
-    else
-      return null_value;
-    begin = end + 1;
-  }
-  return *node;
-}
 
 // The <svg> element with this id, from its start tag to its </svg>, or empty.
 std::string svg_with_id(const std::string& dom, const std::string& id) {
@@ -111,7 +93,7 @@ std::vector<std::string> page_problems(const std::string& dom, const json& stats
         digits += c;
       else if (c != ',' && !digits.empty())
         break;
-    const json& value = at_path(stats, path);
+    const json& value = stats_at(stats, path);
     if (!value.is_number() || digits.empty()) {
       problems.push_back(path + ": shows \"" + text + "\", stats.json has " + value.dump());
       continue;

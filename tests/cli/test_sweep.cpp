@@ -17,6 +17,7 @@
 #include <set>
 
 #include "animpak/error.hpp"
+#include "report_page.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "skip.hpp"
@@ -24,6 +25,7 @@
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
+using animpak::cli::stats_at;
 using Catch::Matchers::Contains;
 using nlohmann::json;
 
@@ -38,20 +40,6 @@ std::string tiny_scene() { return animpak::test::star_scene(3, 6, 1, {"", R"("in
 const std::string kRunOptions = " --frames 4 --size 64 --format png,gif";
 
 json read_json(const fs::path& file) { return json::parse(read_text(file)); }
-
-const json& at_path(const json& root, const std::string& path) {
-  static const json null_value;
-  const json* node = &root;
-  std::size_t begin = 0;
-  while (begin <= path.size()) {
-    const std::size_t end = std::min(path.find('.', begin), path.size());
-    const std::string key = path.substr(begin, end - begin);
-    if (!node->is_object() || !node->contains(key)) return null_value;
-    node = &(*node)[key];
-    begin = end + 1;
-  }
-  return *node;
-}
 
 std::vector<std::map<std::string, std::string>> read_csv(const fs::path& file) {
   std::vector<std::map<std::string, std::string>> rows;
@@ -131,7 +119,7 @@ std::vector<std::string> expected_order(const json& plan, const fs::path& dir, c
   std::vector<std::pair<double, std::pair<std::size_t, std::string>>> runs;
   for (const json& run : plan["runs"]) {
     const json stats = read_json(dir / "runs" / run["id"].get<std::string>() / "stats.json");
-    const double v = at_path(stats, path).get<double>();
+    const double v = stats_at(stats, path).get<double>();
     runs.push_back({higher ? -v : v, {run["index"].get<std::size_t>(), run["id"].get<std::string>()}});
   }
   std::stable_sort(runs.begin(), runs.end(), [&](const auto& a, const auto& b) {
@@ -165,7 +153,7 @@ std::vector<std::string> figure_problems(const std::string& dom, const fs::path&
           digits += c;
         else if (c != ',' && !digits.empty())
           break;
-      const json& value = at_path(stats, path);
+      const json& value = stats_at(stats, path);
       const std::size_t point = digits.find('.');
       const int decimals = point == std::string::npos ? 0 : int(digits.size() - point - 1);
       if (!value.is_number() || digits.empty() ||
@@ -375,7 +363,7 @@ TEST_CASE(
     for (const char* path :
          {"quality.frames.coverage.min", "quality.frames.coverage.mean", "quality.frames.wall_ratio.median",
           "quality.frames.empty_disc.median", "motion.kink", "iterations", "seconds.simulation"})
-      expected_figures += at_path(stats, path).is_number() ? 1 : 0;
+      expected_figures += stats_at(stats, path).is_number() ? 1 : 0;
   }
   CHECK(figures == expected_figures);
   CHECK(figures >= 4 * 5);
