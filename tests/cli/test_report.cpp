@@ -14,11 +14,11 @@
 #include "report_page.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "shown_figures.hpp"
 #include "skip.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
-using animpak::cli::stats_at;
 using Catch::Matchers::Contains;
 using nlohmann::json;
 
@@ -82,27 +82,9 @@ std::vector<std::string> page_problems(const std::string& dom, const json& stats
                          std::to_string(expected.at(id)));
   }
   // Every number shown is stats.json's at its path, to the decimals shown.
-  const std::regex shown(R"re(<span data-stat="([^"]+)"(?: data-scale="([^"]+)")?>([^<]*)</span>)re");
   int numbers = 0;
-  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), shown); it != std::sregex_iterator(); ++it, ++numbers) {
-    const std::string path = (*it)[1], text = (*it)[3];
-    const double scale = (*it)[2].matched ? std::stod((*it)[2]) : 1.0;
-    std::string digits;
-    for (const char c : text)
-      if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-')
-        digits += c;
-      else if (c != ',' && !digits.empty())
-        break;
-    const json& value = stats_at(stats, path);
-    if (!value.is_number() || digits.empty()) {
-      problems.push_back(path + ": shows \"" + text + "\", stats.json has " + value.dump());
-      continue;
-    }
-    const std::size_t point = digits.find('.');
-    const int decimals = point == std::string::npos ? 0 : int(digits.size() - point - 1);
-    if (std::abs(std::stod(digits) - value.get<double>() * scale) > 0.5 * std::pow(10.0, -decimals) * 1.0001)
-      problems.push_back(path + ": shows " + text + ", stats.json has " + value.dump());
-  }
+  for (const std::string& problem : animpak::test::shown_figure_problems(dom, stats, numbers))
+    problems.push_back(problem);
   if (numbers < 25) problems.push_back("only " + std::to_string(numbers) + " numbers are tied to stats.json");
   return problems;
 }

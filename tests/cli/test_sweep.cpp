@@ -20,6 +20,7 @@
 #include "report_page.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
+#include "shown_figures.hpp"
 #include "skip.hpp"
 #include "sweep_plan.hpp"
 #include "temp_dir.hpp"
@@ -135,7 +136,6 @@ std::vector<std::string> expected_order(const json& plan, const fs::path& dir, c
 std::vector<std::string> figure_problems(const std::string& dom, const fs::path& dir, int& figures) {
   std::vector<std::string> problems;
   const std::regex card(R"re(<div class="card" id="run-[^"]*" data-id="([^"]+)")re");
-  const std::regex shown(R"re(<span data-stat="([^"]+)"(?: data-scale="([^"]+)")?>([^<]*)</span>)re");
   std::vector<std::pair<std::size_t, std::string>> starts;
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), card); it != std::sregex_iterator(); ++it)
     starts.push_back({std::size_t(it->position()), (*it)[1]});
@@ -143,23 +143,8 @@ std::vector<std::string> figure_problems(const std::string& dom, const fs::path&
     const std::size_t end = k + 1 < starts.size() ? starts[k + 1].first : dom.find("<script", starts[k].first);
     const std::string body = dom.substr(starts[k].first, end - starts[k].first);
     const json stats = read_json(dir / "runs" / starts[k].second / "stats.json");
-    for (auto it = std::sregex_iterator(body.begin(), body.end(), shown); it != std::sregex_iterator(); ++it) {
-      ++figures;
-      const std::string path = (*it)[1], text = (*it)[3];
-      const double scale = (*it)[2].matched ? std::stod((*it)[2]) : 1.0;
-      std::string digits;
-      for (const char c : text)
-        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-')
-          digits += c;
-        else if (c != ',' && !digits.empty())
-          break;
-      const json& value = stats_at(stats, path);
-      const std::size_t point = digits.find('.');
-      const int decimals = point == std::string::npos ? 0 : int(digits.size() - point - 1);
-      if (!value.is_number() || digits.empty() ||
-          std::abs(std::stod(digits) - value.get<double>() * scale) > 0.5 * std::pow(10.0, -decimals) * 1.0001)
-        problems.push_back(starts[k].second + ": " + path + " shows " + text + ", stats.json has " + value.dump());
-    }
+    for (const std::string& problem : animpak::test::shown_figure_problems(body, stats, figures))
+      problems.push_back(starts[k].second + ": " + problem);
   }
   return problems;
 }
