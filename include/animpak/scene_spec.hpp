@@ -144,6 +144,11 @@ struct SceneSpec {
 /// e.g. `scene.json: elements[2].animation.keys[0].t: expected a number in [0, 1], got 1.5`.
 SceneSpec load_scene(const std::filesystem::path& file);
 
+/// The guided element's path leaves its start and ends there again, within the 1e-6 art units a loop
+/// allows; one held in place (every target at its start) does not. Such a path is a closed curve whether
+/// or not the scene loops (docs/scene-format.md, "`guided[i]`").
+bool ends_where_it_starts(const GuidedSpec& guided);
+
 /// What a scene that parses may still not mean, one line each without "warning: " (build_world adds them
 /// to its notes, `check` prints them): a guided element whose path leaves its start and ends there again,
 /// within the 1e-6 art units a loop allows, in a scene that does not loop (docs/scene-format.md,

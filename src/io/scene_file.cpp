@@ -573,15 +573,19 @@ SceneSpec load_scene(const fs::path& file) {
   return parse_scene(text, file, file.parent_path());
 }
 
+bool ends_where_it_starts(const GuidedSpec& g) {
+  if (g.targets.size() < 2) return false;
+  const TargetSpec& first = g.targets.front();
+  const auto away = [&](const TargetSpec& t) { return std::hypot(t.x - first.x, t.y - first.y) > kLoopTolerance; };
+  return !away(g.targets.back()) && std::any_of(g.targets.begin(), g.targets.end(), away);
+}
+
 std::vector<std::string> scene_warnings(const SceneSpec& scene) {
   std::vector<std::string> warnings;
   if (scene.loop) return warnings;
   for (const GuidedSpec& g : scene.guided) {
-    if (g.targets.size() < 2) continue;
+    if (!ends_where_it_starts(g)) continue;
     const TargetSpec& first = g.targets.front();
-    const auto away = [&](const TargetSpec& t) { return std::hypot(t.x - first.x, t.y - first.y) > kLoopTolerance; };
-    // Back at its start after going somewhere: one held in place (every target at the start) is not a loop.
-    if (away(g.targets.back()) || std::none_of(g.targets.begin(), g.targets.end(), away)) continue;
     warnings.push_back("guided element \"" + g.name + "\" ends where it starts (x " + format_number(first.x) + ", y " +
                        format_number(first.y) +
                        ") but the scene does not loop; add \"loop\": true to the scene to make the animation "

@@ -11,10 +11,6 @@
 namespace animpak::scene_detail {
 namespace {
 
-// A guided path whose last target lies this close to its first (art units) is closed: the tolerance of the
-// loop check (src/io/scene_file.cpp).
-constexpr double kClosedPathTolerance = 1e-6;
-
 Vec2 rotate(Vec2 v, double angle) {
   // y points down, so the usual rotation matrix turns clockwise on screen for a positive angle.
   const double c = std::cos(angle), s = std::sin(angle);
@@ -56,9 +52,7 @@ std::vector<GuideKnot> guide_knots(const SceneSpec& scene, std::size_t index, co
   // A path that ends where it starts in a scene that does not loop is still a closed curve: it runs on
   // through its own start, so that it turns no corner there (an oval stays an oval, not a lens).
   const std::size_t n = g.targets.size();
-  const bool closed = n >= 3 && std::hypot(g.targets.back().x - g.targets.front().x,
-                                           g.targets.back().y - g.targets.front().y) <= kClosedPathTolerance;
-  if (before == nullptr && after == nullptr && closed) {
+  if (before == nullptr && after == nullptr && ends_where_it_starts(g)) {
     const double period = g.targets.back().t - g.targets.front().t;
     knots.insert(knots.begin(), {g.targets[n - 2].t - period, unit(g.targets[n - 2])});
     knots.push_back({g.targets[1].t + period, unit(g.targets[1])});
