@@ -57,8 +57,12 @@ std::vector<Placement> place_unguided(const SceneSpec& scene, const Container& c
 void make_way(const SceneSpec& scene, const Container& container, const std::vector<SpacetimeElement>& library,
               const std::vector<Placement>& guided, std::vector<Placement>& unguided, double margin);
 
+/// A scene that sets no initial_scale and crowds the default starts at this share of the largest that places
+/// (docs/first-scene.md, "When the elements do not fit").
+inline constexpr double kPickedScaleShare = 0.9;
+
 /// For a scene that does not set params.initial_scale and whose unguided elements do not all place at the
-/// default: 0.9 × the largest initial_scale at which they do (rounded down to three significant digits,
+/// default: kPickedScaleShare × the largest initial_scale at which they do (rounded down to three significant digits,
 /// and placing), searched on the placement itself. Empty when the scene sets initial_scale, seeds as many
 /// as fit, places at its initial_scale already, or places at no initial_scale in the parameter's range.
 std::optional<double> picked_initial_scale(const SceneSpec& scene, const Container& container,

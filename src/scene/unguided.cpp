@@ -52,9 +52,6 @@ double closest_pair(const std::vector<Vec2>& points) {
 
 // Lloyd iterations over the picked seeds (docs/parameters.md, "Seeds for a fixed count").
 constexpr int seed_relaxation = 20;
-// A scene that sets no initial_scale and crowds the default starts at this share of the largest that places
-// (docs/first-scene.md, "When the elements do not fit").
-constexpr double kPickedScaleShare = 0.9;
 
 template <class T>
 void shuffle(std::vector<T>& v, Rng& rng) {

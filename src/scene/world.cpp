@@ -236,8 +236,8 @@ World build_world(const SceneSpec& given, Container container, std::vector<Space
   if (start) {
     std::ostringstream note;
     note << "params.initial_scale is not set and the elements asked for do not all place at "
-         << given.params.placement.initial_scale << ": starting them at " << *start
-         << " (0.9 of the largest at which they do); set params.initial_scale to choose";
+         << given.params.placement.initial_scale << ": starting them at " << *start << " ("
+         << scene_detail::kPickedScaleShare << " of the largest at which they do); set params.initial_scale to choose";
     world.notes.push_back(note.str());
   }
 
