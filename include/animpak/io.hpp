@@ -96,6 +96,10 @@ class ExcludeError : public InputError {
   std::string problem;
 };
 
+/// A name an `exclude` selector can write as it is after `#` or `.`: letters, digits, `-`, `_` and
+/// non-ASCII characters, as SVG import's selectors read them (an id such as "Layer 1" cannot be selected).
+bool selector_name(const std::string& name);
+
 /// "g#layer1 > path#path3421.shadow": the path's lineage as a selector would write it, each element as its
 /// tag, #id and .classes; "path 4" for a path without one (a .path file's).
 std::string lineage_text(const ArtPath& path);

@@ -187,14 +187,6 @@ Json element_json(const SpacetimeElement& e, const ArtOutline& outline, const Pa
           {"holes", outline.hole_areas}};
 }
 
-// A name a selector can use as it is (Compound's identifiers in src/io/svg_document.cpp).
-bool selectable(const std::string& name) {
-  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    const auto u = static_cast<unsigned char>(c);
-    return std::isalnum(u) || c == '-' || c == '_' || u >= 0x80;
-  });
-}
-
 // The `exclude` entries that leave out `piece` and nothing else: for each of its paths, the outermost
 // element it is drawn through whose #id (else one of its .classes) selects only paths of the piece;
 // `unnamed` gets the paths that no such selector reaches (they need an id). A path that also paints in
@@ -227,9 +219,9 @@ PieceExclusion piece_exclusion(const ArtShape& art, const std::vector<OutlinePie
     if (!only_here(path) || std::find(covered.begin(), covered.end(), path) != covered.end()) continue;
     std::string chosen;
     for (const ArtOrigin& o : art.paths[path].lineage) {
-      if (selectable(o.id) && confined([&](const ArtOrigin& x) { return x.id == o.id; })) chosen = "#" + o.id;
+      if (selector_name(o.id) && confined([&](const ArtOrigin& x) { return x.id == o.id; })) chosen = "#" + o.id;
       for (std::size_t c = 0; chosen.empty() && c < o.classes.size(); ++c)
-        if (selectable(o.classes[c]) && confined([&](const ArtOrigin& x) {
+        if (selector_name(o.classes[c]) && confined([&](const ArtOrigin& x) {
               return std::find(x.classes.begin(), x.classes.end(), o.classes[c]) != x.classes.end();
             }))
           chosen = "." + o.classes[c];

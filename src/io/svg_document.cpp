@@ -162,6 +162,11 @@ std::vector<std::string> classes_of(const xmlNode* n) {
   return classes;
 }
 
+bool selector_char(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return std::isalnum(u) || c == '-' || c == '_' || u >= 0x80;
+}
+
 // One compound selector: an optional type (or *), then #ids and .classes.
 struct Compound {
   std::string type;  // empty: any element
@@ -170,9 +175,7 @@ struct Compound {
     size_t i = 0;
     const auto ident = [&] {
       const size_t start = i;
-      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' ||
-                                 text[i] == '_' || static_cast<unsigned char>(text[i]) >= 0x80))
-        ++i;
+      while (i < text.size() && selector_char(text[i])) ++i;
       return text.substr(start, i - start);
     };
     if (i < text.size() && text[i] == '*')
@@ -291,10 +294,9 @@ std::string exclude_hint(const std::string& selector, const std::vector<xmlNode*
     // The root is all of the art, never a piece of it.
     if (!draws_art(n) || n == all.front()) continue;
     const std::string id = attribute(n, "id");
-    Compound selectable;
-    if (!id.empty() && selectable.parse("#" + id)) ids.push_back("#" + id);
+    if (selector_name(id)) ids.push_back("#" + id);
     for (const std::string& c : classes_of(n))
-      if (std::find(classes.begin(), classes.end(), "." + c) == classes.end() && selectable.parse("." + c))
+      if (std::find(classes.begin(), classes.end(), "." + c) == classes.end() && selector_name(c))
         classes.push_back("." + c);
   }
   std::vector<std::string_view> names(ids.begin(), ids.end());
@@ -435,3 +437,11 @@ void Document::apply_class_styles() {
 }
 
 }  // namespace animpak::svg
+
+namespace animpak {
+
+bool selector_name(const std::string& name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), svg::selector_char);
+}
+
+}  // namespace animpak
