@@ -258,33 +258,41 @@ std::string read_folder_file(const fs::path& dir, const fs::path& relative, cons
   return read_regular_file(dir / relative, what_to_do, kMaxFolderFile);
 }
 
+int take_lock_file(const fs::path& file, const std::string& holder, const std::string& what,
+                   const std::string& link_fix, std::string& held_by) {
+  refuse_links_below(file.parent_path(), file.filename(), link_fix);
+  const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(file_error(file, "cannot take " + what, errno));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;
+    std::string text(200, '\0');
+    const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
+    text.resize(n > 0 ? std::size_t(n) : 0);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\0')) text.pop_back();
+    ::close(fd);
+    if (error != EWOULDBLOCK) throw InputError(file_error(file, "cannot take " + what, error));
+    held_by = text;
+    return -1;
+  }
+  // Who holds it, for the message a second run prints; the lock works without it.
+  if (!holder.empty() && ::ftruncate(fd, 0) == 0) {
+    const ssize_t written = ::pwrite(fd, holder.data(), holder.size(), 0);
+    static_cast<void>(written);
+  }
+  return fd;
+}
+
 FolderLock::FolderLock(const fs::path& dir, const std::string& command) {
   if (!fs::is_directory(dir))
     throw InputError(dir.string() + ": not a folder (" + (fs::exists(dir) ? "a file" : "it does not exist") +
                      "); give the folder `animpak pack --out` wrote");
-  const fs::path file = dir / ".animpak.lock";
-  refuse_links_below(dir, ".animpak.lock", "remove the link; animpak keeps its lock there");
-  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw InputError(file_error(file, "cannot take the folder's lock", errno));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int error = errno;
-    std::string holder(200, '\0');
-    const ssize_t n = ::pread(fd_, holder.data(), holder.size(), 0);
-    holder.resize(n > 0 ? std::size_t(n) : 0);
-    while (!holder.empty() && (holder.back() == '\n' || holder.back() == '\0')) holder.pop_back();
-    ::close(fd_);
-    fd_ = -1;
-    if (error != EWOULDBLOCK) throw InputError(file_error(file, "cannot take the folder's lock", error));
+  std::string held_by;
+  fd_ = take_lock_file(dir / ".animpak.lock", "pid " + std::to_string(::getpid()) + ": " + command + "\n",
+                       "the folder's lock", "remove the link; animpak keeps its lock there", held_by);
+  if (fd_ < 0)
     throw InputError(dir.string() + ": another animpak is using this folder" +
-                     (holder.empty() ? std::string() : " (" + holder + ")") +
+                     (held_by.empty() ? std::string() : " (" + held_by + ")") +
                      "; wait for it to end, or stop it, and run this command again");
-  }
-  const std::string holder = "pid " + std::to_string(::getpid()) + ": " + command + "\n";
-  // Who holds it, for the message a second run prints; the lock works without it.
-  if (::ftruncate(fd_, 0) == 0) {
-    const ssize_t written = ::pwrite(fd_, holder.data(), holder.size(), 0);
-    static_cast<void>(written);
-  }
 }
 
 FolderLock::~FolderLock() {

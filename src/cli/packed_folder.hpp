@@ -80,6 +80,13 @@ std::string read_folder_file(const std::filesystem::path& dir, const std::filesy
 /// One run per folder (docs/cli.md, "What survives"): an advisory lock (flock) on DIR/.animpak.lock,
 /// held until the object is destroyed or the process ends, however it ends. A second run is refused at
 /// once with InputError naming the one that holds it.
+/// An advisory lock (flock) on `file`, taken without waiting; a link in its place is refused (`link_fix`
+/// says what to do). Returns its descriptor (closing it lets the lock go), or -1 when another process
+/// holds it, with `held_by` set to what that process wrote in the file. A non-empty `holder` is written
+/// in the file for the next one to read. Other failures are InputError naming `what` ("the folder's lock").
+int take_lock_file(const std::filesystem::path& file, const std::string& holder, const std::string& what,
+                   const std::string& link_fix, std::string& held_by);
+
 class FolderLock {
  public:
   FolderLock(const std::filesystem::path& dir, const std::string& command);

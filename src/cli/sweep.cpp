@@ -86,21 +86,9 @@ class RunLock {
   /// The lock, or nullopt with `held_by` saying who holds it. `holder` empty: only look (the lock is let go
   /// at once and the file left as it is).
   static std::optional<RunLock> try_take(const fs::path& file, const std::string& holder, std::string& held_by) {
-    refuse_links_below(file.parent_path(), file.filename(), "remove the link; animpak keeps a run's lock there");
-    const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
-    if (fd < 0) throw InputError(file_error(file, "cannot take the run's lock", errno));
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      const int error = errno;
-      std::string text(200, '\0');
-      const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
-      text.resize(n > 0 ? std::size_t(n) : 0);
-      while (!text.empty() && (text.back() == '\n' || text.back() == '\0')) text.pop_back();
-      ::close(fd);
-      if (error != EWOULDBLOCK) throw InputError(file_error(file, "cannot take the run's lock", error));
-      held_by = text;
-      return std::nullopt;
-    }
-    if (!holder.empty() && ::ftruncate(fd, 0) == 0) static_cast<void>(::pwrite(fd, holder.data(), holder.size(), 0));
+    const int fd =
+        take_lock_file(file, holder, "the run's lock", "remove the link; animpak keeps a run's lock there", held_by);
+    if (fd < 0) return std::nullopt;
     return RunLock(fd);
   }
   RunLock(RunLock&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
