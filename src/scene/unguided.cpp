@@ -58,6 +58,27 @@ void shuffle(std::vector<T>& v, Rng& rng) {
   for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
 }
 
+// `seeds` in the order they spread: from the first seed, each next one the seed farthest from those
+// before it (ties to the lower index), as spread_seeds picks them.
+std::vector<Vec2> in_spreading_order(const std::vector<Vec2>& seeds) {
+  const std::size_t n = seeds.size();
+  std::vector<Vec2> order;
+  std::vector<double> room(n, std::numeric_limits<double>::infinity());
+  std::vector<bool> taken(n, false);
+  for (std::size_t next = 0; next < n;) {
+    taken[next] = true;
+    order.push_back(seeds[next]);
+    std::size_t best = n;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (taken[i]) continue;
+      room[i] = std::min(room[i], norm(seeds[i] - seeds[next]));
+      if (best == n || room[i] > room[best]) best = i;
+    }
+    next = best;
+  }
+  return order;
+}
+
 // How far a seed must stay from the wall: the largest rest radius of any library element at
 // initial_scale, with 5 % to spare, keeps a shrunken element inside whatever its orientation.
 double seed_margin(const std::vector<SpacetimeElement>& library, double initial_scale) {
@@ -79,7 +100,7 @@ std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& contai
   const std::string file = scene.file.string();
   std::vector<Vec2> seeds;
   spacing = scene.params.placement.seed_spacing;
-  if (fill) return free_seeds(container, spacing, margin, guided, rng);
+  if (fill) return in_spreading_order(free_seeds(container, spacing, margin, guided, rng));
   if (wanted <= 0) return seeds;
   // Start looser than `wanted` discs can fill and tighten in small steps, so the first spacing that
   // fits gives only a few extra seeds: dropping many random extras would leave holes.
@@ -113,11 +134,13 @@ std::vector<Vec2> unguided_seeds(const SceneSpec& scene, const Container& contai
   }
   shuffle(seeds, rng);
   seeds.resize(wanted);
-  return seeds;
+  return in_spreading_order(seeds);
 }
 
-// The library element of each of `seeds` seeds: every fixed count, then the rest by weight; shuffled so
-// kinds mix in space.
+// The library element of each of `seeds` seeds, which come in their spreading order: every fixed count,
+// then the rest by weight, each kind taking the next block of that order. The first block spreads over
+// the whole container, and each later one fills the gaps the blocks before it left, so an element's
+// nearest neighbours are mostly of other kinds: kinds mix in space.
 std::vector<int> library_picks(const SceneSpec& scene, const std::vector<int>& weighted, std::size_t seeds, Rng& rng) {
   std::vector<int> picks;
   for (std::size_t i = 0; i < scene.elements.size(); ++i)
