@@ -18,6 +18,7 @@
 // To extend (docs/architecture.md, "How to add a force", step 7): a new row of the groups above needs an
 // entry in row_cases() with a value in its range, not its default, not a power of two (so that products
 // round), in a world where it changes the result; the first case fails, naming the row, until it has one.
+// A row may have more entries, where another value takes another branch (wall_mirror 0: no mirror image).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -62,6 +63,7 @@ const std::vector<RowCase>& row_cases() {
       {"wall_repulsion", 3.7, RowWorld::crowded},
       {"wall_range", 0.13, RowWorld::crowded},
       {"wall_mirror", 2.3, RowWorld::crowded},
+      {"wall_mirror", 0, RowWorld::crowded, {{"wall_repulsion", 3.7}}},  // off: the wall's point force alone
       {"k_edge", 3700.0, RowWorld::crowded},
       {"k_shear", 6100.0, RowWorld::crowded},
       {"k_negative_space", 37.0, RowWorld::crowded},
@@ -101,10 +103,12 @@ const std::vector<RowCase>& row_cases() {
   return cases;
 }
 
-const RowCase* row_case(std::string_view row) {
+/// The row's cases, in table order: one, or more where another value takes another branch.
+std::vector<const RowCase*> row_cases_of(std::string_view row) {
+  std::vector<const RowCase*> out;
   for (const RowCase& c : row_cases())
-    if (c.row == row) return &c;
-  return nullptr;
+    if (c.row == row) out.push_back(&c);
+  return out;
 }
 
 const ParamInfo* row_info(std::string_view row) {
@@ -254,6 +258,38 @@ void compare_row(const RowCase& c, const ParamInfo& info, const std::vector<Devi
     }
 }
 
+/// One case of a row: its value valid, not the default, rounding in products; its base other rows; and
+/// the value changing the reference's forces or state against the default, without which the comparison
+/// proves nothing. Fails naming the parameter.
+void check_row_case(const ParamInfo& info, const RowCase& c) {
+  const double fallback = param_value(Params{}, info);
+  INFO(row_label(info, c.value));
+  CHECK(c.value >= info.min);
+  CHECK(c.value <= info.max);
+  CHECK(c.value != fallback);
+  if (param_is_integer(info)) {
+    CHECK(c.value == std::round(c.value));
+  } else if (c.value != 0.0) {
+    int exponent = 0;
+    CHECK(std::frexp(c.value, &exponent) != 0.5);  // not a power of two: products with it round
+  }
+  for (const auto& [name, v] : c.base)
+    if (row_info(name) == nullptr || name == info.name) {
+      FAIL_CHECK("parameter " << info.name << ": its world sets " << name
+                              << ", which is not another row of param_table()");
+      return;
+    }
+  const TinyWorld w = row_world(c.world);
+  const RowOutcome on = row_reference_outcome(w, row_params(c, info, c.value), c.settle);
+  const RowOutcome off = row_reference_outcome(w, row_params(c, info, fallback), c.settle);
+  const bool changes = !row_forces_difference(off.forces, off.parts, on.forces, on.parts).empty() ||
+                       !state_difference(off.state, on.state).empty();
+  if (!changes)
+    FAIL_CHECK("parameter " << info.name << " = " << c.value
+                            << " changes neither the forces nor the state of its world against its default: "
+                               "choose a value or world in row_cases() where it acts");
+}
+
 /// Compares every row the step reads whose group `wanted` accepts; a row without a case fails.
 template <typename Wanted>
 void compare_rows(Wanted wanted) {
@@ -262,13 +298,10 @@ void compare_rows(Wanted wanted) {
   int compared = 0;
   for (const ParamInfo& info : param_table()) {
     if (!row_reaches_step(info) || !wanted(info)) continue;
-    const RowCase* c = row_case(info.name);
-    if (c == nullptr) {
+    const std::vector<const RowCase*> cases = row_cases_of(info.name);
+    if (cases.empty())
       FAIL_CHECK("parameter " << info.name << " has no world in row_cases() (tests/equivalence/test_param_rows.cpp)");
-      continue;
-    }
-    compare_row(*c, info, devices);
-    ++compared;
+    for (const RowCase* c : cases) compare_row(*c, info, devices), ++compared;
   }
   CHECK(compared > 0);
 }
@@ -278,45 +311,13 @@ void compare_rows(Wanted wanted) {
 TEST_CASE("param rows: every parameter the step reads has a world and a value that changes the step", "[equivalence]") {
   for (const ParamInfo& info : param_table()) {
     if (!row_reaches_step(info)) continue;
-    const RowCase* c = row_case(info.name);
-    if (c == nullptr) {
+    const std::vector<const RowCase*> cases = row_cases_of(info.name);
+    if (cases.empty())
       FAIL_CHECK("parameter " << info.name << " (group " << info.group
                               << ") reaches the step but has no world in row_cases() "
                                  "(tests/equivalence/test_param_rows.cpp): add one with a value that changes the "
                                  "step (docs/architecture.md, \"How to add a force\", step 7)");
-      continue;
-    }
-    const double fallback = param_value(Params{}, info);
-    INFO(row_label(info, c->value));
-    CHECK(c->value >= info.min);
-    CHECK(c->value <= info.max);
-    CHECK(c->value != fallback);
-    if (param_is_integer(info)) {
-      CHECK(c->value == std::round(c->value));
-    } else {
-      int exponent = 0;
-      CHECK(std::frexp(c->value, &exponent) != 0.5);  // not a power of two: products with it round
-    }
-    bool base_ok = true;
-    for (const auto& [name, v] : c->base) {
-      const ParamInfo* other = row_info(name);
-      if (other == nullptr || name == info.name) {
-        FAIL_CHECK("parameter " << info.name << ": its world sets " << name
-                                << ", which is not another row of param_table()");
-        base_ok = false;
-      }
-    }
-    if (!base_ok) continue;
-    // The comparison proves something only where the value changes what the step computes.
-    const TinyWorld w = row_world(c->world);
-    const RowOutcome on = row_reference_outcome(w, row_params(*c, info, c->value), c->settle);
-    const RowOutcome off = row_reference_outcome(w, row_params(*c, info, fallback), c->settle);
-    const bool changes = !row_forces_difference(off.forces, off.parts, on.forces, on.parts).empty() ||
-                         !state_difference(off.state, on.state).empty();
-    if (!changes)
-      FAIL_CHECK("parameter " << info.name << " = " << c->value
-                              << " changes neither the forces nor the state of its world against its default: "
-                                 "choose a value or world in row_cases() where it acts");
+    for (const RowCase* c : cases) check_row_case(info, *c);
   }
   for (const RowCase& c : row_cases()) {
     const ParamInfo* info = row_info(c.row);
@@ -329,12 +330,12 @@ TEST_CASE("param rows: every parameter the step reads has a world and a value th
 
 TEST_CASE("param rows: in the sparse world each bound of the room's boost sets the growth of some slice",
           "[equivalence]") {
-  // Not vacuous: where the boost is clamped away everywhere, the kernel's gap / boost_gap could round
-  // differently and no comparison would see it.
+  // Not vacuous: where one bound sets the boost of every slice, the arithmetic of the others goes
+  // uncompared.
   const ParamInfo* info = row_info("growth_boost");
-  const RowCase* c = row_case("growth_boost");
   REQUIRE(info != nullptr);
-  REQUIRE(c != nullptr);
+  REQUIRE(!row_cases_of("growth_boost").empty());
+  const RowCase* c = row_cases_of("growth_boost").front();
   const TinyWorld w = row_world(c->world);
   const Params params = row_params(*c, *info, c->value);
   const ForceParams p = step_params(params);
