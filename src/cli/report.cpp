@@ -54,8 +54,11 @@ int report(const ReportOptions& options) {
   const PackedScene packed = packed_scene(options.dir, checkpoint);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed);
   const World& world = loaded.world;
-  const std::size_t stats_elements = input.stats.final_growth ? input.stats.final_growth->size() : 0;
-  if (stats_elements != 0 && stats_elements != world.elements.size())
+  // The element count the file names, and its per-element rows when it has them, against the state's.
+  std::size_t stats_elements = std::size_t(input.stats.elements);
+  if (input.stats.final_growth && !input.stats.final_growth->empty() && stats_elements == world.elements.size())
+    stats_elements = input.stats.final_growth->size();
+  if (stats_elements != world.elements.size())
     throw InputError(stats_file.string() + ": " + std::to_string(stats_elements) + " elements, but state.bin has " +
                      std::to_string(world.elements.size()) +
                      "; the statistics are another packing's: run `animpak render " + options.dir.string() +
