@@ -67,6 +67,10 @@ Outline element_outline(const NormalizedArt& art, double offset);
 std::vector<std::vector<Vec2>> painted_region(const ArtPath& path, const std::vector<std::vector<Vec2>>& points,
                                               double stroke_width, double tolerance);
 
+/// Whether two segments of `line` that are not neighbours cross (the closing segment counts when it is
+/// closed); false with fewer than four points.
+bool crosses_itself(const Polyline& line);
+
 using Edge = std::array<int, 2>;      ///< vertex ids, first < second
 using Triangle = std::array<int, 3>;  ///< vertex ids, counter-clockwise in y-up terms
 

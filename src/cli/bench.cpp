@@ -9,7 +9,6 @@
 #include "animpak/error.hpp"
 #include "animpak/opencl.hpp"
 #include "animpak/synthetic.hpp"
-#include "bench_report.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
 

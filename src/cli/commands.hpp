@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "animpak/bench.hpp"   // BenchRow, for the bench plotter
 #include "animpak/render.hpp"  // PackingQuality, plain structs: declaring it links nothing from animpak_render
-#include "bench_report.hpp"
 
 namespace animpak::cli {
 
@@ -162,7 +162,7 @@ struct ReportOptions {
   std::optional<std::filesystem::path> out;  ///< default DIR/report.html
 };
 
-/// Writes the packing in `dir` as one self-contained HTML page (report_page.hpp).
+/// Writes the packing in `dir` as one self-contained HTML page (animpak/report.hpp).
 int report(const ReportOptions& options);
 
 struct TrajectoryOptions {
@@ -172,7 +172,7 @@ struct TrajectoryOptions {
   std::optional<std::filesystem::path> out;  ///< default dirs[0]/trajectory.svg
 };
 
-/// Draws element `element`'s path through the loop in every folder into one SVG (trajectory_figure.hpp),
+/// Draws element `element`'s path through the loop in every folder into one SVG (animpak/report.hpp),
 /// and prints each path's length and acceleration.
 int trajectory(const TrajectoryOptions& options);
 

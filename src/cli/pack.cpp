@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -106,11 +107,8 @@ bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_itera
 // The simulation time of the runs before a resume, from their stats.json (0 without one), so that the clock
 // and stats.json count the whole packing.
 double simulation_seconds(const std::filesystem::path& stats) {
-  const nlohmann::json j = read_stats_json(stats);
-  if (j.is_discarded() || !j.is_object() || !j.contains("seconds") || !j["seconds"].is_object()) return 0.0;
-  const nlohmann::json& seconds = j["seconds"];
-  return seconds.contains("simulation") && seconds["simulation"].is_number() ? seconds["simulation"].get<double>()
-                                                                             : 0.0;
+  const std::optional<Stats> read = read_stats_json(stats);
+  return read && read->seconds && std::isfinite(read->seconds->simulation) ? read->seconds->simulation : 0.0;
 }
 
 // The device by --device or the default rule, said in one line. A device asked for by name must work;

@@ -16,6 +16,8 @@
 #include "animpak/curve.hpp"
 #include "animpak/error.hpp"
 #include "animpak/file_io.hpp"
+#include "animpak/quality_summary.hpp"
+#include "animpak/stats.hpp"
 #include "animpak/version.hpp"
 #include "evenness_output.hpp"
 
@@ -52,33 +54,6 @@ LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state,
   return loaded;
 }
 
-QualitySummary summarize(const std::vector<FrameMetrics>& metrics) {
-  QualitySummary q;
-  q.times = int(metrics.size());
-  if (metrics.empty()) return q;
-  std::set<std::pair<int, int>> pairs;
-  q.coverage_min = std::numeric_limits<double>::infinity();
-  q.coverage_max = -q.coverage_min;
-  q.min_gap = q.coverage_min;
-  for (const FrameMetrics& m : metrics) {
-    q.element_times += int(m.outside_share.size());
-    q.outside += int(m.elements_outside().size());
-    const ElementShare out = m.worst_outside();
-    if (out.share > q.worst_outside.share) q.worst_outside = out, q.worst_outside_t = m.t;
-    for (const PairShare& p : m.overlapping()) pairs.insert({p.a, p.b}), ++q.overlapping;
-    const PairShare overlap = m.worst_overlap();
-    if (overlap.share > q.worst_overlap.share) q.worst_overlap = overlap, q.worst_overlap_t = m.t;
-    q.coverage_min = std::min(q.coverage_min, m.coverage);
-    q.coverage_max = std::max(q.coverage_max, m.coverage);
-    q.coverage_mean += m.coverage / double(metrics.size());
-    q.min_gap = std::min(q.min_gap, m.min_gap);
-    q.channel_cv_mean += m.channel_cv / double(metrics.size());
-    q.channel_cv_max = std::max(q.channel_cv_max, m.channel_cv);
-  }
-  q.overlapping_pairs = int(pairs.size());
-  return q;
-}
-
 namespace {
 
 std::string percent(double share, int decimals) {
@@ -97,90 +72,99 @@ std::string summary_line(const std::string& label, const QualitySummary& q) {
   return s.str();
 }
 
-nlohmann::json element_share(const World& w, const ElementShare& e) {
-  return {{"element", e.element >= 0 ? nlohmann::json(drawn_name(w, e.element)) : nlohmann::json()},
-          {"share", e.share}};
+StatsElementShare element_share(const World& w, const ElementShare& e) {
+  return {e.element >= 0 ? drawn_name(w, e.element) : std::string(), e.share};
 }
 
-nlohmann::json pair_share(const World& w, const PairShare& p) {
-  auto name = [&](int i) { return i >= 0 ? nlohmann::json(drawn_name(w, i)) : nlohmann::json(); };
-  return {{"a", name(p.a)}, {"b", name(p.b)}, {"share", p.share}};
+StatsPairShare pair_share(const World& w, const PairShare& p) {
+  auto name = [&](int i) { return i >= 0 ? drawn_name(w, i) : std::string(); };
+  return {name(p.a), name(p.b), p.share};
 }
 
-nlohmann::json metrics_json(const World& w, const std::vector<FrameMetrics>& metrics) {
-  nlohmann::json out = nlohmann::json::array();
+// The per-frame figures; `evenness` for the frames (the points between slices are measured without it:
+// docs/quality.md, "Evenness").
+std::vector<StatsFrame> frame_stats(const World& w, const std::vector<FrameMetrics>& metrics, bool evenness) {
+  std::vector<StatsFrame> out;
   for (const FrameMetrics& m : metrics) {
-    nlohmann::json outside = nlohmann::json::array(), overlaps = nlohmann::json::array();
-    for (const ElementShare& e : m.elements_outside()) outside.push_back(element_share(w, e));
+    StatsFrame f;
+    f.t = m.t;
+    f.coverage = m.coverage;
+    f.min_gap = m.min_gap;
+    f.mean_gap = m.mean_gap;
+    f.channel_cv = m.channel_cv;
+    for (const ElementShare& e : m.elements_outside()) f.elements_outside.push_back(element_share(w, e));
     const std::vector<PairShare> overlapping = m.overlapping();
-    for (const PairShare& p : overlapping) overlaps.push_back(pair_share(w, p));
-    out.push_back({{"t", m.t},
-                   {"coverage", m.coverage},
-                   {"min_gap", m.min_gap},
-                   {"mean_gap", m.mean_gap},
-                   {"channel_cv", m.channel_cv},
-                   {"overlapping_pairs", overlapping.size()},
-                   {"elements_outside", outside},
-                   {"overlaps", overlaps},
-                   {"worst_outside", element_share(w, m.worst_outside())},
-                   {"worst_overlap", pair_share(w, m.worst_overlap())}});
+    f.overlapping_pairs = std::int64_t(overlapping.size());
+    for (const PairShare& p : overlapping) f.overlaps.push_back(pair_share(w, p));
+    f.worst_outside = element_share(w, m.worst_outside());
+    f.worst_overlap = pair_share(w, m.worst_overlap());
+    if (evenness) {
+      const double none = std::numeric_limits<double>::quiet_NaN();
+      f.evenness = StatsFrameEvenness{m.element_radius, m.wall_ratio.value_or(none), m.empty_disc().value_or(none),
+                                      m.empty_disc_radius, m.contact};
+    }
+    out.push_back(std::move(f));
   }
   return out;
 }
 
-nlohmann::json summary_json(const World& w, const QualitySummary& q) {
-  nlohmann::json worst_outside = element_share(w, q.worst_outside), worst_overlap = pair_share(w, q.worst_overlap);
-  worst_outside["t"] = q.worst_outside_t;
-  worst_overlap["t"] = q.worst_overlap_t;
-  return {{"times", q.times},
-          {"element_frames", q.element_times},
-          {"element_frames_outside", q.outside},
-          {"worst_outside", worst_outside},
-          {"overlapping_pair_frames", q.overlapping},
-          {"overlapping_pairs", q.overlapping_pairs},
-          {"worst_overlap", worst_overlap},
-          {"coverage", {{"min", q.coverage_min}, {"max", q.coverage_max}, {"mean", q.coverage_mean}}},
-          {"min_gap", q.min_gap},
-          {"channel_cv", {{"mean", q.channel_cv_mean}, {"max", q.channel_cv_max}}}};
+StatsSummary summary_stats(const World& w, const QualitySummary& q) {
+  StatsSummary s;
+  s.times = q.times;
+  s.element_frames = q.element_times;
+  s.element_frames_outside = q.outside;
+  s.worst_outside = element_share(w, q.worst_outside);
+  s.worst_outside_t = q.worst_outside_t;
+  s.overlapping_pair_frames = q.overlapping;
+  s.overlapping_pairs = q.overlapping_pairs;
+  s.worst_overlap = pair_share(w, q.worst_overlap);
+  s.worst_overlap_t = q.worst_overlap_t;
+  s.coverage_min = q.coverage_min;
+  s.coverage_max = q.coverage_max;
+  s.coverage_mean = q.coverage_mean;
+  s.min_gap = q.min_gap;
+  s.channel_cv_mean = q.channel_cv_mean;
+  s.channel_cv_max = q.channel_cv_max;
+  return s;
+}
+
+StatsEvennessSummary evenness_stats(const EvennessSummary& e) {
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  return {e.wall_ratio_times,
+          e.wall_ratio_min.value_or(none),
+          e.wall_ratio_median.value_or(none),
+          e.wall_ratio_max.value_or(none),
+          e.empty_disc_median.value_or(none),
+          e.empty_disc_worst.value_or(none),
+          e.empty_disc_worst ? e.empty_disc_worst_t : none,
+          contact_step,
+          e.contact_mean};
 }
 
 // The per-frame and between-slice metrics and their summaries (docs/quality.md, "stats.json").
-void set_quality(nlohmann::json& stats, const World& w, const PackingQuality& quality) {
-  stats["frames"] = metrics_json(w, quality.frames);
-  stats["between_slices"] = metrics_json(w, quality.between_slices);
-  stats["quality"] = {{"share_threshold", quality_share_threshold},
-                      {"frames", summary_json(w, summarize(quality.frames))},
-                      {"between_slices", summary_json(w, summarize(quality.between_slices))}};
-  // The points between slices are measured without evenness (docs/quality.md, "Evenness").
-  for (std::size_t i = 0; i < quality.frames.size(); ++i) stats["frames"][i].update(evenness_json(quality.frames[i]));
-  stats["quality"]["frames"].update(evenness_summary_json(summarize_evenness(quality.frames)));
+void set_quality(Stats& stats, const World& w, const PackingQuality& quality) {
+  stats.frames = frame_stats(w, quality.frames, true);
+  stats.between_slices = frame_stats(w, quality.between_slices, false);
+  StatsQuality q{quality_share_threshold, summary_stats(w, summarize(quality.frames)),
+                 summary_stats(w, summarize(quality.between_slices))};
+  q.frames.evenness = evenness_stats(summarize_evenness(quality.frames));
+  stats.quality = q;
   // docs/quality.md, "Motion"; a kink of infinity (straight lines: no acceleration inside intervals) is null.
   const MotionMetrics& m = quality.motion;
-  nlohmann::json sizes = nlohmann::json::array();
+  StatsMotion motion;
+  motion.acceleration_median = m.acceleration_median;
+  motion.acceleration_p99 = m.acceleration_p99;
+  motion.frame_peak = m.frame_peak;
+  motion.kink = m.kink();
+  motion.slice_ratio = m.slice_ratio;
+  motion.size_over_script.emplace();
   for (std::size_t e = 0; e < m.size_over_script.size() && e < w.elements.size(); ++e)
-    sizes.push_back({{"element", w.elements[e].name}, {"ratio", m.size_over_script[e]}});
-  nlohmann::json moves = nlohmann::json::array();
+    motion.size_over_script->push_back({w.elements[e].name, m.size_over_script[e]});
+  motion.movement.emplace();
   for (std::size_t e = 0; e < m.detour.size() && e < w.elements.size(); ++e)
-    moves.push_back({{"element", w.elements[e].name},
-                     {"guided", w.elements[e].guided},
-                     {"detour", m.detour[e]},
-                     {"dip", w.elements[e].dip},
-                     {"path_length", m.path_length[e]}});
-  nlohmann::json peaks = nlohmann::json::array();
-  for (const double peak : m.frame_peak)
-    peaks.push_back(std::isfinite(peak) ? nlohmann::json(peak) : nlohmann::json(nullptr));
-  stats["motion"] = {
-      {"acceleration", {{"median", m.acceleration_median}, {"p99", m.acceleration_p99}, {"frame_peak", peaks}}},
-      {"kink", std::isfinite(m.kink()) ? nlohmann::json(m.kink()) : nlohmann::json(nullptr)},
-      {"slice_ratio", std::isfinite(m.slice_ratio) ? nlohmann::json(m.slice_ratio) : nlohmann::json(nullptr)},
-      {"size_over_script", sizes},
-      {"movement", moves}};
-}
-
-// Through a checked temporary file and a rename (write_file_atomically), so that a failed write never loses the statistics
-// already there.
-void write_json(const std::filesystem::path& file, const nlohmann::json& value) {
-  write_file_atomically(file, value.dump(2) + "\n");
+    motion.movement->push_back(
+        {w.elements[e].name, w.elements[e].guided, m.detour[e], w.elements[e].dip, m.path_length[e]});
+  stats.motion = motion;
 }
 
 }  // namespace
@@ -246,14 +230,26 @@ std::string quality_lines(const PackingQuality& quality) {
          (quality.frames.size() >= 3 ? motion_line(quality.motion) + "\n" : "");
 }
 
-// The columns of stats.json's "progress" rows, in ProgressSample's order.
-const std::vector<std::string> kProgressColumns = {
-    "iteration", "seconds", "mean_growth", "growing_share", "max_gap", "overlapping_vertices", "outside_vertices"};
-
-void write_stats(const std::filesystem::path& file, const PackReport& r) {
-  using nlohmann::json;
+Stats pack_stats(const PackReport& r) {
   const World& w = r.world;
-  json growth = json::array();
+  Stats stats;
+  stats.animpak = std::string(animpak_version);
+  stats.commit = std::string(build_commit());
+  stats.scene = r.checkpoint.scene_file.string();
+  stats.seed = r.checkpoint.seed;
+  stats.device = r.device;
+  stats.driver = r.driver;
+  stats.elements = w.elements.size();
+  stats.vertices = w.topology.vertex_count();
+  stats.springs = std::int64_t(w.topology.spring_other.size() / 2);
+  stats.envelope_triangles = w.topology.envelope_count();
+  stats.iterations = r.result.last_good.iteration;
+  stats.stop_reason = r.checkpoint.stop_reason;
+  stats.secondary_since = r.result.last_good.secondary_since;
+  StatsSeconds seconds{r.setup_seconds, r.result.seconds, {}};
+  for (const NamedPhase& phase : phase_fields) seconds.phases[phase.name] = r.times.*phase.seconds;
+  stats.seconds = seconds;
+  stats.final_growth.emplace();
   for (std::size_t e = 0; e < w.elements.size(); ++e) {
     const std::int32_t begin = w.topology.element_slice_begin[e], end = w.topology.element_slice_begin[e + 1];
     float lo = w.state.growth[begin], hi = lo;
@@ -263,77 +259,52 @@ void write_stats(const std::filesystem::path& file, const PackReport& r) {
       hi = std::max(hi, w.state.growth[s]);
       sum += w.state.growth[s];
     }
-    growth.push_back({{"element", w.elements[e].name}, {"min", lo}, {"mean", sum / (end - begin)}, {"max", hi}});
+    stats.final_growth->push_back({w.elements[e].name, lo, sum / (end - begin), hi});
   }
-  json seconds = {{"setup", r.setup_seconds}, {"simulation", r.result.seconds}};
-  for (const NamedPhase& phase : phase_fields) seconds[phase.name] = r.times.*phase.seconds;
-  json stats = {
-      {"format_version", kStatsFormatVersion},
-      {"animpak", std::string(animpak_version)},
-      {"commit", build_commit()},
-      {"scene", r.checkpoint.scene_file.string()},
-      {"seed", r.checkpoint.seed},
-      {"device", r.device},
-      {"driver", r.driver},
-      {"elements", w.elements.size()},
-      {"vertices", w.topology.vertex_count()},
-      {"springs", w.topology.spring_other.size() / 2},
-      {"envelope_triangles", w.topology.envelope_count()},
-      {"iterations", r.result.last_good.iteration},
-      {"stop_reason", r.checkpoint.stop_reason},
-      {"secondary_since", r.result.last_good.secondary_since},
-      {"seconds", seconds},
-      {"final_growth", growth},
-  };
-  json rows = json::array();
-  for (const ProgressSample& p : r.progress)
-    rows.push_back({p.iteration, p.seconds, p.mean_growth, p.growing_share,
-                    std::isfinite(p.max_gap) ? json(p.max_gap) : json(nullptr),  // no neighbour yet: JSON has no inf
-                    p.overlapping, p.outside});
   // With the stop test's settings and the world's unit mesh density, the rows are a trace StopModel can be
-  // replayed over (scripts/progress-trace.py; docs/cli.md, "Progress and the time left").
+  // replayed over (scripts/progress-trace.py; docs/cli.md, "Progress and the time left"). A max_gap of
+  // infinity (no neighbour yet) is null: JSON has no inf.
+  StatsProgress progress;
+  for (const ProgressSample& p : r.progress)
+    progress.rows.push_back(
+        {p.iteration, p.seconds, p.mean_growth, p.growing_share, p.max_gap, p.overlapping, p.outside});
   const Params::Stop& stop = w.params.stop;
-  stats["progress"] = {
-      {"columns", kProgressColumns},
-      {"rows", rows},
-      {"unit_mesh_density", unit_mesh_density(w)},
-      {"stall", {{"window", stop.stall_window}, {"growth", stop.stall_growth}, {"tests", stop.stall_tests}}},
-      {"secondary", w.topology.has_secondary()}};
+  progress.unit_mesh_density = unit_mesh_density(w);
+  progress.stall = StatsProgress::Stall{stop.stall_window, stop.stall_growth, stop.stall_tests};
+  progress.secondary = w.topology.has_secondary();
+  stats.progress = progress;
   if (!r.kernels.empty()) {
-    json kernels = json::array();
-    for (const KernelTime& k : r.kernels)
-      kernels.push_back({{"name", k.name}, {"phase", k.phase}, {"seconds", k.seconds}, {"launches", k.launches}});
-    stats["kernels"] = kernels;
+    stats.kernels.emplace();
+    for (const KernelTime& k : r.kernels) stats.kernels->push_back({k.name, k.phase, k.seconds, k.launches});
   }
   set_quality(stats, w, r.quality);
-  write_json(file, stats);
+  return stats;
 }
 
-nlohmann::json read_stats_json(const std::filesystem::path& file) {
+void write_stats(const std::filesystem::path& file, const PackReport& report) {
+  write_stats_file(file, pack_stats(report));
+}
+
+std::optional<Stats> read_stats_json(const std::filesystem::path& file) {
   std::error_code ec;
-  if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec)))
-    return nlohmann::json(nlohmann::json::value_t::discarded);
-  return nlohmann::json::parse(
-      read_folder_file(file.parent_path(), file.filename(), "move it away; animpak writes its statistics there"),
-      nullptr, false);
+  if (!std::filesystem::exists(std::filesystem::symlink_status(file, ec))) return std::nullopt;
+  const std::string text =
+      read_folder_file(file.parent_path(), file.filename(), "move it away; animpak writes its statistics there");
+  try {
+    return parse_stats(text, file);
+  } catch (const InputError&) {
+    return std::nullopt;  // not a packing's stats.json
+  }
 }
 
 std::vector<ProgressSample> read_progress(const std::filesystem::path& file) {
-  const nlohmann::json j = read_stats_json(file);
+  const std::optional<Stats> stats = read_stats_json(file);
   std::vector<ProgressSample> out;
-  if (j.is_discarded() || !j.is_object() || !j.contains("progress") || !j["progress"].is_object()) return out;
-  const nlohmann::json& p = j["progress"];
-  if (!p.contains("columns") || p["columns"] != nlohmann::json(kProgressColumns) || !p.contains("rows") ||
-      !p["rows"].is_array())
-    return out;
-  for (const nlohmann::json& row : p["rows"]) {
-    if (!row.is_array() || row.size() != kProgressColumns.size()) return {};
-    for (std::size_t c = 0; c < row.size(); ++c)
-      if (!row[c].is_number() && !(c == 4 && row[c].is_null())) return {};
-    out.push_back({row[0].get<std::uint64_t>(), row[1].get<double>(), row[2].get<double>(), row[3].get<double>(),
-                   row[4].is_null() ? std::numeric_limits<double>::infinity() : row[4].get<double>(),
-                   row[5].get<std::int64_t>(), row[6].get<std::int64_t>()});
-  }
+  if (!stats || !stats->progress) return out;
+  for (const StatsProgressRow& row : stats->progress->rows)
+    out.push_back({row.iteration, row.seconds, row.mean_growth, row.growing_share,
+                   std::isnan(row.max_gap) ? std::numeric_limits<double>::infinity() : row.max_gap,
+                   row.overlapping_vertices, row.outside_vertices});
   return out;
 }
 
@@ -343,34 +314,26 @@ StillReference read_still_reference(const std::filesystem::path& folder) {
   const std::string remedy =
       "; pack the scene standing still first: animpak pack SCENE --still --out " + folder.string();
   if (!std::filesystem::exists(file)) throw InputError(what + "cannot read " + file.string() + remedy);
-  const nlohmann::json stats = read_stats_json(file);
-  if (stats.is_discarded() || !stats.is_object()) throw InputError(what + file.string() + " is not JSON" + remedy);
-  const nlohmann::json* mean = nullptr;
-  if (stats.contains("quality") && stats["quality"].is_object() && stats["quality"].contains("frames")) {
-    const nlohmann::json& frames = stats["quality"]["frames"];
-    if (frames.is_object() && frames.contains("coverage") && frames["coverage"].is_object() &&
-        frames["coverage"].contains("mean"))
-      mean = &frames["coverage"]["mean"];
-  }
-  if (mean == nullptr || !mean->is_number() || !(mean->get<double>() > 0.0))
+  const std::optional<Stats> stats = read_stats_json(file);
+  if (!stats) throw InputError(what + file.string() + " is not a packing's stats.json" + remedy);
+  const double mean = stats->quality ? stats->quality->frames.coverage_mean : 0.0;
+  if (!(mean > 0.0))
     throw InputError(what + file.string() +
                      " has no frame coverage (quality.frames.coverage.mean): the packing was not rendered; render "
                      "it with animpak render " +
                      folder.string());
-  return {folder, mean->get<double>()};
+  return {folder, mean};
 }
 
 std::string add_still_reference(const std::filesystem::path& file, const StillReference& still,
                                 const PackingQuality& quality) {
-  nlohmann::json stats = read_stats_json(file);
-  if (stats.is_discarded() || !stats.is_object()) return {};
+  std::optional<Stats> stats = read_stats_json(file);
+  if (!stats) return {};
   const QualitySummary q = summarize(quality.frames);
   const double lowest = q.coverage_min / still.coverage, mean = q.coverage_mean / still.coverage;
-  stats["still_reference"] = {{"folder", std::filesystem::absolute(still.folder).lexically_normal().string()},
-                              {"coverage", still.coverage},
-                              {"lowest_over_still", lowest},
-                              {"mean_over_still", mean}};
-  write_json(file, stats);
+  stats->still_reference = StatsStillReference{std::filesystem::absolute(still.folder).lexically_normal().string(),
+                                               still.coverage, lowest, mean};
+  write_stats_file(file, *stats);
   std::ostringstream line;
   line << std::fixed << std::setprecision(1) << "still: the same elements standing still cover "
        << 100.0 * still.coverage << " %; the lowest frame here covers " << std::setprecision(2) << lowest
@@ -383,9 +346,15 @@ std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, 
   if (scene.is_object() && scene.contains("params") && scene["params"].is_object() &&
       scene["params"].contains("motion_curve"))
     return std::nullopt;  // the scene names its curve: that is the one it was packed on
-  const nlohmann::json stats = read_stats_json(stats_file);
-  if (stats.is_discarded() || !stats.is_object() || !stats.contains("animpak") || !stats["animpak"].is_string())
-    return std::nullopt;
+  // The version alone, from the file's text: a folder of 0.1.x, whose stats.json has no format_version yet (not
+  // one parse_stats reads), is one this asks about.
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(stats_file, ec))) return std::nullopt;
+  const nlohmann::json stats =
+      nlohmann::json::parse(read_folder_file(stats_file.parent_path(), stats_file.filename(),
+                                             "move it away; animpak writes its statistics there"),
+                            nullptr, false);
+  if (!stats.is_object() || !stats.contains("animpak") || !stats["animpak"].is_string()) return std::nullopt;
   int major = 0, minor = 0;
   if (std::sscanf(stats["animpak"].get<std::string>().c_str(), "%d.%d", &major, &minor) != 2) return std::nullopt;
   if (major > 0 || minor >= 8) return std::nullopt;
@@ -393,46 +362,42 @@ std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, 
 }
 
 std::optional<StillReference> stored_still_reference(const std::filesystem::path& file) {
-  const nlohmann::json stats = read_stats_json(file);
-  if (stats.is_discarded() || !stats.is_object() || !stats.contains("still_reference")) return std::nullopt;
-  const nlohmann::json& ref = stats["still_reference"];
-  if (!ref.is_object() || !ref.contains("coverage") || !ref["coverage"].is_number() || !ref.contains("folder") ||
-      !ref["folder"].is_string() || !(ref["coverage"].get<double>() > 0.0))
-    return std::nullopt;
-  return StillReference{ref["folder"].get<std::string>(), ref["coverage"].get<double>()};
+  const std::optional<Stats> stats = read_stats_json(file);
+  if (!stats || !stats->still_reference || !(stats->still_reference->coverage > 0.0)) return std::nullopt;
+  return StillReference{stats->still_reference->folder, stats->still_reference->coverage};
 }
 
 std::string update_stats_quality(const std::filesystem::path& file, const std::filesystem::path& written_to,
                                  const Checkpoint& checkpoint, const World& world, const PackingQuality& quality) {
-  nlohmann::json stats = read_stats_json(file);
+  std::optional<Stats> stats = read_stats_json(file);
   // A stats.json that is not this packing's (not JSON, another tool's, another packing's counts) is kept
   // aside, not merged into: `report` would refuse the mix and send the user back here.
-  const auto differs = [&](const char* key, const nlohmann::json& value) {
-    return stats.contains(key) && stats[key] != value;
-  };
   std::string note;
   std::error_code ec;
   const bool present = std::filesystem::exists(std::filesystem::symlink_status(file, ec));
-  if (present && (stats.is_discarded() || !stats.is_object() || !stats.contains("format_version") ||
-                  differs("elements", world.elements.size()) || differs("seed", checkpoint.seed) ||
-                  differs("iterations", checkpoint.state.iteration))) {
+  if (present && (!stats || stats->elements != world.elements.size() || stats->seed != checkpoint.seed ||
+                  stats->iterations != checkpoint.state.iteration)) {
     std::filesystem::path aside = file;
     aside.replace_filename("stats.foreign.json");
     std::filesystem::rename(file, aside);
     note = file.string() + " was not this packing's statistics; kept as " + aside.filename().string() +
            ", and a new one written";
-    stats = nlohmann::json(nlohmann::json::value_t::discarded);
+    stats.reset();
   }
-  if (stats.is_discarded()) {
+  if (!stats) {
     // No stats.json of its own (copied without it, or kept aside above): what the checkpoint itself knows.
-    stats = {{"format_version", kStatsFormatVersion},    {"animpak", std::string(animpak_version)},
-             {"scene", checkpoint.scene_file.string()},  {"seed", checkpoint.seed},
-             {"elements", world.elements.size()},        {"vertices", world.topology.vertex_count()},
-             {"iterations", checkpoint.state.iteration}, {"stop_reason", checkpoint.stop_reason}};
+    stats.emplace();
+    stats->animpak = std::string(animpak_version);
+    stats->scene = checkpoint.scene_file.string();
+    stats->seed = checkpoint.seed;
+    stats->elements = world.elements.size();
+    stats->vertices = world.topology.vertex_count();
+    stats->iterations = checkpoint.state.iteration;
+    stats->stop_reason = checkpoint.stop_reason;
   }
-  set_quality(stats, world, quality);
-  stats["rendered_by"] = build_commit();
-  write_json(written_to, stats);
+  set_quality(*stats, world, quality);
+  stats->rendered_by = std::string(build_commit());
+  write_stats_file(written_to, *stats);
   return note;
 }
 

@@ -2,12 +2,11 @@
 // lives in render_commands.cpp, so that animpak-solve links no rendering library.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include "animpak/checkpoint.hpp"
 #include "animpak/progress.hpp"
 #include "animpak/render.hpp"
 #include "animpak/run.hpp"
+#include "animpak/stats.hpp"
 #include "commands.hpp"
 #include "packed_folder.hpp"
 
@@ -35,19 +34,15 @@ struct PackReport {
   std::vector<KernelTime> kernels;              ///< device time per kernel (this run's; empty for the reference)
 };
 
-/// stats.json's `format_version` (docs/quality.md, "stats.json"): raised when a field is renamed, moved or
-/// changes meaning, so that scripts reading the file can tell; adding a field leaves it.
-inline constexpr int kStatsFormatVersion = 1;
-
 void write_stats(const std::filesystem::path& file, const PackReport& report);
 
-/// stats.json's "progress" rows (empty when the file or the rows are missing or malformed): the samples of
-/// the runs before a resume.
+/// stats.json's "progress" rows (empty when the file or the rows are missing or not this version's columns):
+/// the samples of the runs before a resume.
 std::vector<ProgressSample> read_progress(const std::filesystem::path& file);
 
-/// An output folder's stats.json; a discarded value (is_discarded()) when it is missing or not JSON. A
-/// link or special file in its place is refused (InputError), never opened.
-nlohmann::json read_stats_json(const std::filesystem::path& file);
+/// An output folder's stats.json (animpak/stats.hpp); nullopt when it is missing or not a packing's stats.json
+/// (parse_stats refuses it). A link or special file in its place is refused (InputError), never opened.
+std::optional<Stats> read_stats_json(const std::filesystem::path& file);
 
 /// After `render`: the frame metrics and quality summaries of the frames just rendered in place of those in
 /// `file` (stats.json), the rest of what `pack` wrote kept (what the checkpoint knows when there is no
@@ -83,23 +78,6 @@ std::optional<StillReference> stored_still_reference(const std::filesystem::path
 /// before 0.4.0 on straight lines (0), unless its scene names `motion_curve`. Nothing for a folder packed
 /// by 0.8.0 or later, without stats.json, or whose scene names the curve.
 std::optional<int> packed_motion_curve(const std::filesystem::path& stats_file, const std::string& scene_text);
-
-/// The quality of a set of measured times summed up (docs/quality.md); counts use quality_share_threshold.
-struct QualitySummary {
-  int times = 0;
-  int element_times = 0;       ///< elements × times
-  int outside = 0;             ///< element-times whose art is more than the threshold outside
-  ElementShare worst_outside;  ///< largest outside share at any time, counted or not
-  double worst_outside_t = 0.0;
-  int overlapping = 0;        ///< pair-times whose overlap exceeds the threshold
-  int overlapping_pairs = 0;  ///< distinct pairs among them
-  PairShare worst_overlap;    ///< largest overlap share at any time, counted or not
-  double worst_overlap_t = 0.0;
-  double coverage_min = 0.0, coverage_max = 0.0, coverage_mean = 0.0;
-  double min_gap = 0.0;
-  double channel_cv_mean = 0.0, channel_cv_max = 0.0;
-};
-QualitySummary summarize(const std::vector<FrameMetrics>& metrics);
 
 /// The lines pack and render print at the end: "quality: …" for the frames, "between slices: …" and the
 /// frames' "evenness: …".

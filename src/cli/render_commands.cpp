@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "animpak/error.hpp"
+#include "animpak/report.hpp"  // write_bench_plot
 #include "console.hpp"
 #include "frontend.hpp"
 #include "pack_output.hpp"

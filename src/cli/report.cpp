@@ -1,4 +1,4 @@
-// `animpak report DIR`: the packing in DIR as one self-contained HTML page (report_page.hpp; docs/cli.md,
+// `animpak report DIR`: the packing in DIR as one self-contained HTML page (animpak/report.hpp; docs/cli.md,
 // "`report`"). Reads DIR/stats.json for every figure, rebuilds the world from state.bin and DIR/input/ for the
 // table of elements, and embeds DIR/animation.svg, drawing one into a scratch folder when the packing was
 // rendered without it.
@@ -8,9 +8,9 @@
 
 #include "animpak/error.hpp"
 #include "animpak/file_io.hpp"
+#include "animpak/report.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
-#include "report_page.hpp"
 
 namespace animpak::cli {
 namespace {
@@ -36,11 +36,13 @@ int report(const ReportOptions& options) {
     throw InputError(stats_file.string() + ": not found; run `animpak render " + options.dir.string() +
                      "`, which measures the frames and writes it");
   ReportInput input;
-  input.stats = read_stats_json(stats_file);
-  if (input.stats.is_discarded() || !input.stats.is_object())
-    throw InputError(stats_file.string() + ": not a JSON object; run `animpak render " + options.dir.string() +
-                     "` to write it again");
-  if (!input.stats.contains("frames") || !input.stats["frames"].is_array() || input.stats["frames"].empty())
+  std::optional<Stats> stats = read_stats_json(stats_file);
+  if (!stats)
+    throw InputError(stats_file.string() +
+                     ": not a packing's stats.json (not JSON, or without its fields); run `animpak render " +
+                     options.dir.string() + "` to write it again");
+  input.stats = std::move(*stats);
+  if (!input.stats.frames || input.stats.frames->empty())
     throw InputError(stats_file.string() +
                      ": no frames (packed with --no-render, or by animpak-solve); run `animpak render " +
                      options.dir.string() + "` first, which measures the frames the report plots");
@@ -52,8 +54,11 @@ int report(const ReportOptions& options) {
   const PackedScene packed = packed_scene(options.dir, checkpoint);
   LoadedWorld loaded = world_from_checkpoint(checkpoint, true, packed);
   const World& world = loaded.world;
-  const std::size_t stats_elements = input.stats.value("final_growth", nlohmann::json::array()).size();
-  if (stats_elements != 0 && stats_elements != world.elements.size())
+  // The element count the file names, and its per-element rows when it has them, against the state's.
+  std::size_t stats_elements = std::size_t(input.stats.elements);
+  if (input.stats.final_growth && !input.stats.final_growth->empty() && stats_elements == world.elements.size())
+    stats_elements = input.stats.final_growth->size();
+  if (stats_elements != world.elements.size())
     throw InputError(stats_file.string() + ": " + std::to_string(stats_elements) + " elements, but state.bin has " +
                      std::to_string(world.elements.size()) +
                      "; the statistics are another packing's: run `animpak render " + options.dir.string() +
@@ -88,13 +93,13 @@ int report(const ReportOptions& options) {
     // Drawn as `render --format svg-anim` would, with the frame count the statistics were measured at; the
     // folder's own files are left as they are.
     std::cerr << "animpak: " << options.dir.string() << " has no animation.svg; drawing one for the report ("
-              << input.stats["frames"].size() << " frames; `animpak render DIR --format png,gif,svg-anim` keeps one)\n";
+              << input.stats.frames->size() << " frames; `animpak render DIR --format png,gif,svg-anim` keeps one)\n";
     const std::filesystem::path scratch = options.dir / ".report-partial";
     std::filesystem::remove_all(scratch);
     std::filesystem::create_directories(scratch);
     FrameOutput out;
     out.dir = scratch;
-    out.count = int(input.stats["frames"].size());
+    out.count = int(input.stats.frames->size());
     out.formats = {FrameFormat::svg_anim};
     write_frames(world, world.state, out);
     input.animation_svg = svg_element(read_folder_file(scratch, "animation.svg", "check that the folder is writable"),

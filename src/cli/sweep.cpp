@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <ctime>
@@ -28,14 +29,13 @@
 
 #include "animpak/error.hpp"
 #include "animpak/file_io.hpp"
+#include "animpak/report.hpp"
 #include "animpak/sha256.hpp"
 #include "animpak/version.hpp"
 #include "commands.hpp"
 #include "console.hpp"
 #include "pack_output.hpp"
 #include "packed_folder.hpp"
-#include "svg_plot.hpp"
-#include "sweep_page.hpp"
 #include "sweep_plan.hpp"
 
 namespace animpak::cli {
@@ -718,11 +718,15 @@ int sweep_collect(const SweepCollectOptions& options) {
   SweepCollection c;
   c.title = fs::absolute(dir).lexically_normal().filename().string();
   if (c.title.empty()) c.title = fs::absolute(dir).lexically_normal().parent_path().filename().string();
-  c.plan = &plan;
+  c.scene_file = plan.scene_file;
+  c.varied = plan.varied;
   std::error_code ec;
   for (const SweepRun& run : plan.runs) {
     CollectedRun r;
-    r.run = &run;
+    r.index = run.index;
+    r.id = run.id;
+    r.seed = run.seed;
+    r.set = run.set;
     const fs::path folder = run_folder(dir, run), status_file = run_status_file(dir, run);
     json status;
     if (fs::is_regular_file(fs::symlink_status(status_file, ec)))
@@ -733,12 +737,11 @@ int sweep_collect(const SweepCollectOptions& options) {
     const bool running = fs::is_directory(fs::symlink_status(dir / "status", ec)) &&
                          !RunLock::try_take(dir / "status" / (run.id + ".lock"), "", held_by);
     const bool folder_there = fs::is_directory(fs::symlink_status(folder, ec));
-    json stats;
+    std::optional<Stats> stats;
     if (folder_there) stats = read_stats_json(folder / "stats.json");
-    const std::string reason = stats.is_object() ? stats.value("stop_reason", "") : "";
-    const bool finished = stats.is_object() && stats.contains("frames") && stats["frames"].is_array() &&
-                          !stats["frames"].empty() && reason != "interrupted" && reason != "running" &&
-                          reason != "non_finite" && !has_unfinished_pack(folder);
+    const std::string reason = stats ? stats->stop_reason : "";
+    const bool finished = stats && stats->frames && !stats->frames->empty() && reason != "interrupted" &&
+                          reason != "running" && reason != "non_finite" && !has_unfinished_pack(folder);
     const std::string again = "; `animpak sweep-task " + shell_word(dir.string()) + " --index " +
                               std::to_string(run.index) + "` (or the sweep's command) continues it";
     if (running) {
@@ -787,17 +790,15 @@ int sweep_collect(const SweepCollectOptions& options) {
             << " KiB, self-contained) and " << (dir / "runs.csv").string() << "\n";
   const SweepMeasure& first = sweep_measures().front();
   const CollectedRun* best = nullptr;
+  std::optional<double> best_value;
   for (const CollectedRun& r : c.runs) {
-    const json& v = r.stats.is_object() ? r.stats["quality"]["frames"]["coverage"]["min"] : json();
-    if (r.state == "done" && v.is_number() &&
-        (!best || v.get<double>() > best->stats["quality"]["frames"]["coverage"]["min"].get<double>()))
-      best = &r;
+    const std::optional<double> v = r.state == "done" && r.stats ? first.value(*r.stats) : std::nullopt;
+    if (v && std::isfinite(*v) && (!best || *v > *best_value)) best = &r, best_value = v;
   }
   if (best)
-    std::cout << "best by " << first.label << ": " << best->run->id << " ("
-              << report_number(best->stats["quality"]["frames"]["coverage"]["min"].get<double>() * first.scale,
-                               first.decimals)
-              << first.unit << "), " << (dir / "runs" / best->run->id).string() << "\n";
+    std::cout << "best by " << first.label << ": " << best->id << " ("
+              << report_number(*best_value * first.scale, first.decimals) << first.unit << "), "
+              << (dir / "runs" / best->id).string() << "\n";
   return 0;
 }
 

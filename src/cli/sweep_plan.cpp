@@ -435,15 +435,12 @@ RunStep next_step(const fs::path& dir, const SweepRun& run) {
   if (!fs::is_directory(fs::symlink_status(folder, ec))) return RunStep::pack;
   if (has_unfinished_pack(folder)) return RunStep::resume;
   if (!fs::is_regular_file(fs::symlink_status(folder / "state.bin", ec))) return RunStep::pack;
-  const json stats = read_stats_json(folder / "stats.json");
-  const bool rendered =
-      stats.is_object() && stats.contains("frames") && stats["frames"].is_array() && !stats["frames"].empty();
+  const std::optional<Stats> stats = read_stats_json(folder / "stats.json");
+  const bool rendered = stats && stats->frames && !stats->frames->empty();
   // A complete run is told by its stats.json and report page alone: a sweep run again over many runs does not
   // read every state (7.5 MB at the paper's Fig. 1 scale) to skip them. stats.json is written after the
   // state it describes, so a finished stop reason there is the state's.
-  const std::string reason = rendered && stats.contains("stop_reason") && stats["stop_reason"].is_string()
-                                 ? stats["stop_reason"].get<std::string>()
-                                 : "";
+  const std::string reason = rendered ? stats->stop_reason : "";
   if (!reason.empty() && reason != "interrupted" && reason != "running" && reason != "non_finite" &&
       fs::is_regular_file(fs::symlink_status(folder / "report.html", ec)))
     return RunStep::none;

@@ -1,5 +1,5 @@
 // `animpak trajectory DIR... --element NAME`: one element's path through the loop in each packing, drawn
-// into one SVG (trajectory_figure.hpp; docs/cli.md, "`trajectory`"), the paper's Fig. 16c for any element.
+// into one SVG (animpak/report.hpp; docs/cli.md, "`trajectory`"), the paper's Fig. 16c for any element.
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -8,10 +8,10 @@
 #include "animpak/error.hpp"
 #include "animpak/file_io.hpp"
 #include "animpak/render.hpp"
+#include "animpak/report.hpp"
 #include "commands.hpp"
 #include "pack_output.hpp"
 #include "packed_folder.hpp"
-#include "trajectory_figure.hpp"
 
 namespace animpak::cli {
 namespace {

@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "animpak/checkpoint.hpp"
+#include "animpak/stats.hpp"
 #include "evenness_output.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
@@ -148,7 +149,11 @@ TEST_CASE("animpak pack: renders exactly --frames PNG and SVG frames and a compl
   CHECK_FALSE(fs::exists(frames / "frame_0004.png"));
   CHECK_FALSE(fs::exists(frames / "frame_0004.svg"));
 
-  const nlohmann::json stats = nlohmann::json::parse(read_text(box.path("out") + "/stats.json"));
+  const std::string stats_text = read_text(box.path("out") + "/stats.json");
+  // The typed model (animpak/stats.hpp) reads every field pack wrote and writes the same bytes back.
+  CHECK(animpak::stats_json_text(animpak::parse_stats(stats_text, "stats.json")) == stats_text);
+  CHECK(animpak::parse_stats(stats_text, "stats.json").kept.empty());
+  const nlohmann::json stats = nlohmann::json::parse(stats_text);
   CHECK(stats["format_version"] == 1);
   CHECK(stats["iterations"] == 20);
   CHECK(stats["stop_reason"] == "max_iterations");
@@ -258,7 +263,7 @@ TEST_CASE("animpak pack: the evenness line of a sparse packing says so and names
 }
 
 TEST_CASE("evenness_line: names what fills a packing only when its median frame leaves a disc over one radius") {
-  animpak::cli::EvennessSummary e;
+  animpak::EvennessSummary e;
   e.wall_ratio_median = e.wall_ratio_min = 0.5;
   e.wall_ratio_max = 0.6;
   e.empty_disc_median = 0.8;
@@ -271,7 +276,7 @@ TEST_CASE("evenness_line: names what fills a packing only when its median frame 
   CHECK_THAT(animpak::cli::evenness_line(e),
              Contains("(worst 1.40); sparse: try a smaller params.offset, higher counts (\"count\": \"fill\") or "
                       "secondary elements"));
-  CHECK_THAT(animpak::cli::evenness_line(animpak::cli::EvennessSummary{}), !Contains("sparse"));  // no art
+  CHECK_THAT(animpak::cli::evenness_line(animpak::EvennessSummary{}), !Contains("sparse"));  // no art
 }
 
 TEST_CASE("animpak pack: with a traveller, the motion line and stats.json say how far the others move and dip") {
@@ -326,7 +331,9 @@ TEST_CASE("animpak render: stats.json gets the metrics of the frames just render
   INFO(r.err);
   REQUIRE(r.code == 0);
   CHECK(fs::file_size(out + "/contact.png") > 1000);
-  nlohmann::json stats = nlohmann::json::parse(read_text(out + "/stats.json"));
+  const std::string rendered_text = read_text(out + "/stats.json");
+  CHECK(animpak::stats_json_text(animpak::parse_stats(rendered_text, "stats.json")) == rendered_text);
+  nlohmann::json stats = nlohmann::json::parse(rendered_text);
   CHECK(stats["frames"].size() == 3);
   CHECK(stats["between_slices"].size() == 32);  // eight points of each of four slice intervals
   CHECK(stats["quality"]["frames"]["element_frames"] == 9);

@@ -11,7 +11,7 @@
 #include <regex>
 #include <set>
 
-#include "report_page.hpp"
+#include "animpak/report.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "shown_figures.hpp"
@@ -46,15 +46,13 @@ std::size_t main_points(const std::string& plot) {
   return count;
 }
 
-std::size_t non_null(const json& values) {
-  std::size_t n = 0;
-  for (const json& v : values) n += v.is_number() ? 1 : 0;
-  return n;
+std::size_t finite_count(const std::vector<double>& values) {
+  return std::size_t(std::count_if(values.begin(), values.end(), [](double v) { return std::isfinite(v); }));
 }
 
 // What is wrong with a page as Chromium built it (its DOM after the script ran), held against stats.json:
 // empty when nothing is.
-std::vector<std::string> page_problems(const std::string& dom, const json& stats) {
+std::vector<std::string> page_problems(const std::string& dom, const animpak::Stats& stats) {
   std::vector<std::string> problems;
   if (dom.find("data-ready=\"yes\"") == std::string::npos) problems.push_back("the page's script did not finish");
   const std::size_t animation = dom.find("<div id=\"animation\">");
@@ -64,14 +62,16 @@ std::vector<std::string> page_problems(const std::string& dom, const json& stats
     problems.push_back("no animated SVG in #animation");
   std::set<std::string> present;
   std::size_t frames_with_wall = 0;
-  for (const json& f : stats["frames"]) frames_with_wall += f["wall_ratio"].is_number() ? 1 : 0;
+  const std::vector<animpak::StatsFrame> frames = stats.frames.value_or(std::vector<animpak::StatsFrame>{});
+  for (const animpak::StatsFrame& f : frames) frames_with_wall += f.evenness && std::isfinite(f.evenness->wall_ratio);
   const std::map<std::string, std::size_t> expected = {
-      {"plot-coverage", stats["frames"].size()},
-      {"plot-channel", stats["frames"].size()},
+      {"plot-coverage", frames.size()},
+      {"plot-channel", frames.size()},
       {"plot-wall", frames_with_wall},
-      {"plot-kink", non_null(stats["motion"]["acceleration"]["frame_peak"])},
-      {"plot-contact", stats["quality"]["frames"]["contact"]["mean"].size()}};
-  for (const std::string& id : animpak::cli::kReportPlots) {
+      {"plot-kink", stats.motion && stats.motion->frame_peak ? finite_count(*stats.motion->frame_peak) : 0},
+      {"plot-contact",
+       stats.quality && stats.quality->frames.evenness ? stats.quality->frames.evenness->contact_mean.size() : 0}};
+  for (const std::string& id : animpak::kReportPlots) {
     const std::string plot = svg_with_id(dom, id);
     if (plot.empty()) {
       problems.push_back(id + ": missing");
@@ -128,7 +128,7 @@ TEST_CASE("report: stats.json's numbers, five plots and the animation, loaded by
   // Self-contained: nothing is fetched (no src or href to another file, no link element, no @import).
   CHECK(std::regex_search(html, std::regex(R"((src|href)\s*=)")) == false);
   CHECK(html.find("@import") == std::string::npos);
-  const json stats = json::parse(read_text(fs::path(packed) / "stats.json"));
+  const animpak::Stats stats = animpak::parse_stats(read_text(fs::path(packed) / "stats.json"), "stats.json");
 
   const Loaded loaded = load_in_chromium(page, dir.path());
   for (const std::string& line : loaded.console) UNSCOPED_INFO(line);
@@ -207,31 +207,36 @@ TEST_CASE("report: a packing rendered without animation.svg gets one drawn, and 
 }
 
 TEST_CASE("report: numbers with thousands separated and no negative zero, and a page needs frames") {
-  using animpak::cli::report_number;
+  using animpak::report_number;
   CHECK(report_number(5400, 0) == "5,400");
   CHECK(report_number(1234567.891, 2) == "1,234,567.89");
   CHECK(report_number(43.46, 1) == "43.5");
   CHECK(report_number(-0.001, 2) == "0.00");
   CHECK(report_number(-1234.5, 1) == "-1,234.5");
   CHECK(report_number(999.96, 1) == "1,000.0");
-  animpak::cli::ReportInput input;
-  input.stats = json::parse(R"({"frames": []})");
-  CHECK_THROWS_WITH(animpak::cli::report_page(input), Contains("no frames") && Contains("animpak render"));
+  animpak::ReportInput input;
+  input.stats.frames.emplace();
+  CHECK_THROWS_WITH(animpak::report_page(input), Contains("no frames") && Contains("animpak render"));
   // A folder rendered before frame_peak existed: the kink plot says how to get it, the others plot.
-  input.stats = json::parse(R"({"frames": [{"t": 0, "coverage": 0.4}, {"t": 0.5, "coverage": 0.5}],
-                                "motion": {"acceleration": {"median": 1e-4}, "kink": 7}})");
-  const std::string page = animpak::cli::report_page(input);
+  input.stats.frames = {animpak::StatsFrame{}, animpak::StatsFrame{}};
+  (*input.stats.frames)[0].coverage = 0.4;
+  (*input.stats.frames)[1].t = 0.5;
+  (*input.stats.frames)[1].coverage = 0.5;
+  input.stats.motion = animpak::StatsMotion{};
+  input.stats.motion->acceleration_median = 1e-4;
+  input.stats.motion->kink = 7;
+  const std::string page = animpak::report_page(input);
   CHECK_THAT(page, Contains("rendered before animpak 0.11.0: run animpak render DIR"));
   CHECK_THAT(page, Contains(R"(<span data-stat="motion.kink">7.0</span>)"));
   // Too large an SVG: the GIF stands in, as a data URI, and the page says so.
-  CHECK(animpak::cli::base64("") == "");
-  CHECK(animpak::cli::base64("f") == "Zg==");
-  CHECK(animpak::cli::base64("fo") == "Zm8=");
-  CHECK(animpak::cli::base64("foo") == "Zm9v");
-  CHECK(animpak::cli::base64(std::string("\xff\xfe\x00", 3)) == "//4A");
+  CHECK(animpak::base64("") == "");
+  CHECK(animpak::base64("f") == "Zg==");
+  CHECK(animpak::base64("fo") == "Zm8=");
+  CHECK(animpak::base64("foo") == "Zm9v");
+  CHECK(animpak::base64(std::string("\xff\xfe\x00", 3)) == "//4A");
   input.animation_gif = "GIF89a";
   input.animation_note = "animation.svg (61 MB) is too large";
-  const std::string with_gif = animpak::cli::report_page(input);
+  const std::string with_gif = animpak::report_page(input);
   CHECK_THAT(with_gif,
              Contains(R"(<img id="animation-gif" alt="the animation" src="data:image/gif;base64,R0lGODlh">)"));
   CHECK_THAT(with_gif, Contains("animation.svg (61 MB) is too large"));

@@ -10,15 +10,15 @@
 #include <numbers>
 #include <regex>
 
+#include "animpak/report.hpp"
 #include "run_animpak.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
-#include "trajectory_figure.hpp"
 
 namespace fs = std::filesystem;
+using animpak::trajectory_stats;
+using animpak::TrajectoryRun;
 using animpak::Vec2;
-using animpak::cli::trajectory_stats;
-using animpak::cli::TrajectoryRun;
 using Catch::Matchers::Contains;
 
 namespace {

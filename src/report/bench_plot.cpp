@@ -6,13 +6,13 @@
 #include <map>
 
 #include "animpak/render.hpp"
-#include "bench_report.hpp"
+#include "animpak/report.hpp"
 
 // LeakSanitizer reads this hook when it is linked in (sanitizer builds) and ignores it otherwise:
 // fontconfig, loaded once by Cairo's toy text API, keeps its configuration for the process lifetime.
 extern "C" const char* __lsan_default_suppressions() { return "leak:libfontconfig.so\n"; }
 
-namespace animpak::cli {
+namespace animpak {
 namespace {
 
 constexpr int width = 960, height = 560;
@@ -124,4 +124,4 @@ void write_bench_plot(const std::vector<BenchRow>& rows, const std::filesystem::
   pic.write(file);
 }
 
-}  // namespace animpak::cli
+}  // namespace animpak

@@ -1,7 +1,7 @@
-// The HTML of `animpak report` (report_page.hpp): text and inline SVG only, so the page needs no network and
+// The HTML of `animpak report` (animpak/report.hpp): text and inline SVG only, so the page needs no network and
 // no file beside it. Every figure is stats.json's, shown in an element whose data-stat names its path there
 // (and data-scale the factor it is shown at), so that a test can hold the page to the file.
-#include "report_page.hpp"
+#include "animpak/report.hpp"
 
 #include "svg_plot.hpp"
 
@@ -13,9 +13,10 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/stats.hpp"
 #include "animpak/xml_text.hpp"
 
-namespace animpak::cli {
+namespace animpak {
 namespace {
 
 using nlohmann::json;
@@ -28,30 +29,29 @@ std::string script_json(const json& value) {
   return text;
 }
 
-// One figure of stats.json in a <span data-stat>: the value at `path` times `scale` with `decimals`
-// decimals and `unit` after it, or a dash for null (the page then carries no number to compare).
-std::string stat(const json& stats, const std::string& path, int decimals, double scale = 1.0,
+// One figure of stats.json in a <span data-stat>: `value` (the figure at `path` there, read through the model)
+// times `scale` with `decimals` decimals and `unit` after it, or a dash for none (the page then carries no
+// number to compare).
+std::string stat(std::optional<double> value, const std::string& path, int decimals, double scale = 1.0,
                  const std::string& unit = "") {
-  const json& value = stats_at(stats, path);
-  if (!value.is_number()) return "<span class=\"none\" data-stat-none=\"" + xml_escaped(path) + "\">–</span>";
+  if (value && !std::isfinite(*value)) value.reset();
+  if (!value) return "<span class=\"none\" data-stat-none=\"" + xml_escaped(path) + "\">–</span>";
   std::ostringstream out;
   out << "<span data-stat=\"" << xml_escaped(path) << "\"";
   if (scale != 1.0) out << " data-scale=\"" << scale << "\"";
-  out << ">" << report_number(value.get<double>() * scale, decimals) << unit << "</span>";
+  out << ">" << report_number(*value * scale, decimals) << unit << "</span>";
   return out.str();
 }
 
-std::string text_of(const json& stats, const std::string& path) {
-  const json& value = stats_at(stats, path);
-  if (value.is_string()) return xml_escaped(value.get<std::string>());
-  if (value.is_null()) return "–";
-  return xml_escaped(value.dump());
+// A number that is none in the model (NaN) as none.
+std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+
+// A count the file may lack.
+std::optional<double> count_of(const std::optional<std::int64_t>& v) {
+  return v ? std::optional<double>(double(*v)) : std::nullopt;
 }
 
-std::optional<double> number_at(const json& object, const std::string& key) {
-  if (!object.is_object() || !object.contains(key) || !object[key].is_number()) return std::nullopt;
-  return object[key].get<double>();
-}
+std::string text_of(const std::optional<std::string>& value) { return value ? xml_escaped(*value) : "–"; }
 
 // A level drawn across a time plot.
 Series level(const std::string& name, double value, const std::string& color) {
@@ -143,35 +143,46 @@ std::string base64(const std::string& bytes) {
 }
 
 std::string report_page(const ReportInput& input) {
-  const json& stats = input.stats;
-  const json& frames = stats_at(stats, "frames");
-  if (!frames.is_array() || frames.empty())
+  const Stats& stats = input.stats;
+  if (!stats.frames || stats.frames->empty())
     throw InputError(
         "stats.json: no frames (packed with --no-render, or by animpak-solve); run `animpak render DIR` first, "
         "which measures the frames the report plots");
+  const std::vector<StatsFrame>& frames = *stats.frames;
   const std::size_t n = frames.size();
   std::vector<double> t(n);
   std::vector<std::optional<double>> coverage(n), channel(n), wall(n), kink(n);
-  const json& peaks = stats_at(stats, "motion.acceleration.frame_peak");
-  const std::optional<double> median = number_at(stats_at(stats, "motion.acceleration"), "median");
+  const std::optional<StatsMotion>& motion = stats.motion;
+  const std::optional<double> median = motion ? finite(motion->acceleration_median) : std::nullopt;
   for (std::size_t i = 0; i < n; ++i) {
-    t[i] = number_at(frames[i], "t").value_or(double(i) / double(n));
-    coverage[i] = number_at(frames[i], "coverage");
-    channel[i] = number_at(frames[i], "channel_cv");
-    wall[i] = number_at(frames[i], "wall_ratio");
-    if (peaks.is_array() && i < peaks.size() && peaks[i].is_number() && median && *median > 0.0)
-      kink[i] = peaks[i].get<double>() / *median;
+    t[i] = std::isfinite(frames[i].t) ? frames[i].t : double(i) / double(n);
+    coverage[i] = finite(frames[i].coverage);
+    channel[i] = finite(frames[i].channel_cv);
+    if (frames[i].evenness) wall[i] = finite(frames[i].evenness->wall_ratio);
+    if (motion && motion->frame_peak && i < motion->frame_peak->size() && std::isfinite((*motion->frame_peak)[i]) &&
+        median && *median > 0.0)
+      kink[i] = (*motion->frame_peak)[i] / *median;
   }
   const double t_max = std::max(1.0, t.empty() ? 1.0 : t.back());
+  const std::optional<StatsQuality>& quality = stats.quality;
+  const StatsSummary no_summary;
+  const StatsSummary& fq = quality ? quality->frames : no_summary;
+  const StatsSummary& bq = quality ? quality->between_slices : no_summary;
+  // A summary figure, none when the file has no quality; an evenness figure, none when it has no evenness.
+  const auto q = [&](double value) { return quality ? finite(value) : std::nullopt; };
+  const auto fe = [&](double StatsEvennessSummary::*member) {
+    return quality && fq.evenness ? finite((*fq.evenness).*member) : std::nullopt;
+  };
 
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
        << "<title>animpak report: " << xml_escaped(input.title) << "</title><style>" << kStyle << kPlotStyle
        << "</style></head>\n<body>\n";
-  page << "<h1>" << xml_escaped(input.title) << "</h1>\n<p class=\"sub\">" << text_of(stats, "elements")
-       << " elements, " << stat(stats, "vertices", 0) << " vertices, packed in " << stat(stats, "iterations", 0)
-       << " iterations by animpak " << text_of(stats, "animpak") << " on " << text_of(stats, "device") << "</p>\n";
+  page << "<h1>" << xml_escaped(input.title) << "</h1>\n<p class=\"sub\">" << stats.elements << " elements, "
+       << stat(double(stats.vertices), "vertices", 0) << " vertices, packed in "
+       << stat(double(stats.iterations), "iterations", 0) << " iterations by animpak " << xml_escaped(stats.animpak)
+       << " on " << text_of(stats.device) << "</p>\n";
 
   // The animation and the slider.
   page << "<div id=\"stage\"><div id=\"animation-box\" style=\"flex:0 1 540px\"><div id=\"animation\">\n"
@@ -187,46 +198,64 @@ std::string report_page(const ReportInput& input) {
        << "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"" << n - 1 << "\" value=\"0\" aria-label=\"frame\">"
        << "</div><div id=\"readout\"></div></div>\n";
 
-  // The summary: docs/quality.md says what each figure means.
-  const std::string fq = "quality.frames.", bq = "quality.between_slices.";
+  // The summary: docs/quality.md says what each figure means; each data-stat is the figure's path in stats.json.
+  const std::string fp = "quality.frames.", bp = "quality.between_slices.";
+  const std::optional<StatsStillReference>& still = stats.still_reference;
   page << "<div id=\"summary\"><h2 style=\"margin-top:0\">Quality</h2><table>\n"
        << row("coverage",
-              stat(stats, fq + "coverage.mean", 1, 100, " %") + " (" + stat(stats, fq + "coverage.min", 1, 100, " %") +
-                  " – " + stat(stats, fq + "coverage.max", 1, 100, " %") + ")",
+              stat(q(fq.coverage_mean), fp + "coverage.mean", 1, 100, " %") + " (" +
+                  stat(q(fq.coverage_min), fp + "coverage.min", 1, 100, " %") + " – " +
+                  stat(q(fq.coverage_max), fp + "coverage.max", 1, 100, " %") + ")",
               "mean over the frames (lowest – highest)");
-  if (stats_at(stats, "still_reference.mean_over_still").is_number())
-    page << row("against standing still", stat(stats, "still_reference.mean_over_still", 2),
-                "mean coverage over the still packing's " + stat(stats, "still_reference.coverage", 1, 100, " %"));
+  if (still && std::isfinite(still->mean_over_still))
+    page << row(
+        "against standing still", stat(still->mean_over_still, "still_reference.mean_over_still", 2),
+        "mean coverage over the still packing's " + stat(still->coverage, "still_reference.coverage", 1, 100, " %"));
   page << row("art outside",
-              stat(stats, fq + "element_frames_outside", 0) + " of " + stat(stats, fq + "element_frames", 0),
-              "element-frames; between slices " + stat(stats, bq + "element_frames_outside", 0) + " of " +
-                  stat(stats, bq + "element_frames", 0))
-       << row("overlapping", stat(stats, fq + "overlapping_pair_frames", 0),
-              "pair-frames; between slices " + stat(stats, bq + "overlapping_pair_frames", 0))
-       << row("channel CV", stat(stats, fq + "channel_cv.mean", 2), "mean over the frames; 0 is a channel of one width")
-       << row("wall ratio", stat(stats, fq + "wall_ratio.median", 2), "median frame; an even packing has about 0.5")
-       << row("largest empty disc", stat(stats, fq + "empty_disc.median", 2, 1.0, " ρ"),
-              "median frame, in element radii; worst " + stat(stats, fq + "empty_disc.worst", 2, 1.0, " ρ"))
-       << row("kink", stat(stats, "motion.kink", 1), "acceleration's 99th percentile over its median")
-       << row("slices show", stat(stats, "motion.slice_ratio", 2),
+              stat(q(double(fq.element_frames_outside)), fp + "element_frames_outside", 0) + " of " +
+                  stat(q(double(fq.element_frames)), fp + "element_frames", 0),
+              "element-frames; between slices " +
+                  stat(q(double(bq.element_frames_outside)), bp + "element_frames_outside", 0) + " of " +
+                  stat(q(double(bq.element_frames)), bp + "element_frames", 0))
+       << row("overlapping", stat(q(double(fq.overlapping_pair_frames)), fp + "overlapping_pair_frames", 0),
+              "pair-frames; between slices " +
+                  stat(q(double(bq.overlapping_pair_frames)), bp + "overlapping_pair_frames", 0))
+       << row("channel CV", stat(q(fq.channel_cv_mean), fp + "channel_cv.mean", 2),
+              "mean over the frames; 0 is a channel of one width")
+       << row("wall ratio", stat(fe(&StatsEvennessSummary::wall_ratio_median), fp + "wall_ratio.median", 2),
+              "median frame; an even packing has about 0.5")
+       << row("largest empty disc",
+              stat(fe(&StatsEvennessSummary::empty_disc_median), fp + "empty_disc.median", 2, 1.0, " ρ"),
+              "median frame, in element radii; worst " +
+                  stat(fe(&StatsEvennessSummary::empty_disc_worst), fp + "empty_disc.worst", 2, 1.0, " ρ"))
+       << row("kink", stat(motion ? finite(motion->kink) : std::nullopt, "motion.kink", 1),
+              "acceleration's 99th percentile over its median")
+       << row("slices show",
+              stat(motion && motion->slice_ratio ? finite(*motion->slice_ratio) : std::nullopt, "motion.slice_ratio",
+                   2),
               "acceleration next to a slice over elsewhere; 1 when they do not show");
+  const std::vector<StatsMotion::Size> no_sizes;
+  const std::vector<StatsMotion::Size>& sizes =
+      motion && motion->size_over_script ? *motion->size_over_script : no_sizes;
+  const auto ratio = [](const StatsMotion::Size& s) { return std::isfinite(s.ratio) ? s.ratio : 0.0; };
   std::size_t worst = 0;
-  const json& sizes = stats_at(stats, "motion.size_over_script");
-  for (std::size_t e = 0; sizes.is_array() && e < sizes.size(); ++e)
-    if (number_at(sizes[e], "ratio").value_or(0.0) > number_at(sizes[worst], "ratio").value_or(0.0)) worst = e;
-  if (sizes.is_array() && !sizes.empty())
-    page << row("size against the script",
-                stat(stats, "motion.size_over_script." + std::to_string(worst) + ".ratio", 2, 1.0, "×"),
-                "the least steady element's largest over smallest area over its script");
+  for (std::size_t e = 0; e < sizes.size(); ++e)
+    if (ratio(sizes[e]) > ratio(sizes[worst])) worst = e;
+  if (!sizes.empty())
+    page << row(
+        "size against the script",
+        stat(finite(sizes[worst].ratio), "motion.size_over_script." + std::to_string(worst) + ".ratio", 2, 1.0, "×"),
+        "the least steady element's largest over smallest area over its script");
   page << "</table></div></div>\n";
 
   // The plots.
   std::vector<double> between_t;
   std::vector<std::optional<double>> between_coverage;
-  for (const json& b : stats_at(stats, "between_slices")) {
-    between_t.push_back(number_at(b, "t").value_or(0.0));
-    between_coverage.push_back(number_at(b, "coverage"));
-  }
+  if (stats.between_slices)
+    for (const StatsFrame& b : *stats.between_slices) {
+      between_t.push_back(std::isfinite(b.t) ? b.t : 0.0);
+      between_coverage.push_back(finite(b.coverage));
+    }
   std::vector<std::optional<double>> coverage_percent = coverage, between_percent = between_coverage;
   for (auto& v : coverage_percent)
     if (v) *v *= 100.0;
@@ -235,8 +264,8 @@ std::string report_page(const ReportInput& input) {
   page << "<h2>Per frame</h2>\n<div id=\"plots\">\n";
   std::vector<Series> coverage_series{{"frames", t, coverage_percent, "#1f6fb2"}};
   if (!between_t.empty()) coverage_series.push_back({"between slices", between_t, between_percent, "#8fb7dc", "extra"});
-  if (const auto still = number_at(stats_at(stats, "still_reference"), "coverage"))
-    coverage_series.push_back(level("standing still", *still * 100.0, "#777"));
+  if (still && std::isfinite(still->coverage))
+    coverage_series.push_back(level("standing still", still->coverage * 100.0, "#777"));
   page << plot({"plot-coverage", "Coverage", "frame time t", "% of the container", 0.0, t_max, true, std::nullopt},
                coverage_series);
   page << plot({"plot-channel", "Channel CV", "frame time t", "std / mean", 0.0, t_max, true, 0.0},
@@ -244,32 +273,26 @@ std::string report_page(const ReportInput& input) {
   page << plot({"plot-wall", "Wall ratio", "frame time t", "wall gap / art gap", 0.0, t_max, true, 0.0},
                {{"frames", t, wall, "#a0522d"}, level("even: 0.5", 0.5, "#777")});
   std::vector<Series> kink_series{{"frames", t, kink, "#7b3fa0"}};
-  if (const auto overall = number_at(stats_at(stats, "motion"), "kink"))
-    kink_series.push_back(level("kink", *overall, "#777"));
+  if (motion && std::isfinite(motion->kink)) kink_series.push_back(level("kink", motion->kink, "#777"));
   page << plot({"plot-kink", "Kink per frame", "frame time t", "largest acceleration / median", 0.0, t_max, true, 0.0,
                 "rendered before animpak 0.11.0: run animpak render DIR"},
                kink_series);
-  const json& contact = stats_at(stats, "quality.frames.contact.mean");
-  const double contact_step = number_at(stats_at(stats, "quality.frames.contact"), "step").value_or(0.05);
+  const double contact_step =
+      quality && fq.evenness && std::isfinite(fq.evenness->contact_step) ? fq.evenness->contact_step : 0.05;
   std::vector<Series> contact_series;
   double r_max = contact_step;
-  if (contact.is_array()) {
-    Series mean{"mean H(r)", {}, {}, "#c0392b"};
-    for (std::size_t k = 0; k < contact.size(); ++k) {
-      mean.x.push_back(double(k) * contact_step);
-      mean.y.push_back(contact[k].is_number() ? std::optional<double>(contact[k].get<double>()) : std::nullopt);
-    }
-    r_max = std::max(r_max, mean.x.empty() ? 0.0 : mean.x.back());
-    for (const json& f : frames) {
-      if (!f.contains("contact") || !f["contact"].is_array()) continue;
-      Series one{"", {}, {}, "#e6a29a", "extra"};
-      for (std::size_t k = 0; k < f["contact"].size(); ++k) {
-        one.x.push_back(double(k) * contact_step);
-        one.y.push_back(f["contact"][k].is_number() ? std::optional<double>(f["contact"][k].get<double>())
-                                                    : std::nullopt);
+  if (quality && fq.evenness) {
+    const auto contact_line = [&](const std::vector<double>& values, Series line) {
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        line.x.push_back(double(k) * contact_step);
+        line.y.push_back(finite(values[k]));
       }
-      contact_series.push_back(one);
-    }
+      return line;
+    };
+    const Series mean = contact_line(fq.evenness->contact_mean, {"mean H(r)", {}, {}, "#c0392b"});
+    r_max = std::max(r_max, mean.x.empty() ? 0.0 : mean.x.back());
+    for (const StatsFrame& f : frames)
+      if (f.evenness) contact_series.push_back(contact_line(f.evenness->contact, {"", {}, {}, "#e6a29a", "extra"}));
     contact_series.push_back(mean);
   }
   page << plot({"plot-contact", "Negative space: spherical contact H(r)", "r (element radii)", "share of the container",
@@ -283,26 +306,32 @@ std::string report_page(const ReportInput& input) {
   for (std::size_t e = 0; e < input.elements.size(); ++e) {
     const ReportElement& el = input.elements[e];
     const std::string g = "final_growth." + std::to_string(e) + ".";
+    const bool grown = stats.final_growth && e < stats.final_growth->size();
+    const std::optional<double> lo = grown ? finite((*stats.final_growth)[e].min) : std::nullopt,
+                                hi = grown ? finite((*stats.final_growth)[e].max) : std::nullopt;
     page << "<tr><td>" << el.thumbnail << "</td><td>" << xml_escaped(el.name) << "</td><td>" << xml_escaped(el.library)
          << " <span class=\"note\">" << xml_escaped(el.art) << "</span></td><td>" << xml_escaped(el.kind) << "</td><td>"
-         << stat(stats, g + "min", 2) << " – " << stat(stats, g + "max", 2) << "</td><td>"
-         << stat(stats, "motion.size_over_script." + std::to_string(e) + ".ratio", 2, 1.0, "×") << "</td></tr>\n";
+         << stat(lo, g + "min", 2) << " – " << stat(hi, g + "max", 2) << "</td><td>"
+         << stat(e < sizes.size() ? finite(sizes[e].ratio) : std::nullopt,
+                 "motion.size_over_script." + std::to_string(e) + ".ratio", 2, 1.0, "×")
+         << "</td></tr>\n";
   }
   page << "</table>\n";
 
   // Provenance.
+  const std::optional<StatsSeconds>& seconds = stats.seconds;
   page << "<h2>Provenance</h2>\n<table id=\"provenance\">\n"
-       << row("scene", "<code>" + text_of(stats, "scene") + "</code>")
-       << row("animpak",
-              text_of(stats, "animpak") + ", commit <code>" + text_of(stats, "commit") + "</code>" +
-                  (stats.contains("rendered_by") ? ", rendered by <code>" + text_of(stats, "rendered_by") + "</code>"
-                                                 : ""))
-       << row("device", text_of(stats, "device")) << row("driver", text_of(stats, "driver"))
-       << row("seed", stat(stats, "seed", 0))
-       << row("iterations", stat(stats, "iterations", 0), text_of(stats, "stop_reason"))
-       << row("time", stat(stats, "seconds.simulation", 1, 1.0, " s"),
-              "simulation; set-up " + stat(stats, "seconds.setup", 1, 1.0, " s"))
-       << row("size", stat(stats, "vertices", 0) + " vertices, " + stat(stats, "springs", 0) + " springs")
+       << row("scene", "<code>" + xml_escaped(stats.scene) + "</code>")
+       << row("animpak", xml_escaped(stats.animpak) + ", commit <code>" + text_of(stats.commit) + "</code>" +
+                             (stats.rendered_by ? ", rendered by <code>" + text_of(stats.rendered_by) + "</code>" : ""))
+       << row("device", text_of(stats.device)) << row("driver", text_of(stats.driver))
+       << row("seed", stat(double(stats.seed), "seed", 0))
+       << row("iterations", stat(double(stats.iterations), "iterations", 0), xml_escaped(stats.stop_reason))
+       << row("time", stat(seconds ? finite(seconds->simulation) : std::nullopt, "seconds.simulation", 1, 1.0, " s"),
+              "simulation; set-up " +
+                  stat(seconds ? finite(seconds->setup) : std::nullopt, "seconds.setup", 1, 1.0, " s"))
+       << row("size", stat(double(stats.vertices), "vertices", 0) + " vertices, " +
+                          stat(count_of(stats.springs), "springs", 0) + " springs")
        << "</table>\n";
 
   // The frame figures the slider shows (the plots' own numbers).
@@ -325,24 +354,4 @@ std::string report_page(const ReportInput& input) {
   return page.str();
 }
 
-const json& stats_at(const json& root, const std::string& path) {
-  static const json null_value;
-  const json* node = &root;
-  std::size_t begin = 0;
-  while (begin <= path.size()) {
-    const std::size_t end = std::min(path.find('.', begin), path.size());
-    const std::string key = path.substr(begin, end - begin);
-    if (node->is_object() && node->contains(key)) {
-      node = &(*node)[key];
-    } else if (node->is_array() && !key.empty() && key.find_first_not_of("0123456789") == std::string::npos &&
-               std::stoul(key) < node->size()) {
-      node = &(*node)[std::stoul(key)];
-    } else {
-      return null_value;
-    }
-    begin = end + 1;
-  }
-  return *node;
-}
-
-}  // namespace animpak::cli
+}  // namespace animpak

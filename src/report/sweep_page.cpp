@@ -1,6 +1,6 @@
-// The sweep's page and table (sweep_page.hpp): text, inline SVG and data URIs only, so the page needs no
+// The sweep's page and table (animpak/report.hpp): text, inline SVG and data URIs only, so the page needs no
 // network and no file beside it; its links lead to each run's own report page.
-#include "sweep_page.hpp"
+#include "animpak/report.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -11,18 +11,17 @@
 #include <sstream>
 
 #include "animpak/xml_text.hpp"
-#include "report_page.hpp"
 #include "svg_plot.hpp"
 
-namespace animpak::cli {
+namespace animpak {
 namespace {
 
 using nlohmann::json;
 
 std::optional<double> measure_value(const CollectedRun& r, const SweepMeasure& m) {
-  if (r.state != "done") return std::nullopt;
-  const json& v = stats_at(r.stats, m.path);
-  return v.is_number() ? std::optional<double>(v.get<double>()) : std::nullopt;
+  if (r.state != "done" || !r.stats) return std::nullopt;
+  const std::optional<double> v = m.value(*r.stats);
+  return v && std::isfinite(*v) ? v : std::nullopt;
 }
 
 // A setting's value as the run's id writes it: 0.5, 5, 12.
@@ -112,14 +111,13 @@ const char* kSweepColors[] = {"#1f6fb2", "#c0392b", "#2a8a4a", "#7b3fa0", "#a052
 
 // Each measure against the one setting the sweep varies (the paper's Fig. 16 for k_time): a line per seed.
 std::string plots(const SweepCollection& c) {
-  const SweepPlan& plan = *c.plan;
-  if (plan.varied.size() != 1) return {};
-  const std::string& name = plan.varied.front();
+  if (c.varied.size() != 1) return {};
+  const std::string& name = c.varied.front();
   std::set<double> xs;
   std::map<std::uint64_t, std::vector<const CollectedRun*>> by_seed;
   for (const CollectedRun& r : c.runs) {
-    xs.insert(r.run->set.front().second.get<double>());
-    by_seed[r.run->seed].push_back(&r);
+    xs.insert(r.set.front().second.get<double>());
+    by_seed[r.seed].push_back(&r);
   }
   if (xs.size() < 2) return {};
   const double lo = *xs.begin(), hi = *xs.rbegin();
@@ -136,7 +134,7 @@ std::string plots(const SweepCollection& c) {
       std::vector<std::pair<double, std::optional<double>>> points;
       for (const CollectedRun* r : runs) {
         const std::optional<double> v = measure_value(*r, m);
-        points.emplace_back(r->run->set.front().second.get<double>(), v ? std::optional<double>(*v * m.scale) : v);
+        points.emplace_back(r->set.front().second.get<double>(), v ? std::optional<double>(*v * m.scale) : v);
       }
       std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       Series s{"seed " + std::to_string(seed), {}, {}, kSweepColors[colour++ % std::size(kSweepColors)]};
@@ -159,19 +157,39 @@ std::string plots(const SweepCollection& c) {
 
 const std::vector<SweepMeasure>& sweep_measures() {
   // docs/quality.md says what each is; docs/sweeps.md why these.
+  using Summary = StatsSummary;
+  const auto frames = [](double Summary::*member) {
+    return [member](const Stats& s) {
+      return s.quality ? std::optional<double>(s.quality->frames.*member) : std::nullopt;
+    };
+  };
+  const auto evenness = [](double StatsEvennessSummary::*member) {
+    return [member](const Stats& s) {
+      return s.quality && s.quality->frames.evenness ? std::optional<double>((*s.quality->frames.evenness).*member)
+                                                     : std::nullopt;
+    };
+  };
   static const std::vector<SweepMeasure> measures = {
-      {"coverage_min", "coverage, lowest frame", "quality.frames.coverage.min", 100.0, 1, " %", "high"},
-      {"coverage_mean", "coverage, mean", "quality.frames.coverage.mean", 100.0, 1, " %", "high"},
-      {"wall_ratio", "wall ratio", "quality.frames.wall_ratio.median", 1.0, 2, "", "half"},
-      {"empty_disc", "largest empty disc", "quality.frames.empty_disc.median", 1.0, 2, " ρ", "low"},
-      {"kink", "kink", "motion.kink", 1.0, 1, "", "low"},
-      {"iterations", "iterations", "iterations", 1.0, 0, "", "low"},
-      {"seconds", "time", "seconds.simulation", 1.0, 1, " s", "low"}};
+      {"coverage_min", "coverage, lowest frame", "quality.frames.coverage.min", frames(&Summary::coverage_min), false,
+       100.0, 1, " %", "high"},
+      {"coverage_mean", "coverage, mean", "quality.frames.coverage.mean", frames(&Summary::coverage_mean), false, 100.0,
+       1, " %", "high"},
+      {"wall_ratio", "wall ratio", "quality.frames.wall_ratio.median",
+       evenness(&StatsEvennessSummary::wall_ratio_median), false, 1.0, 2, "", "half"},
+      {"empty_disc", "largest empty disc", "quality.frames.empty_disc.median",
+       evenness(&StatsEvennessSummary::empty_disc_median), false, 1.0, 2, " ρ", "low"},
+      {"kink", "kink", "motion.kink",
+       [](const Stats& s) { return s.motion ? std::optional<double>(s.motion->kink) : std::nullopt; }, false, 1.0, 1,
+       "", "low"},
+      {"iterations", "iterations", "iterations",
+       [](const Stats& s) { return std::optional<double>(double(s.iterations)); }, true, 1.0, 0, "", "low"},
+      {"seconds", "time", "seconds.simulation",
+       [](const Stats& s) { return s.seconds ? std::optional<double>(s.seconds->simulation) : std::nullopt; }, false,
+       1.0, 1, " s", "low"}};
   return measures;
 }
 
 std::string sweep_page(const SweepCollection& c) {
-  const SweepPlan& plan = *c.plan;
   std::map<std::string, int> states;
   for (const CollectedRun& r : c.runs) ++states[r.state];
   std::ostringstream page;
@@ -179,10 +197,10 @@ std::string sweep_page(const SweepCollection& c) {
        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
        << "<title>animpak sweep: " << xml_escaped(c.title) << "</title><style>" << kSweepStyle << kPlotStyle
        << "</style></head>\n<body>\n<h1>" << xml_escaped(c.title) << "</h1>\n<p class=\"sub\">" << c.runs.size()
-       << " runs of <code>" << xml_escaped(plan.scene_file) << "</code>";
+       << " runs of <code>" << xml_escaped(c.scene_file) << "</code>";
   for (const auto& [state, n] : states) page << ", " << n << " " << xml_escaped(state);
   page << "; varied: seed";
-  for (const std::string& name : plan.varied) page << ", " << xml_escaped(name);
+  for (const std::string& name : c.varied) page << ", " << xml_escaped(name);
   page << "</p>\n<div class=\"controls\"><label>Sort by <select id=\"sort\">";
   for (const SweepMeasure& m : sweep_measures())
     page << "<option value=\"" << m.key << "\">" << xml_escaped(m.label)
@@ -193,7 +211,7 @@ std::string sweep_page(const SweepCollection& c) {
   page << "<option value=\"index\">plan order</option></select></label>"
        << "<label><input type=\"checkbox\" id=\"reverse\"> the other way</label></div>\n<div id=\"cards\">\n";
   for (const CollectedRun& r : c.runs) {
-    const SweepRun& run = *r.run;
+    const CollectedRun& run = r;
     page << "<div class=\"card\" id=\"run-" << xml_escaped(run.id) << "\" data-id=\"" << xml_escaped(run.id)
          << "\" data-index=\"" << run.index << "\" data-state=\"" << xml_escaped(r.state) << "\"";
     for (const SweepMeasure& m : sweep_measures())
@@ -238,24 +256,24 @@ std::string sweep_page(const SweepCollection& c) {
 }
 
 std::string sweep_csv(const SweepCollection& c) {
-  const SweepPlan& plan = *c.plan;
   std::ostringstream out;
   out << "index,id,state,seed";
-  for (const std::string& name : plan.varied) out << "," << csv_field(name);
+  for (const std::string& name : c.varied) out << "," << csv_field(name);
   for (const SweepMeasure& m : sweep_measures()) out << "," << m.key;
   out << ",stop_reason,message,folder\n";
   for (const CollectedRun& r : c.runs) {
-    const SweepRun& run = *r.run;
+    const CollectedRun& run = r;
     out << run.index << "," << csv_field(run.id) << "," << csv_field(r.state) << "," << run.seed;
     for (const auto& [name, value] : run.set) out << "," << value_text(value);
-    // Each figure as stats.json writes it, to the last digit.
-    for (const SweepMeasure& m : sweep_measures())
-      out << "," << (measure_value(r, m) ? stats_at(r.stats, m.path).dump() : std::string());
-    const json& reason = stats_at(r.stats, "stop_reason");
-    out << "," << (reason.is_string() ? csv_field(reason.get<std::string>()) : std::string()) << ","
-        << csv_field(r.message) << ",runs/" << csv_field(run.id) << "\n";
+    // Each figure as stats.json writes it, to the last digit (a count without a decimal point).
+    for (const SweepMeasure& m : sweep_measures()) {
+      const std::optional<double> v = measure_value(r, m);
+      out << "," << (!v ? std::string() : m.whole ? json(std::int64_t(*v)).dump() : json(*v).dump());
+    }
+    out << "," << (r.stats ? csv_field(r.stats->stop_reason) : std::string()) << "," << csv_field(r.message) << ",runs/"
+        << csv_field(run.id) << "\n";
   }
   return out.str();
 }
 
-}  // namespace animpak::cli
+}  // namespace animpak

@@ -1,5 +1,6 @@
-// Line plots as inline SVG, drawn by animpak's own code (no plotting library): the report page's plots
-// (report_page.hpp) and the trajectory figure (trajectory_figure.hpp). Each plot is one <svg class="plot">
+// The figures library's own header (animpak/report.hpp is its public one): line plots as inline SVG, drawn
+// by animpak's own code (no plotting library), for the report page (report_page.cpp), the sweep's page
+// (sweep_page.cpp) and the trajectory figure (trajectory_figure.cpp). Each plot is one <svg class="plot">
 // whose look is kPlotStyle's CSS.
 #pragma once
 
@@ -7,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace animpak::cli {
+namespace animpak {
 
 /// One line of a plot: its points (a null y breaks the line), its colour and its role.
 struct Series {
@@ -39,7 +40,4 @@ extern const char* const kPlotStyle;
 /// A round step for about `count` ticks over `range`: 1, 2 or 5 times a power of ten.
 double tick_step(double range, int count);
 
-/// `value` with `decimals` decimals, thousands separated by commas ("5,400", "43.5").
-std::string report_number(double value, int decimals);
-
-}  // namespace animpak::cli
+}  // namespace animpak

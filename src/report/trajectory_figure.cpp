@@ -1,5 +1,5 @@
-// The trajectory figure (trajectory_figure.hpp): SVG text written here, plots by svg_plot.hpp.
-#include "trajectory_figure.hpp"
+// The trajectory figure (animpak/report.hpp): SVG text written here, plots by svg_plot.hpp.
+#include "animpak/report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "animpak/xml_text.hpp"
 #include "svg_plot.hpp"
 
-namespace animpak::cli {
+namespace animpak {
 namespace {
 
 // Colours told apart by colour-blind readers too (blue, orange, then green, purple, grey).
@@ -204,4 +204,4 @@ std::string trajectory_svg(const TrajectoryFigure& figure) {
   return svg.str();
 }
 
-}  // namespace animpak::cli
+}  // namespace animpak

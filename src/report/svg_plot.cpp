@@ -1,6 +1,8 @@
 // Inline SVG line plots (svg_plot.hpp).
 #include "svg_plot.hpp"
 
+#include "animpak/report.hpp"  // report_number
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +11,7 @@
 
 #include "animpak/xml_text.hpp"
 
-namespace animpak::cli {
+namespace animpak {
 
 const char* const kPlotStyle = R"(
 svg.plot{background:#fff;border:1px solid #ddd}
@@ -141,4 +143,4 @@ std::string report_number(double value, int decimals) {
   return sign + grouped + digits.substr(point);
 }
 
-}  // namespace animpak::cli
+}  // namespace animpak
