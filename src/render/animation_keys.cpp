@@ -4,6 +4,7 @@
 // docs/animation-formats.md, "Keys at the slices, and between them".
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "frame_writers.hpp"
@@ -192,9 +193,11 @@ std::vector<Vec2> hull_of(std::vector<Vec2> points) {
 }
 
 // The similarity that takes the reference points (centred on their mean) closest to `points` by least
-// squares (the element's rotation, uniform scale and move at one candidate); `angle_near` picks the turn
-// of the angle nearest the previous candidate's, so that keys between two candidates turn the short way.
-Placement fitted_placement(const std::vector<Vec2>& reference, const std::vector<Vec2>& points, double angle_near) {
+// squares (the element's rotation, uniform scale and move at one candidate; with `rigid`, its scale 1);
+// `angle_near` picks the turn of the angle nearest the previous candidate's, so that keys between two
+// candidates turn the short way.
+Placement fitted_placement(const std::vector<Vec2>& reference, const std::vector<Vec2>& points, double angle_near,
+                           bool rigid = false) {
   Vec2 mean{0, 0};
   for (Vec2 p : points) mean = mean + p;
   mean = mean * (1.0 / double(points.size()));
@@ -208,7 +211,7 @@ Placement fitted_placement(const std::vector<Vec2>& reference, const std::vector
   if (rr <= 0.0) return placed;
   placed.angle = std::atan2(b, a);
   placed.angle += 2 * M_PI * std::round((angle_near - placed.angle) / (2 * M_PI));
-  placed.scale = std::hypot(a, b) / rr;
+  placed.scale = rigid ? 1.0 : std::hypot(a, b) / rr;
   return placed;
 }
 
@@ -252,7 +255,7 @@ std::vector<Vec2> reference_of(const std::vector<Vec2>& first) {
 // move of its parts from key to key strays from it by more than `tolerance` at any hull corner of the art.
 void add_placement_keys(const std::vector<double>& frames, const std::vector<Vec2>& reference,
                         const std::vector<Placement>& fitted, const std::vector<char>& forced, double tolerance,
-                        ElementKeys& keys) {
+                        std::vector<double>& key_frames, std::vector<Placement>& placements, std::vector<Ease>& eases) {
   const std::vector<Vec2> hull = hull_of(reference);
   std::vector<std::vector<Vec2>> corners(fitted.size());  // the hull's corners where each fit puts them
   for (std::size_t c = 0; c < fitted.size(); ++c)
@@ -272,8 +275,8 @@ void add_placement_keys(const std::vector<double>& frames, const std::vector<Vec
         ease);
   };
   for (const auto& [k, ease] : chosen_keys(frames.size(), forced, fits)) {
-    if (!keys.frames.empty()) keys.ease.push_back(ease);
-    keys.frames.push_back(frames[k]), keys.placements.push_back(fitted[k]);
+    if (!key_frames.empty()) eases.push_back(ease);
+    key_frames.push_back(frames[k]), placements.push_back(fitted[k]);
   }
 }
 
@@ -314,23 +317,40 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
 
 ElementKeys still_keys(const ArtPoints& points) {
   ElementKeys keys;
-  for (const auto& lines : points) keys.paths.push_back({{0.0}, {lines}, {}});
+  for (const auto& lines : points) {
+    PathKeys& path = keys.paths.emplace_back();
+    path.frames = {0.0}, path.lines = {lines};
+  }
   keys.stroke_frames = {0.0}, keys.stroke_scales = {1.0};
   return keys;
 }
 
-Placement placement_at(const ElementKeys& keys, double frame) {
-  if (keys.frames.empty()) return {};
-  const std::size_t next = std::size_t(std::upper_bound(keys.frames.begin(), keys.frames.end(), frame) -
-                                       keys.frames.begin());
-  if (next == 0) return keys.placements.front();
-  if (next == keys.frames.size()) return keys.placements.back();
-  const double a = keys.frames[next - 1], b = keys.frames[next];
-  return placement_between(keys.placements[next - 1], keys.placements[next],
-                           keys.ease[next - 1].at((frame - a) / (b - a)));
+Placement placement_at(const std::vector<double>& frames, const std::vector<Placement>& placements,
+                       const std::vector<Ease>& ease, double frame) {
+  if (frames.empty()) return {};
+  const std::size_t next = std::size_t(std::upper_bound(frames.begin(), frames.end(), frame) - frames.begin());
+  if (next == 0) return placements.front();
+  if (next == frames.size()) return placements.back();
+  const double a = frames[next - 1], b = frames[next];
+  return placement_between(placements[next - 1], placements[next], ease[next - 1].at((frame - a) / (b - a)));
 }
 
 namespace {
+
+// The farthest any point at a candidate, in a frame placed by `shown` there, lies from where `fixed` puts
+// it (world units): how far writing the points once would draw them from the frames.
+double stray(const std::vector<Placement>& shown, const std::vector<std::vector<Vec2>>& local,
+             const std::vector<Vec2>& fixed) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < local.size(); ++k)
+    for (std::size_t v = 0; v < fixed.size(); ++v) worst = std::max(worst, shown[k].scale * norm(local[k][v] - fixed[v]));
+  return worst;
+}
+
+// About the bytes one key writes, for choosing between a path keyed in its element's frame and one with a
+// frame of its own: a point of a Lottie shape key ("[x,y]" and two zero tangents), and a turn-and-move key
+// (its position and angle keyframes).
+constexpr std::size_t point_key_cost = 26, place_key_cost = 140;
 
 // Element `element`'s keys, its art reflected across the container's mirror when `reflected` (a drawn
 // mirror image): element_keys and drawn_keys.
@@ -381,8 +401,9 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
   }
   // The candidate times: every slice, and between two slices the steps of twice the parts in which
   // chords stay within the tolerance (key_parts; at least 8), so that checking the candidates checks the
-  // curve, and the element's turn and scale between slices (straight lines between slices turn a shape
-  // along the chords, which no single similarity key pair draws).
+  // curve and the element's turn and scale between slices (straight lines between slices turn a shape
+  // along the chords, which no single similarity key pair draws), and every frame, so that each frame the
+  // PNG frames draw is checked.
   std::vector<double> times;
   std::vector<ElementArt> art;  // the art at each candidate
   std::vector<char> slice;      // whether the candidate is a slice
@@ -395,13 +416,16 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
     if (!times.empty()) {
       const double before = times.back();
       const int candidates = std::max(8, 2 * key_parts(world, state, element, tangents, before, t, tolerance));
-      for (int j = 1; j < candidates; ++j) {
-        const double tj = before + (t - before) * j / candidates;
+      std::vector<double> between;
+      for (int j = 1; j < candidates; ++j) between.push_back(before + (t - before) * j / candidates);
+      for (int i = int(std::floor(before * frames_per_unit)) + 1; i < t * frames_per_unit; ++i)
+        between.push_back(i / frames_per_unit);
+      std::sort(between.begin(), between.end());
+      for (const double tj : between)
         if (frame_of(tj) > frame_of(times.back()) && frame_of(tj) < frame_of(t)) {
           times.push_back(tj), slice.push_back(0);
           art.push_back(art_at(element_at(world, state, element, tj, tangents)));
         }
-      }
     }
     for (int v = 0; v < P; ++v) positions[v] = {state.x[first + v], state.y[first + v]};
     times.push_back(t), slice.push_back(1), art.push_back(art_at(positions));
@@ -429,7 +453,9 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
     // The placement's keys are cheap (four numbers each, whatever the art): they keep the element within a
     // tenth of a pixel of where the fits place it, or the tolerance where that is less, so that a path
     // moving with it is written once and still drawn where the frames draw it.
-    add_placement_keys(key_frames, reference, fitted, forced, std::min(tolerance, key_placement_px / pixels), keys);
+    const double placement_tolerance = std::min(tolerance, key_placement_px / pixels);
+    add_placement_keys(key_frames, reference, fitted, forced, placement_tolerance, keys.frames, keys.placements,
+                       keys.ease);
     std::vector<Placement> shown;  // the placement a player shows at each candidate
     double largest = 0.0;
     for (double f : key_frames) shown.push_back(placement_at(keys, f)), largest = std::max(largest, shown.back().scale);
@@ -441,15 +467,49 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
         mean.resize(local[k].size(), Vec2{0, 0});
         for (std::size_t v = 0; v < mean.size(); ++v) mean[v] = mean[v] + local[k][v] * (1.0 / double(times.size()));
       }
-      double worst = 0.0;
-      for (std::size_t k = 0; k < times.size(); ++k)
-        for (std::size_t v = 0; v < mean.size(); ++v) worst = std::max(worst, shown[k].scale * norm(local[k][v] - mean[v]));
       PathKeys& path = keys.paths[p];
-      if (worst <= tolerance) {
+      if (stray(shown, local, mean) <= tolerance) {
         path.frames.push_back(0.0), path.lines.push_back(as_lines(mean, art[0].points[p]));
         continue;
       }
-      for (const auto& [k, ease] : path_keys(key_frames, local, forced, tolerance / largest)) {
+      // Keyed in the element's frame, or given a frame of its own that turns and moves with it (a part of
+      // a bending element), keyed in that where it still changes shape: whichever writes fewer numbers.
+      const auto keyed = path_keys(key_frames, local, forced, tolerance / largest);
+      PathKeys own;
+      std::vector<std::vector<Vec2>> in_own;
+      std::size_t own_cost = std::numeric_limits<std::size_t>::max();
+      if (mean.size() >= 8) {
+        const std::vector<Vec2> shape = reference_of(mean);
+        std::vector<Placement> fitted_own;
+        for (const auto& at : local)
+          fitted_own.push_back(fitted_placement(shape, at, fitted_own.empty() ? 0.0 : fitted_own.back().angle, true));
+        add_placement_keys(key_frames, shape, fitted_own, forced, placement_tolerance / largest, own.place_frames,
+                           own.placements, own.place_ease);
+        std::vector<Vec2> own_mean(mean.size(), Vec2{0, 0});
+        std::vector<Placement> own_shown;
+        for (std::size_t k = 0; k < times.size(); ++k) {
+          const Placement at = placement_at(own.place_frames, own.placements, own.place_ease, key_frames[k]);
+          own_shown.push_back({at.position, at.angle, at.scale * shown[k].scale});
+          in_own.emplace_back();
+          for (Vec2 q : local[k]) in_own.back().push_back(at.to_local(q));
+          for (std::size_t v = 0; v < mean.size(); ++v)
+            own_mean[v] = own_mean[v] + in_own.back()[v] * (1.0 / double(times.size()));
+        }
+        if (stray(own_shown, in_own, own_mean) <= tolerance) {
+          own.frames.push_back(0.0), own.lines.push_back(as_lines(own_mean, art[0].points[p]));
+        } else {
+          for (const auto& [k, ease] : path_keys(key_frames, in_own, forced, tolerance / largest)) {
+            if (!own.frames.empty()) own.ease.push_back(ease);
+            own.frames.push_back(key_frames[k]), own.lines.push_back(as_lines(in_own[k], art[k].points[p]));
+          }
+        }
+        own_cost = own.place_frames.size() * place_key_cost + own.frames.size() * mean.size() * point_key_cost;
+      }
+      if (own_cost < keyed.size() * mean.size() * point_key_cost) {
+        path = std::move(own);
+        continue;
+      }
+      for (const auto& [k, ease] : keyed) {
         if (!path.frames.empty()) path.ease.push_back(ease);
         path.frames.push_back(key_frames[k]), path.lines.push_back(as_lines(local[k], art[k].points[p]));
       }
@@ -462,9 +522,13 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
       add(frames, art.back());
     } else {
       keys.frames.push_back(frames), keys.placements.push_back(keys.placements.back()), keys.ease.emplace_back();
-      for (PathKeys& path : keys.paths)
+      for (PathKeys& path : keys.paths) {
         if (path.frames.size() > 1)
           path.frames.push_back(frames), path.lines.push_back(path.lines.back()), path.ease.emplace_back();
+        if (path.place_frames.size() > 1)
+          path.place_frames.push_back(frames), path.placements.push_back(path.placements.back()),
+              path.place_ease.emplace_back();
+      }
       if (keys.stroke_frames.size() > 1)
         keys.stroke_frames.push_back(frames), keys.stroke_scales.push_back(keys.stroke_scales.back()),
             keys.stroke_ease.emplace_back();

@@ -71,10 +71,22 @@ Vec2 least_corner(const ElementKeys& keys, Map to, int decimals) {
 // a turn or a scale of the frame moves a point, which sets the decimals its angle and scale need.
 double farthest_local(const ElementKeys& keys) {
   double farthest = 0.0;
-  for (const PathKeys& path : keys.paths)
+  for (const PathKeys& path : keys.paths) {
+    double offset = 0.0;  // where the path's own frame lies in the element's, at the farthest
+    for (const Placement& at : path.placements) offset = std::max(offset, norm(at.position));
     for (const auto& lines : path.lines)
       for (const auto& line : lines)
-        for (Vec2 v : line) farthest = std::max(farthest, norm(v));
+        for (Vec2 v : line) farthest = std::max(farthest, offset + norm(v));
+  }
+  return farthest;
+}
+
+// The farthest a path's points lie from its own frame's origin (world units): the decimals of its angle.
+double farthest_in_path(const PathKeys& path) {
+  double farthest = 0.0;
+  for (const auto& lines : path.lines)
+    for (const auto& line : lines)
+      for (Vec2 v : line) farthest = std::max(farthest, norm(v));
   return farthest;
 }
 
@@ -259,7 +271,7 @@ class LottieLayers {
   template <class Value>
   void vector_property(const ElementKeys& keys, Value value) {
     if (keys.frames.size() == 1)
-      json_ << still("[" + value(0) + "]");
+      json_ << "{\"a\":0,\"k\":[" << value(0) << "]}";
     else
       write_keyframes(json_, keys.frames, interpolation_, false, value, keys.ease);
   }
@@ -289,7 +301,34 @@ class LottieLayers {
       if (fills) fill(path);
       if (strokes) stroke(path, keys);
     }
-    json_ << identity_group_transform << "]}";
+    if (path_keys.place_frames.empty())
+      json_ << identity_group_transform;
+    else
+      group_transform(path_keys);
+    json_ << "]}";
+  }
+  // A path's own frame within its layer: its position (pixels of the layer) and angle keyed, scale 1.
+  void group_transform(const PathKeys& path) {
+    const int degrees = decimals_for(decimals_, farthest_in_path(path) * fit_.scale * M_PI / 180);
+    json_ << "{\"ty\":\"tr\",\"p\":";
+    if (path.place_frames.size() == 1) {
+      const Vec2 p = path.placements[0].position * fit_.scale;
+      json_ << "{\"a\":0,\"k\":[" << number(p.x, decimals_) << "," << number(p.y, decimals_) << "]}";
+    } else {
+      write_keyframes(
+          json_, path.place_frames, interpolation_, false,
+          [&](std::size_t k) {
+            const Vec2 p = path.placements[k].position * fit_.scale;
+            return number(p.x, decimals_) + "," + number(p.y, decimals_);
+          },
+          path.place_ease);
+    }
+    json_ << ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":{\"a\":0,\"k\":[100,100]},\"r\":";
+    write_keyframes(
+        json_, path.place_frames, interpolation_, false,
+        [&](std::size_t k) { return number(path.placements[k].angle * 180 / M_PI, degrees); }, path.place_ease);
+    json_ << ",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0},\"nm\":"
+             "\"transform\"}";
   }
   void fill(const ArtPath& path) {
     json_ << "{\"ty\":\"fl\",\"c\":" << still(colour(path.fill.color))
@@ -345,7 +384,7 @@ namespace {
 struct SvgView {
   explicit SvgView(const ArtFrame& art_frame) : frame(art_frame) {}
   const ArtFrame& frame;
-  int width = 0, height = 0, decimals = 0;
+  int width = 0, height = 0, decimals = 0, precision = 2;  // decimals of an art unit, and of a pixel (--precision)
   double pixels_per_art_unit = 1.0;
   Vec2 min;
   double w = 0.0, h = 0.0;
@@ -361,6 +400,7 @@ SvgView svg_view(const World& world, const FrameOutput& out) {
   view.min = view.frame.to_art((Vec2{0, 0} - fit.offset) * (1.0 / fit.scale));
   view.w = view.width / view.pixels_per_art_unit, view.h = view.height / view.pixels_per_art_unit;
   view.decimals = decimals_for(out.precision, view.pixels_per_art_unit);
+  view.precision = out.precision;
   return view;
 }
 
@@ -441,10 +481,17 @@ std::string smil_timing(const std::vector<double>& frames, int count, double fps
                        "\" keyTimes=\"" + key_times + "\"";
   if (eased && interpolation == Interpolation::linear) {
     timing += " keySplines=\"";
-    for (std::size_t k = 0; k < ease.size(); ++k)
-      timing +=
-          (k ? ";" : "") + (ease[k].linear ? std::string("0 0 1 1")
-                                           : "0.3333 " + number(ease[k].y1, 4) + " 0.6667 " + number(ease[k].y2, 4));
+    for (std::size_t k = 0; k < ease.size(); ++k) {
+      if (k) timing += ';';
+      if (ease[k].linear) {
+        timing += "0 0 1 1";
+      } else {
+        timing += "0.3333 ";
+        timing += number(ease[k].y1, 4);
+        timing += " 0.6667 ";
+        timing += number(ease[k].y2, 4);
+      }
+    }
     timing += "\"";
   }
   return timing;
@@ -455,19 +502,39 @@ std::string smil_timing(const std::vector<double>& frames, int count, double fps
 template <class Map>
 void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& path, const PathKeys& keys,
                          const ElementKeys& element, Map to, const std::string& shape_timing,
-                         const std::string& stroke_timing) {
+                         const std::string& stroke_timing, int count, double fps, Interpolation interpolation) {
   const bool strokes = path.stroke.enabled && path.stroke_width > 0;
   auto stroke_width = [&](std::size_t k) {
     return view.n(path.stroke_width * element.stroke_scales[k] / view.frame.scale);
   };
-  svg << "<path d=\"";
+  const int degrees = decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale *
+                                                          view.pixels_per_art_unit * M_PI / 180);
+  const auto translate = [&](std::size_t k) {
+    const Vec2 a = keys.placements[k].position * (1.0 / view.frame.scale);
+    return view.n(a.x) + " " + view.n(a.y);
+  };
+  const auto rotate = [&](std::size_t k) { return number(keys.placements[k].angle * 180 / M_PI, degrees); };
+  svg << "<path";
+  if (!keys.placements.empty()) svg << " transform=\"translate(" << translate(0) << ") rotate(" << rotate(0) << ")\"";
+  svg << " d=\"";
   write_svg_path_data(svg, view, path, keys.lines[0], to);
   svg << "\"" << svg_paint(path, stroke_width(0));
-  if (keys.frames.size() == 1 && element.stroke_frames.size() == 1) {
+  if (keys.frames.size() == 1 && element.stroke_frames.size() == 1 && keys.place_frames.size() <= 1) {
     svg << "/>\n";
     return;
   }
   svg << ">\n";
+  if (keys.place_frames.size() > 1) {
+    const std::string timing = smil_timing(keys.place_frames, count, fps, interpolation, keys.place_ease);
+    const auto animate = [&](const char* type, const char* additive, auto value) {
+      svg << "<animateTransform attributeName=\"transform\" type=\"" << type << "\" additive=\"" << additive
+          << "\" " << timing << " values=\"";
+      for (std::size_t k = 0; k < keys.place_frames.size(); ++k) svg << (k ? ";" : "") << value(k);
+      svg << "\"/>\n";
+    };
+    animate("translate", "replace", translate);
+    animate("rotate", "sum", rotate);
+  }
   if (keys.frames.size() > 1) {
     svg << "<animate attributeName=\"d\" " << shape_timing << " values=\"";
     for (std::size_t k = 0; k < keys.frames.size(); ++k) {
@@ -531,7 +598,7 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
         const PathKeys& path = keys.paths[p];
         write_animated_path(svg, view, art.paths[p], path, keys, to,
                             smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease),
-                            stroke_timing);
+                            stroke_timing, out.count, out.fps, out.interpolation);
       }
     };
     if (keys.frames.empty()) {

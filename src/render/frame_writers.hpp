@@ -37,15 +37,6 @@ struct Ease {
   }
 };
 
-/// The keys of one art path: its polylines' points at `frames`, increasing, in frames of the document
-/// (frame i is frames/frame_i.png), and the easing of each interval between two keys (ease[k] leads from
-/// frames[k] to frames[k + 1]). One key: the path does not move in its element's frame (ElementKeys).
-struct PathKeys {
-  std::vector<double> frames;
-  std::vector<std::vector<std::vector<Vec2>>> lines;
-  std::vector<Ease> ease;
-};
-
 /// A similarity, where an element's local frame lies in the world at one key: a local point q is at
 /// position + scale · R(angle) q, R the rotation by `angle` radians ([cos −sin; sin cos] in the world's
 /// axes, which are the pictures' axes scaled: clockwise on screen, as Lottie's `r` and SVG's rotate()).
@@ -63,6 +54,21 @@ struct Placement {
   }
 };
 
+/// The keys of one art path: its polylines' points at `frames`, increasing, in frames of the document
+/// (frame i is frames/frame_i.png), and the easing of each interval between two keys (ease[k] leads from
+/// frames[k] to frames[k + 1]). One key: the path does not change shape in its frame. With `placements`
+/// (at `place_frames`, eased by `place_ease`, each a turn and move with scale 1), the path has a frame of
+/// its own within its element's, and its points are in it (docs/animation-formats.md, "The element's
+/// frame").
+struct PathKeys {
+  std::vector<double> frames;
+  std::vector<std::vector<std::vector<Vec2>>> lines;
+  std::vector<Ease> ease;
+  std::vector<double> place_frames;
+  std::vector<Placement> placements;
+  std::vector<Ease> place_ease;
+};
+
 /// The keys of one element's animation (docs/animation-formats.md, "The element's frame"). With `frames`
 /// empty, the paths' points are world points (held keys, a still picture). Otherwise the element moves as
 /// a whole through `placements` at `frames` (each interval eased by `ease`, as PathKeys), and its paths'
@@ -78,10 +84,15 @@ struct ElementKeys {
   std::vector<Ease> stroke_ease;
 };
 
-/// The similarity a player shows at `frame` from the element's placement keys: each of position, angle
-/// and scale moved from one key towards the next by the key's easing (as Lottie and SMIL interpolate a
-/// transform's parts). The identity when the element has no placement keys.
-Placement placement_at(const ElementKeys& keys, double frame);
+/// The similarity a player shows at `frame` from placement keys at `frames`: each of position, angle and
+/// scale moved from one key towards the next by the key's easing (as Lottie and SMIL interpolate a
+/// transform's parts). The identity without keys.
+Placement placement_at(const std::vector<double>& frames, const std::vector<Placement>& placements,
+                       const std::vector<Ease>& ease, double frame);
+/// The element's placement at `frame` (placement_at of its keys).
+inline Placement placement_at(const ElementKeys& keys, double frame) {
+  return placement_at(keys.frames, keys.placements, keys.ease, frame);
+}
 
 /// One key of every path at frame 0, no stroke scaling: a still picture (the container's art).
 ElementKeys still_keys(const ArtPoints& points);

@@ -142,10 +142,9 @@ std::vector<double> lottie_numbers_at(const nlohmann::json& property, double fra
   });
 }
 
-// Where a layer's transform takes its point q at `frame`: p + R(r) · (s / 100) · (q − a), Lottie's order,
-// R turning clockwise on screen by r degrees.
-Vec2 lottie_layer_point(const nlohmann::json& layer, Vec2 q, double frame) {
-  const nlohmann::json& ks = layer["ks"];
+// Where a transform (a layer's ks, a group's tr) takes its point q at `frame`: p + R(r) · (s / 100) · (q − a),
+// Lottie's order, R turning clockwise on screen by r degrees.
+Vec2 lottie_transformed(const nlohmann::json& ks, Vec2 q, double frame) {
   const std::vector<double> p = lottie_numbers_at(ks["p"], frame), a = lottie_numbers_at(ks["a"], frame),
                             s = lottie_numbers_at(ks["s"], frame);
   const double r = lottie_numbers_at(ks["r"], frame)[0] * M_PI / 180;
@@ -158,16 +157,24 @@ const nlohmann::json& doc_last_outline(const nlohmann::json& doc) {
   return doc["layers"].back()["shapes"][0]["it"][0]["ks"];
 }
 
-// Every shape property of a Lottie document's art layers, with its layer.
-std::vector<std::pair<const nlohmann::json*, const nlohmann::json*>> lottie_shapes(const nlohmann::json& doc) {
-  std::vector<std::pair<const nlohmann::json*, const nlohmann::json*>> shapes;
+// Every shape property of a Lottie document's art layers, with its group's transform and its layer's.
+struct LottieShape {
+  const nlohmann::json *shape, *group, *layer;
+};
+std::vector<LottieShape> lottie_shapes(const nlohmann::json& doc) {
+  std::vector<LottieShape> shapes;
   for (const auto& layer : doc["layers"]) {
     if (!layer.contains("shapes")) continue;
     for (const auto& group : layer["shapes"])
       for (const auto& item : group["it"])
-        if (item["ty"] == "sh") shapes.emplace_back(&item["ks"], &layer);
+        if (item["ty"] == "sh") shapes.push_back({&item["ks"], &group["it"].back(), &layer["ks"]});
   }
   return shapes;
+}
+
+// Where a player draws point q of a shape at `frame`: its group's transform, then its layer's.
+Vec2 lottie_drawn(const LottieShape& shape, Vec2 q, double frame) {
+  return lottie_transformed(*shape.layer, lottie_transformed(*shape.group, q, frame), frame);
 }
 
 // The farthest any point of `keyed` lies, at any of `count` frames, from the same point of `held` (the
@@ -178,11 +185,10 @@ double farthest_from_frames(const nlohmann::json& keyed, const nlohmann::json& h
   double worst = 0.0;
   for (std::size_t k = 0; k < ours.size(); ++k)
     for (int i = 0; i < count; ++i) {
-      const std::vector<Vec2> player = lottie_points_at(*ours[k].first, i), truth = lottie_points_at(*frames[k].first, i);
+      const std::vector<Vec2> player = lottie_points_at(*ours[k].shape, i), truth = lottie_points_at(*frames[k].shape, i);
       REQUIRE(player.size() == truth.size());
       for (std::size_t v = 0; v < player.size(); ++v)
-        worst = std::max(worst, norm(lottie_layer_point(*ours[k].second, player[v], i) -
-                                     lottie_layer_point(*frames[k].second, truth[v], i)));
+        worst = std::max(worst, norm(lottie_drawn(ours[k], player[v], i) - lottie_drawn(frames[k], truth[v], i)));
     }
   return worst;
 }
@@ -532,12 +538,14 @@ TEST_CASE(
   write_frames(world, state, out);
   const nlohmann::json held = nlohmann::json::parse(text_of(temp / "held" / "animation.json"));
   CHECK(farthest_from_frames(keyed, held, out.count) <= 0.75 + 0.01);  // the key tolerance, and roundings
-  // Element 0 (the last layer) slides: its outline still, its layer's position keyed; straight keys need 23
-  // here (keyed every one or two frames where the speed changes), eased ones 6.
+  // Element 0 (the last layer) slides: its outline still, its layer's position keyed, some keys eased. Its
+  // outline keyed on its own points to the key tolerance (0.27 pixels here) took 23 straight keys (every
+  // one or two frames where the speed changes) or 6 eased ones; the placement, held within a tenth of a
+  // pixel, takes 18, a key at every candidate near the turns.
   CHECK(doc_last_outline(keyed)["a"] == 0);
   const nlohmann::json& slide = keyed["layers"].back()["ks"]["p"];
   for (const auto& key : slide["k"]) UNSCOPED_INFO(key["t"] << " " << (key.contains("o") ? key["o"].dump() : ""));
-  CHECK(slide["k"].size() <= 8);
+  CHECK(slide["k"].size() <= 20);
   CHECK(std::any_of(slide["k"].begin(), slide["k"].end(),
                     [](const auto& key) { return key.contains("o") && key["o"]["x"][0] != 0; }));
 }
