@@ -459,6 +459,8 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
     std::vector<Placement> shown;  // the placement a player shows at each candidate
     double largest = 0.0;
     for (double f : key_frames) shown.push_back(placement_at(keys, f)), largest = std::max(largest, shown.back().scale);
+    std::vector<char> strokes;
+    for (const ArtPath& path : lib.art.art.paths) strokes.push_back(path.stroke.enabled && path.stroke_width > 0);
     for (std::size_t p = 0; p < paths; ++p) {
       std::vector<std::vector<Vec2>> local(times.size());
       std::vector<Vec2> mean;
@@ -472,8 +474,9 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
         path.frames.push_back(0.0), path.lines.push_back(as_lines(mean, art[0].points[p]));
         continue;
       }
-      // Keyed in the element's frame, or given a frame of its own that turns and moves with it (a part of
-      // a bending element), keyed in that where it still changes shape: whichever writes fewer numbers.
+      // Keyed in the element's frame, or given a frame of its own that turns, moves and, unless it is
+      // stroked (its stroke widths follow the element's scale alone), scales within it (a part of a
+      // bending element), keyed in that where it still changes shape: whichever writes fewer numbers.
       const auto keyed = path_keys(key_frames, local, forced, tolerance / largest);
       PathKeys own;
       std::vector<std::vector<Vec2>> in_own;
@@ -482,7 +485,8 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
         const std::vector<Vec2> shape = reference_of(mean);
         std::vector<Placement> fitted_own;
         for (const auto& at : local)
-          fitted_own.push_back(fitted_placement(shape, at, fitted_own.empty() ? 0.0 : fitted_own.back().angle, true));
+          fitted_own.push_back(
+              fitted_placement(shape, at, fitted_own.empty() ? 0.0 : fitted_own.back().angle, strokes[p]));
         add_placement_keys(key_frames, shape, fitted_own, forced, placement_tolerance / largest, own.place_frames,
                            own.placements, own.place_ease);
         std::vector<Vec2> own_mean(mean.size(), Vec2{0, 0});

@@ -307,7 +307,7 @@ class LottieLayers {
       group_transform(path_keys);
     json_ << "]}";
   }
-  // A path's own frame within its layer: its position (pixels of the layer) and angle keyed, scale 1.
+  // A path's own frame within its layer: its position (pixels of the layer), scale and angle keyed.
   void group_transform(const PathKeys& path) {
     const int degrees = decimals_for(decimals_, farthest_in_path(path) * fit_.scale * M_PI / 180);
     json_ << "{\"ty\":\"tr\",\"p\":";
@@ -323,7 +323,21 @@ class LottieLayers {
           },
           path.place_ease);
     }
-    json_ << ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":{\"a\":0,\"k\":[100,100]},\"r\":";
+    json_ << ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":";
+    const int percent = decimals_for(decimals_, farthest_in_path(path) * fit_.scale / 100);
+    if (path.place_frames.size() == 1) {
+      const std::string s = number(100 * path.placements[0].scale, percent);
+      json_ << "{\"a\":0,\"k\":[" << s << "," << s << "]}";
+    } else {
+      write_keyframes(
+          json_, path.place_frames, interpolation_, false,
+          [&](std::size_t k) {
+            const std::string s = number(100 * path.placements[k].scale, percent);
+            return s + "," + s;
+          },
+          path.place_ease);
+    }
+    json_ << ",\"r\":";
     write_keyframes(
         json_, path.place_frames, interpolation_, false,
         [&](std::size_t k) { return number(path.placements[k].angle * 180 / M_PI, degrees); }, path.place_ease);
@@ -514,8 +528,11 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
     return view.n(a.x) + " " + view.n(a.y);
   };
   const auto rotate = [&](std::size_t k) { return number(keys.placements[k].angle * 180 / M_PI, degrees); };
+  const int factor = decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale * view.pixels_per_art_unit);
+  const auto scale = [&](std::size_t k) { return number(keys.placements[k].scale, factor); };
   svg << "<path";
-  if (!keys.placements.empty()) svg << " transform=\"translate(" << translate(0) << ") rotate(" << rotate(0) << ")\"";
+  if (!keys.placements.empty())
+    svg << " transform=\"translate(" << translate(0) << ") rotate(" << rotate(0) << ") scale(" << scale(0) << ")\"";
   svg << " d=\"";
   write_svg_path_data(svg, view, path, keys.lines[0], to);
   svg << "\"" << svg_paint(path, stroke_width(0));
@@ -534,6 +551,7 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
     };
     animate("translate", "replace", translate);
     animate("rotate", "sum", rotate);
+    animate("scale", "sum", scale);
   }
   if (keys.frames.size() > 1) {
     svg << "<animate attributeName=\"d\" " << shape_timing << " values=\"";
