@@ -266,7 +266,8 @@ void add_placement_keys(const std::vector<double>& frames, const std::vector<Vec
       for (std::size_t c = a + 1; c < b && worst <= tolerance; ++c) {
         const Placement shown =
             placement_between(fitted[a], fitted[b], e.at((frames[c] - frames[a]) / (frames[b] - frames[a])));
-        for (std::size_t h = 0; h < hull.size(); ++h) worst = std::max(worst, norm(shown.to_world(hull[h]) - corners[c][h]));
+        for (std::size_t h = 0; h < hull.size(); ++h)
+          worst = std::max(worst, norm(shown.to_world(hull[h]) - corners[c][h]));
       }
       return worst;
     };
@@ -294,10 +295,13 @@ void add_stroke_keys(const World& world, const SimState& state, int element, con
     return;
   }
   std::vector<std::pair<double, double>> samples;  // (frame, stroke scale)
-  for (std::size_t k = 0; k < candidate_frames.size(); ++k) samples.emplace_back(candidate_frames[k], art[k].stroke_scale);
+  for (std::size_t k = 0; k < candidate_frames.size(); ++k)
+    samples.emplace_back(candidate_frames[k], art[k].stroke_scale);
   for (int i = int(std::floor(candidate_frames.front())) + 1; i < candidate_frames.back() && i < out.count; ++i)
-    if (std::none_of(candidate_frames.begin(), candidate_frames.end(), [&](double f) { return std::abs(f - i) < 1e-9; }))
-      samples.emplace_back(i, element_scale(world, element, element_at(world, state, element, i / frames_per_unit, tangents)));
+    if (std::none_of(candidate_frames.begin(), candidate_frames.end(),
+                     [&](double f) { return std::abs(f - i) < 1e-9; }))
+      samples.emplace_back(
+          i, element_scale(world, element, element_at(world, state, element, i / frames_per_unit, tangents)));
   std::sort(samples.begin(), samples.end());
   std::vector<double> frames;
   std::vector<std::vector<Vec2>> ratio;
@@ -343,7 +347,8 @@ double stray(const std::vector<Placement>& shown, const std::vector<std::vector<
              const std::vector<Vec2>& fixed) {
   double worst = 0.0;
   for (std::size_t k = 0; k < local.size(); ++k)
-    for (std::size_t v = 0; v < fixed.size(); ++v) worst = std::max(worst, shown[k].scale * norm(local[k][v] - fixed[v]));
+    for (std::size_t v = 0; v < fixed.size(); ++v)
+      worst = std::max(worst, shown[k].scale * norm(local[k][v] - fixed[v]));
   return worst;
 }
 
@@ -449,7 +454,8 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
   } else {
     const std::vector<Vec2> reference = reference_of(all[0]);
     std::vector<Placement> fitted;
-    for (const auto& at : all) fitted.push_back(fitted_placement(reference, at, fitted.empty() ? 0.0 : fitted.back().angle));
+    for (const auto& at : all)
+      fitted.push_back(fitted_placement(reference, at, fitted.empty() ? 0.0 : fitted.back().angle));
     // The placement's keys are cheap (four numbers each, whatever the art): they keep the element within a
     // tenth of a pixel of where the fits place it, or the tolerance where that is less, so that a path
     // moving with it is written once and still drawn where the frames draw it.

@@ -521,8 +521,8 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
   auto stroke_width = [&](std::size_t k) {
     return view.n(path.stroke_width * element.stroke_scales[k] / view.frame.scale);
   };
-  const int degrees = decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale *
-                                                          view.pixels_per_art_unit * M_PI / 180);
+  const int degrees =
+      decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale * view.pixels_per_art_unit * M_PI / 180);
   const auto translate = [&](std::size_t k) {
     const Vec2 a = keys.placements[k].position * (1.0 / view.frame.scale);
     return view.n(a.x) + " " + view.n(a.y);
@@ -544,8 +544,8 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
   if (keys.place_frames.size() > 1) {
     const std::string timing = smil_timing(keys.place_frames, count, fps, interpolation, keys.place_ease);
     const auto animate = [&](const char* type, const char* additive, auto value) {
-      svg << "<animateTransform attributeName=\"transform\" type=\"" << type << "\" additive=\"" << additive
-          << "\" " << timing << " values=\"";
+      svg << "<animateTransform attributeName=\"transform\" type=\"" << type << "\" additive=\"" << additive << "\" "
+          << timing << " values=\"";
       for (std::size_t k = 0; k < keys.place_frames.size(); ++k) svg << (k ? ";" : "") << value(k);
       svg << "\"/>\n";
     };
@@ -615,8 +615,8 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
       for (int p = 0; p < int(art.paths.size()); ++p) {
         const PathKeys& path = keys.paths[p];
         write_animated_path(svg, view, art.paths[p], path, keys, to,
-                            smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease),
-                            stroke_timing, out.count, out.fps, out.interpolation);
+                            smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease), stroke_timing,
+                            out.count, out.fps, out.interpolation);
       }
     };
     if (keys.frames.empty()) {

@@ -185,7 +185,8 @@ double farthest_from_frames(const nlohmann::json& keyed, const nlohmann::json& h
   double worst = 0.0;
   for (std::size_t k = 0; k < ours.size(); ++k)
     for (int i = 0; i < count; ++i) {
-      const std::vector<Vec2> player = lottie_points_at(*ours[k].shape, i), truth = lottie_points_at(*frames[k].shape, i);
+      const std::vector<Vec2> player = lottie_points_at(*ours[k].shape, i),
+                              truth = lottie_points_at(*frames[k].shape, i);
       REQUIRE(player.size() == truth.size());
       for (std::size_t v = 0; v < player.size(); ++v)
         worst = std::max(worst, norm(lottie_drawn(ours[k], player[v], i) - lottie_drawn(frames[k], truth[v], i)));
@@ -459,7 +460,8 @@ TEST_CASE(
   }
   const std::vector<std::string> element{"translate replace", "rotate sum", "scale sum"};
   std::vector<std::string> expected;
-  for (std::size_t e = 0; e < world.elements.size(); ++e) expected.insert(expected.end(), element.begin(), element.end());
+  for (std::size_t e = 0; e < world.elements.size(); ++e)
+    expected.insert(expected.end(), element.begin(), element.end());
   CHECK(types == expected);
 
   out.interpolation = Interpolation::hold;
@@ -788,7 +790,8 @@ TEST_CASE(
   for (int i = 0; i < out.count; ++i) {
     const PlayerFrame theirs = rlottie_frame(dir / "animation.json", std::size_t(i));
     REQUIRE(theirs.error.empty());
-    const double iou = alpha_iou(read_rgba(dir / "frames" / frame_png(i)), Image{theirs.width, theirs.height, theirs.rgba});
+    const double iou =
+        alpha_iou(read_rgba(dir / "frames" / frame_png(i)), Image{theirs.width, theirs.height, theirs.rgba});
     INFO("rlottie, frame " << i << ": IoU " << iou);
     CHECK(iou >= 0.99);
   }
