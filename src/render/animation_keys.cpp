@@ -31,8 +31,9 @@ double stroke_tolerance(const World& world, int element, const FrameOutput& out)
 constexpr double key_tolerance_px = 0.75;
 constexpr double key_tolerance_share = 0.003;
 // How far a player's placement of a whole element (its frame's move, turn and scale between keys) may stray:
-// a tenth of a pixel. Detailed art (the crossing example's bee, 46 paths, 100 pixels across) overlapped its
-// PNG frames by 0.97 under rlottie with every path 0.3 pixels off; the placement's keys are a few numbers.
+// a tenth of a pixel, or a quarter of the key tolerance where that is less (keys_of). Detailed art (the
+// crossing example's bee, 46 paths, 100 pixels across) overlapped its PNG frames by 0.97 under rlottie with
+// every path 0.3 pixels off; the placement's keys are a few numbers.
 constexpr double key_placement_px = 0.1;
 
 // The number of equal parts of the interval [ta, tb] between two slices in which the curve at the middle
@@ -456,10 +457,11 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
     std::vector<Placement> fitted;
     for (const auto& at : all)
       fitted.push_back(fitted_placement(reference, at, fitted.empty() ? 0.0 : fitted.back().angle));
-    // The placement's keys are cheap (four numbers each, whatever the art): they keep the element within a
-    // tenth of a pixel of where the fits place it, or the tolerance where that is less, so that a path
-    // moving with it is written once and still drawn where the frames draw it.
-    const double placement_tolerance = std::min(tolerance, key_placement_px / pixels);
+    // The placement's keys are cheap (a few numbers each, whatever the art): they keep the element within a
+    // tenth of a pixel of where the fits place it, or a quarter of the tolerance where that is less, so
+    // that a path moving with it is written once (the rest of the tolerance is its own) and still drawn
+    // where the frames draw it.
+    const double placement_tolerance = std::min(0.25 * tolerance, key_placement_px / pixels);
     add_placement_keys(key_frames, reference, fitted, forced, placement_tolerance, keys.frames, keys.placements,
                        keys.ease);
     std::vector<Placement> shown;  // the placement a player shows at each candidate
