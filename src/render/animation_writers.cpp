@@ -67,6 +67,29 @@ Vec2 least_corner(const ElementKeys& keys, Map to, int decimals) {
   return {std::floor(least.x * steps) / steps, std::floor(least.y * steps) / steps};
 }
 
+// The farthest any of a placed element's local points lies from its frame's origin, in world units: how far
+// a turn or a scale of the frame moves a point, which sets the decimals its angle and scale need.
+double farthest_local(const ElementKeys& keys) {
+  double farthest = 0.0;
+  for (const PathKeys& path : keys.paths) {
+    double offset = 0.0;  // where the path's own frame lies in the element's, at the farthest
+    for (const Placement& at : path.placements) offset = std::max(offset, norm(at.position));
+    for (const auto& lines : path.lines)
+      for (const auto& line : lines)
+        for (Vec2 v : line) farthest = std::max(farthest, offset + norm(v));
+  }
+  return farthest;
+}
+
+// The farthest a path's points lie from its own frame's origin (world units): the decimals of its angle.
+double farthest_in_path(const PathKeys& path) {
+  double farthest = 0.0;
+  for (const auto& lines : path.lines)
+    for (const auto& line : lines)
+      for (Vec2 v : line) farthest = std::max(farthest, norm(v));
+  return farthest;
+}
+
 // ---- Lottie -------------------------------------------------------------------------------------------
 
 // A static property; Lottie's "a": 0.
@@ -175,13 +198,20 @@ class LottieLayers {
   }
 
   // One shape layer of art moving through `keys`; within it, too, the first item is on top: the paths
-  // from the last-painted one down. The layer sits at the least corner of its points over the whole
-  // animation, rounded to the decimals kept, and the points are written from there: shorter numbers, the
-  // same pixels.
+  // from the last-painted one down. An element with placement keys is a layer whose transform moves,
+  // turns and scales it through them, its points written in its own frame (docs/animation-formats.md,
+  // "The element's frame"); other art sits at the least corner of its points over the whole animation,
+  // rounded to the decimals kept, and the points are written from there: shorter numbers, the same pixels.
   void art_layer(const std::string& name, const ArtShape& art, const ElementKeys& keys) {
-    origin_ = least_corner(
-        keys, [&](Vec2 v) { return fit_.to_pixel(v); }, decimals_);
-    head(4, name, origin_);
+    placed_ = !keys.frames.empty();
+    if (placed_) {
+      origin_ = {0, 0};
+      placed_head(name, keys);
+    } else {
+      origin_ = least_corner(
+          keys, [&](Vec2 v) { return fit_.to_pixel(v); }, decimals_);
+      head(4, name, origin_);
+    }
     json_ << ",\"shapes\":[";
     for (int p = int(art.paths.size()) - 1; p >= 0; --p) {
       json_ << (p + 1 < int(art.paths.size()) ? ",\n" : "\n");
@@ -213,6 +243,39 @@ class LottieLayers {
   }
   void tail() { json_ << ",\"ip\":0,\"op\":" << frames_ << ",\"st\":0,\"bm\":0}"; }
 
+  // A placed element's layer head: its transform keyed through the placements, position in pixels,
+  // rotation in degrees, scale in percent, each to as many decimals as keep the art's farthest point within
+  // the precision kept (decimals_for).
+  void placed_head(const std::string& name, const ElementKeys& keys) {
+    json_ << (index_ ? ",\n" : "\n");
+    json_ << "{\"ddd\":0,\"ind\":" << ++index_ << ",\"ty\":4,\"nm\":" << json_string(name)
+          << ",\"sr\":1,\"ks\":{\"o\":{\"a\":0,\"k\":100},\"r\":";
+    const double reach = farthest_local(keys) * fit_.scale;
+    const int degrees = decimals_for(decimals_, reach * M_PI / 180), percent = decimals_for(decimals_, reach / 100);
+    write_keyframes(
+        json_, keys.frames, interpolation_, false,
+        [&](std::size_t k) { return number(keys.placements[k].angle * 180 / M_PI, degrees); }, keys.ease);
+    json_ << ",\"p\":";
+    vector_property(keys, [&](std::size_t k) {
+      const Vec2 p = fit_.to_pixel(keys.placements[k].position);
+      return number(p.x, decimals_) + "," + number(p.y, decimals_) + ",0";
+    });
+    json_ << ",\"a\":{\"a\":0,\"k\":[0,0,0]},\"s\":";
+    vector_property(keys, [&](std::size_t k) {
+      const std::string s = number(100 * keys.placements[k].scale, percent);
+      return s + "," + s + ",100";
+    });
+    json_ << "},\"ao\":0";
+  }
+  // A vector property keyed at the placements' frames ("s": [x, y, z]) or, with one key, still.
+  template <class Value>
+  void vector_property(const ElementKeys& keys, Value value) {
+    if (keys.frames.size() == 1)
+      json_ << "{\"a\":0,\"k\":[" << value(0) << "]}";
+    else
+      write_keyframes(json_, keys.frames, interpolation_, false, value, keys.ease);
+  }
+
   // A group's fill and stroke paint every shape above them in it as one path, so holes and even–odd
   // fills come out as in the frames; the later-painted of the two comes first.
   void path_group(const ArtPath& path, const PathKeys& path_keys, const ElementKeys& keys) {
@@ -224,7 +287,7 @@ class LottieLayers {
           json_, path_keys.frames, interpolation_, true,
           [&](std::size_t k) {
             std::vector<Vec2> pixels = path_keys.lines[k][q];
-            for (Vec2& v : pixels) v = fit_.to_pixel(v) - origin_;
+            for (Vec2& v : pixels) v = placed_ ? v * fit_.scale : fit_.to_pixel(v) - origin_;
             return shape_value(pixels, path.polylines[q].closed, decimals_);
           },
           path_keys.ease);
@@ -238,7 +301,48 @@ class LottieLayers {
       if (fills) fill(path);
       if (strokes) stroke(path, keys);
     }
-    json_ << identity_group_transform << "]}";
+    if (path_keys.place_frames.empty())
+      json_ << identity_group_transform;
+    else
+      group_transform(path_keys);
+    json_ << "]}";
+  }
+  // A path's own frame within its layer: its position (pixels of the layer), scale and angle keyed.
+  void group_transform(const PathKeys& path) {
+    const int degrees = decimals_for(decimals_, farthest_in_path(path) * fit_.scale * M_PI / 180);
+    json_ << "{\"ty\":\"tr\",\"p\":";
+    if (path.place_frames.size() == 1) {
+      const Vec2 p = path.placements[0].position * fit_.scale;
+      json_ << "{\"a\":0,\"k\":[" << number(p.x, decimals_) << "," << number(p.y, decimals_) << "]}";
+    } else {
+      write_keyframes(
+          json_, path.place_frames, interpolation_, false,
+          [&](std::size_t k) {
+            const Vec2 p = path.placements[k].position * fit_.scale;
+            return number(p.x, decimals_) + "," + number(p.y, decimals_);
+          },
+          path.place_ease);
+    }
+    json_ << ",\"a\":{\"a\":0,\"k\":[0,0]},\"s\":";
+    const int percent = decimals_for(decimals_, farthest_in_path(path) * fit_.scale / 100);
+    if (path.place_frames.size() == 1) {
+      const std::string s = number(100 * path.placements[0].scale, percent);
+      json_ << "{\"a\":0,\"k\":[" << s << "," << s << "]}";
+    } else {
+      write_keyframes(
+          json_, path.place_frames, interpolation_, false,
+          [&](std::size_t k) {
+            const std::string s = number(100 * path.placements[k].scale, percent);
+            return s + "," + s;
+          },
+          path.place_ease);
+    }
+    json_ << ",\"r\":";
+    write_keyframes(
+        json_, path.place_frames, interpolation_, false,
+        [&](std::size_t k) { return number(path.placements[k].angle * 180 / M_PI, degrees); }, path.place_ease);
+    json_ << ",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0},\"nm\":"
+             "\"transform\"}";
   }
   void fill(const ArtPath& path) {
     json_ << "{\"ty\":\"fl\",\"c\":" << still(colour(path.fill.color))
@@ -249,9 +353,10 @@ class LottieLayers {
   void stroke(const ArtPath& path, const ElementKeys& keys) {
     json_ << "{\"ty\":\"st\",\"c\":" << still(colour(path.stroke.color))
           << ",\"o\":" << still(number(100 * std::clamp(path.stroke.color.a, 0.0, 1.0), 2)) << ",\"w\":";
-    write_keyframes(json_, keys.stroke_frames, interpolation_, false, [&](std::size_t k) {
-      return number(path.stroke_width * keys.stroke_scales[k] * fit_.scale, decimals_);
-    });
+    write_keyframes(
+        json_, keys.stroke_frames, interpolation_, false,
+        [&](std::size_t k) { return number(path.stroke_width * keys.stroke_scales[k] * fit_.scale, decimals_); },
+        keys.stroke_ease);
     json_ << ",\"lc\":2,\"lj\":2,\"nm\":\"stroke\"},";
   }
 
@@ -259,7 +364,8 @@ class LottieLayers {
   Interpolation interpolation_;
   int decimals_, width_ = 0, height_ = 0, frames_ = 0, index_ = 0;
   PixelFit fit_;
-  Vec2 origin_{0, 0};  // where the art layer being written sits
+  Vec2 origin_{0, 0};    // where the art layer being written sits, unless placed
+  bool placed_ = false;  // whether its points are in its element's frame (ElementKeys::frames)
 };
 
 }  // namespace
@@ -292,7 +398,7 @@ namespace {
 struct SvgView {
   explicit SvgView(const ArtFrame& art_frame) : frame(art_frame) {}
   const ArtFrame& frame;
-  int width = 0, height = 0, decimals = 0;
+  int width = 0, height = 0, decimals = 0, precision = 2;  // decimals of an art unit, and of a pixel (--precision)
   double pixels_per_art_unit = 1.0;
   Vec2 min;
   double w = 0.0, h = 0.0;
@@ -308,17 +414,20 @@ SvgView svg_view(const World& world, const FrameOutput& out) {
   view.min = view.frame.to_art((Vec2{0, 0} - fit.offset) * (1.0 / fit.scale));
   view.w = view.width / view.pixels_per_art_unit, view.h = view.height / view.pixels_per_art_unit;
   view.decimals = decimals_for(out.precision, view.pixels_per_art_unit);
+  view.precision = out.precision;
   return view;
 }
 
-// A path's d, its points in the art's coordinates less `origin`.
+// A path's d, its points as `to` writes them (in the art's coordinates less an origin, or a placed
+// element's own frame).
+template <class Map>
 void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path,
-                         const std::vector<std::vector<Vec2>>& lines, Vec2 origin = {0, 0}) {
+                         const std::vector<std::vector<Vec2>>& lines, Map to) {
   bool first = true;
   for (std::size_t q = 0; q < path.polylines.size(); ++q) {
     if (!drawn(path.polylines[q])) continue;
     for (std::size_t k = 0; k < lines[q].size(); ++k) {
-      const Vec2 a = view.frame.to_art(lines[q][k]) - origin;
+      const Vec2 a = to(lines[q][k]);
       svg << (k ? " L" : (first ? "M" : " M")) << view.n(a.x) << ' ' << view.n(a.y);
     }
     if (path.polylines[q].closed) svg << " Z";
@@ -345,7 +454,7 @@ void write_svg_head(std::ostream& svg, const SvgView& view, const World& world, 
     svg << "<g id=\"container-art\">\n";
     for (std::size_t p = 0; p < art.paths.size(); ++p) {
       svg << "<path d=\"";
-      write_svg_path_data(svg, view, art.paths[p], points[p]);
+      write_svg_path_data(svg, view, art.paths[p], points[p], [&](Vec2 v) { return view.frame.to_art(v); });
       svg << "\"" << svg_paint(art.paths[p], view.n(art.paths[p].stroke_width / view.frame.scale)) << "/>\n";
     }
     svg << "</g>\n";
@@ -386,10 +495,17 @@ std::string smil_timing(const std::vector<double>& frames, int count, double fps
                        "\" keyTimes=\"" + key_times + "\"";
   if (eased && interpolation == Interpolation::linear) {
     timing += " keySplines=\"";
-    for (std::size_t k = 0; k < ease.size(); ++k)
-      timing +=
-          (k ? ";" : "") + (ease[k].linear ? std::string("0 0 1 1")
-                                           : "0.3333 " + number(ease[k].y1, 4) + " 0.6667 " + number(ease[k].y2, 4));
+    for (std::size_t k = 0; k < ease.size(); ++k) {
+      if (k) timing += ';';
+      if (ease[k].linear) {
+        timing += "0 0 1 1";
+      } else {
+        timing += "0.3333 ";
+        timing += number(ease[k].y1, 4);
+        timing += " 0.6667 ";
+        timing += number(ease[k].y2, 4);
+      }
+    }
     timing += "\"";
   }
   return timing;
@@ -397,26 +513,51 @@ std::string smil_timing(const std::vector<double>& frames, int count, double fps
 
 // A path's own d and stroke width are its first key's, what a reader without SMIL shows; <animate> moves
 // them through the keys.
+template <class Map>
 void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& path, const PathKeys& keys,
-                         const ElementKeys& element, Vec2 origin, const std::string& shape_timing,
-                         const std::string& stroke_timing) {
+                         const ElementKeys& element, Map to, const std::string& shape_timing,
+                         const std::string& stroke_timing, int count, double fps, Interpolation interpolation) {
   const bool strokes = path.stroke.enabled && path.stroke_width > 0;
   auto stroke_width = [&](std::size_t k) {
     return view.n(path.stroke_width * element.stroke_scales[k] / view.frame.scale);
   };
-  svg << "<path d=\"";
-  write_svg_path_data(svg, view, path, keys.lines[0], origin);
+  const int degrees =
+      decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale * view.pixels_per_art_unit * M_PI / 180);
+  const auto translate = [&](std::size_t k) {
+    const Vec2 a = keys.placements[k].position * (1.0 / view.frame.scale);
+    return view.n(a.x) + " " + view.n(a.y);
+  };
+  const auto rotate = [&](std::size_t k) { return number(keys.placements[k].angle * 180 / M_PI, degrees); };
+  const int factor = decimals_for(view.precision, farthest_in_path(keys) / view.frame.scale * view.pixels_per_art_unit);
+  const auto scale = [&](std::size_t k) { return number(keys.placements[k].scale, factor); };
+  svg << "<path";
+  if (!keys.placements.empty())
+    svg << " transform=\"translate(" << translate(0) << ") rotate(" << rotate(0) << ") scale(" << scale(0) << ")\"";
+  svg << " d=\"";
+  write_svg_path_data(svg, view, path, keys.lines[0], to);
   svg << "\"" << svg_paint(path, stroke_width(0));
-  if (keys.frames.size() == 1 && element.stroke_frames.size() == 1) {
+  if (keys.frames.size() == 1 && element.stroke_frames.size() == 1 && keys.place_frames.size() <= 1) {
     svg << "/>\n";
     return;
   }
   svg << ">\n";
+  if (keys.place_frames.size() > 1) {
+    const std::string timing = smil_timing(keys.place_frames, count, fps, interpolation, keys.place_ease);
+    const auto animate = [&](const char* type, const char* additive, auto value) {
+      svg << "<animateTransform attributeName=\"transform\" type=\"" << type << "\" additive=\"" << additive << "\" "
+          << timing << " values=\"";
+      for (std::size_t k = 0; k < keys.place_frames.size(); ++k) svg << (k ? ";" : "") << value(k);
+      svg << "\"/>\n";
+    };
+    animate("translate", "replace", translate);
+    animate("rotate", "sum", rotate);
+    animate("scale", "sum", scale);
+  }
   if (keys.frames.size() > 1) {
     svg << "<animate attributeName=\"d\" " << shape_timing << " values=\"";
     for (std::size_t k = 0; k < keys.frames.size(); ++k) {
       if (k) svg << ';';
-      write_svg_path_data(svg, view, path, keys.lines[k], origin);
+      write_svg_path_data(svg, view, path, keys.lines[k], to);
     }
     svg << "\"/>\n";
   }
@@ -426,6 +567,36 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
     svg << "\"/>\n";
   }
   svg << "</path>\n";
+}
+
+// A placed element's group (docs/animation-formats.md, "The element's frame"): its transform
+// translate(x y) rotate(degrees) scale(s) at the first placement, what a reader without SMIL shows, and
+// one <animateTransform> for each part through the placements (the first replacing the attribute, the
+// others added after it, so that they compose in that order); the angle and scale to as many decimals as
+// keep the art's farthest point within the precision kept.
+void write_placed_group(std::ostream& svg, const SvgView& view, const std::string& id, const ElementKeys& keys,
+                        const FrameOutput& out) {
+  const double reach = farthest_local(keys) / view.frame.scale * view.pixels_per_art_unit;
+  const int degrees = decimals_for(out.precision, reach * M_PI / 180), factor = decimals_for(out.precision, reach);
+  const auto translate = [&](std::size_t k) {
+    const Vec2 a = view.frame.to_art(keys.placements[k].position);
+    return view.n(a.x) + " " + view.n(a.y);
+  };
+  const auto rotate = [&](std::size_t k) { return number(keys.placements[k].angle * 180 / M_PI, degrees); };
+  const auto scale = [&](std::size_t k) { return number(keys.placements[k].scale, factor); };
+  svg << "<g id=\"" << xml_escaped(id) << "\" transform=\"translate(" << translate(0) << ") rotate(" << rotate(0)
+      << ") scale(" << scale(0) << ")\">\n";
+  if (keys.frames.size() == 1) return;
+  const std::string timing = smil_timing(keys.frames, out.count, out.fps, out.interpolation, keys.ease);
+  const auto animate = [&](const char* type, const char* additive, auto value) {
+    svg << "<animateTransform attributeName=\"transform\" type=\"" << type << "\" additive=\"" << additive << "\" "
+        << timing << " values=\"";
+    for (std::size_t k = 0; k < keys.frames.size(); ++k) svg << (k ? ";" : "") << value(k);
+    svg << "\"/>\n";
+  };
+  animate("translate", "replace", translate);
+  animate("rotate", "sum", rotate);
+  animate("scale", "sum", scale);
 }
 
 }  // namespace
@@ -438,15 +609,25 @@ void write_svg_animation(const World& world, const SimState& state, const FrameO
   for (int e = 0; e < drawn_count(world); ++e) {
     const ArtShape& art = world.library[world.elements[drawn_source(world, e)].library].art.art;
     const ElementKeys keys = drawn_keys(world, state, e, out);
-    const std::string stroke_timing = smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation);
-    const Vec2 origin = least_corner(
-        keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);
-    svg << "<g id=\"" << xml_escaped(ids[e]) << "\" transform=\"translate(" << view.n(origin.x) << ' '
-        << view.n(origin.y) << ")\">\n";
-    for (int p = 0; p < int(art.paths.size()); ++p) {
-      const PathKeys& path = keys.paths[p];
-      write_animated_path(svg, view, art.paths[p], path, keys, origin,
-                          smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease), stroke_timing);
+    const std::string stroke_timing =
+        smil_timing(keys.stroke_frames, out.count, out.fps, out.interpolation, keys.stroke_ease);
+    const auto write_paths = [&](auto to) {
+      for (int p = 0; p < int(art.paths.size()); ++p) {
+        const PathKeys& path = keys.paths[p];
+        write_animated_path(svg, view, art.paths[p], path, keys, to,
+                            smil_timing(path.frames, out.count, out.fps, out.interpolation, path.ease), stroke_timing,
+                            out.count, out.fps, out.interpolation);
+      }
+    };
+    if (keys.frames.empty()) {
+      const Vec2 origin = least_corner(
+          keys, [&](Vec2 v) { return view.frame.to_art(v); }, view.decimals);
+      svg << "<g id=\"" << xml_escaped(ids[e]) << "\" transform=\"translate(" << view.n(origin.x) << ' '
+          << view.n(origin.y) << ")\">\n";
+      write_paths([&](Vec2 v) { return view.frame.to_art(v) - origin; });
+    } else {
+      write_placed_group(svg, view, ids[e], keys, out);
+      write_paths([&](Vec2 v) { return v * (1.0 / view.frame.scale); });
     }
     svg << "</g>\n";
     check_written(svg, file);

@@ -2,6 +2,7 @@
 // keys; animation_writers.cpp: Lottie and animated SVG). Private to the render library.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -36,30 +37,70 @@ struct Ease {
   }
 };
 
+/// A similarity, where an element's local frame lies in the world at one key: a local point q is at
+/// position + scale · R(angle) q, R the rotation by `angle` radians ([cos −sin; sin cos] in the world's
+/// axes, which are the pictures' axes scaled: clockwise on screen, as Lottie's `r` and SVG's rotate()).
+struct Placement {
+  Vec2 position;
+  double angle = 0.0, scale = 1.0;
+  Vec2 to_world(Vec2 q) const {
+    const double c = std::cos(angle) * scale, s = std::sin(angle) * scale;
+    return {position.x + c * q.x - s * q.y, position.y + s * q.x + c * q.y};
+  }
+  Vec2 to_local(Vec2 p) const {
+    const double c = std::cos(angle) / scale, s = std::sin(angle) / scale;
+    const Vec2 d = p - position;
+    return {c * d.x + s * d.y, -s * d.x + c * d.y};
+  }
+};
+
 /// The keys of one art path: its polylines' points at `frames`, increasing, in frames of the document
 /// (frame i is frames/frame_i.png), and the easing of each interval between two keys (ease[k] leads from
-/// frames[k] to frames[k + 1]).
+/// frames[k] to frames[k + 1]). One key: the path does not change shape in its frame. With `placements`
+/// (at `place_frames`, eased by `place_ease`, each a turn and move with scale 1), the path has a frame of
+/// its own within its element's, and its points are in it (docs/animation-formats.md, "The element's
+/// frame").
 struct PathKeys {
   std::vector<double> frames;
   std::vector<std::vector<std::vector<Vec2>>> lines;
   std::vector<Ease> ease;
+  std::vector<double> place_frames;
+  std::vector<Placement> placements;
+  std::vector<Ease> place_ease;
 };
 
-/// The keys of one element's animation: one PathKeys per art path, each path keyed where its own motion
-/// needs it, and its stroke scale at `stroke_frames` (the element's slices and, where the scale is not
-/// straight between two of them, the frames between).
+/// The keys of one element's animation (docs/animation-formats.md, "The element's frame"). With `frames`
+/// empty, the paths' points are world points (held keys, a still picture). Otherwise the element moves as
+/// a whole through `placements` at `frames` (each interval eased by `ease`, as PathKeys), and its paths'
+/// points are local to that frame: a path that moves with it has one key, one that changes shape in it is
+/// keyed where that change needs it. The stroke widths are the art's times `stroke_scales`, at
+/// `stroke_frames`, eased by `stroke_ease`, in the local frame (so the placement's scale scales them too).
 struct ElementKeys {
+  std::vector<double> frames;
+  std::vector<Placement> placements;
+  std::vector<Ease> ease;
   std::vector<PathKeys> paths;
   std::vector<double> stroke_frames, stroke_scales;
+  std::vector<Ease> stroke_ease;
 };
+
+/// The similarity a player shows at `frame` from placement keys at `frames`: each of position, angle and
+/// scale moved from one key towards the next by the key's easing (as Lottie and SMIL interpolate a
+/// transform's parts). The identity without keys.
+Placement placement_at(const std::vector<double>& frames, const std::vector<Placement>& placements,
+                       const std::vector<Ease>& ease, double frame);
+/// The element's placement at `frame` (placement_at of its keys).
+inline Placement placement_at(const ElementKeys& keys, double frame) {
+  return placement_at(keys.frames, keys.placements, keys.ease, frame);
+}
 
 /// One key of every path at frame 0, no stroke scaling: a still picture (the container's art).
 ElementKeys still_keys(const ArtPoints& points);
 
 /// Element `element`'s keys in an `out.count`-frame document, from frame 0 to frame N (N − 1 and a last
-/// one holding it, when the world does not loop): linear with straight motion between slices
-/// (motion_curve 0), its own slices; on the curve, each path where its motion needs it (within the
-/// tolerance of key_tolerance); held, the N frames. One frame: one key.
+/// one holding it, when the world does not loop): linear, the element's placement at its own slices and
+/// where its motion between them needs it, its paths in its frame once or where their change of shape
+/// needs it (within the key tolerance); held, the N frames' world points. One frame: one key.
 ElementKeys element_keys(const World& world, const SimState& state, int element, const FrameOutput& out);
 /// The keys of drawn element `drawn` (drawn_count): element_keys of its element, reflected for a mirror image.
 ElementKeys drawn_keys(const World& world, const SimState& state, int drawn, const FrameOutput& out);
