@@ -18,6 +18,8 @@
 #include "animpak/curve.hpp"
 #include "animpak/params.hpp"
 #include "animpak/simulation.hpp"
+#include "animpak/solver/grids.hpp"
+#include "animpak/solver/step.hpp"
 #include "animpak/spring_class.hpp"
 #include "animpak/state.hpp"
 #include "animpak/step_params.hpp"
@@ -25,28 +27,6 @@
 namespace animpak::reference {
 
 // ---- collision grid (§5.1), grid.cpp ----------------------------------------------------------------
-
-/// Envelope-triangle centroids binned into cubic cells over the unit cube (x, y, t), sorted by cell
-/// with a stable counting sort (count → exclusive scan → scatter), as cuNSearch does.
-struct CollisionGrid {
-  std::int32_t n = 0;                       ///< cells per axis
-  float cell = 0.0f;                        ///< cell edge
-  std::vector<float> cx, cy, ct;            ///< centroid of envelope triangle i
-  std::vector<std::int32_t> triangle_cell;  ///< linear cell of envelope triangle i
-  std::vector<std::int32_t>
-      cell_start;  ///< n³ + 1 entries: cell c holds sorted_triangles[cell_start[c], cell_start[c+1])
-  std::vector<std::int32_t> sorted_triangles;  ///< triangle ids, by cell, increasing id within a cell
-  /// The element of each slot: env_element[sorted_triangles[k]], laid out in slot order (the kernels'
-  /// slot_element), so the cell walks test ownership from one array instead of through two.
-  std::vector<std::int32_t> slot_element;
-  /// The far field's cell aggregates (docs/parameters.md, "Far field"): a run is the slots of one cell
-  /// that belong to one element (consecutive, since ids are element-major). For a run's first slot k,
-  /// run_next[k] is one past its last slot and run_cx/cy/ct[k] the mean of its centroids (summed in slot
-  /// order, then divided by the count); other slots hold 0. Filled when far_cells is set.
-  bool far_cells = false;
-  std::vector<std::int32_t> run_next;
-  std::vector<float> run_cx, run_cy, run_ct;
-};
 
 /// Cells per axis for a cell edge: the smallest n with n · cell ≥ 1 (25 for 0.04). Throws
 /// std::invalid_argument unless 0 < cell_size ≤ 1.
@@ -127,24 +107,7 @@ RepulsionResult repulsion_force(const Topology& topo, const SimState& state, con
 /// vertex's), from one snapshot of positions. On the spline (`tangents` with mode curve_spline) the box
 /// also holds each boundary vertex's Bézier handles towards its element's neighbouring slices
 /// (curve_handle), so that the union of two slices' boxes holds the curve between them. overlap.cpp.
-struct SliceBoxes {
-  std::vector<float> x0, y0, x1, y1, t;
-};
 void slice_boxes(const Topology& topo, const SimState& state, const CurveTangents& tangents, SliceBoxes& out);
-
-/// The overlap test's broadphase (docs/architecture.md, "The overlap test"): a uniform (x, y, t) cell
-/// grid over every slice pair's box (the union of its two slices' boxes, from t of one slice to t of
-/// the other), listing per cell the elements owning a pair whose box meets the cell, in increasing
-/// element order, each once. A grid without cells (nx = 0: a box or slice t is not finite) sends every query
-/// to every element.
-struct OverlapGrid {
-  std::int32_t nx = 0, ny = 0, nt = 0;    ///< cells per axis
-  float x0 = 0.0f, y0 = 0.0f, t0 = 0.0f;  ///< the grid's low corner
-  float cell = 1.0f, cell_t = 1.0f;       ///< cell edge in x and y, in t
-  std::vector<std::int32_t>
-      cell_start;  ///< nx · ny · nt + 1 entries: cell c lists elements[cell_start[c], cell_start[c+1])
-  std::vector<std::int32_t> elements;  ///< element ids, by cell, increasing within a cell
-};
 
 /// Builds the broadphase from this step's slice boxes: the pairs in increasing slice order, each in
 /// every cell its box meets, then the stable counting sort (src/solver/counting_sort.cpp). The OpenCL
@@ -258,31 +221,6 @@ Vec3f temporal_force(const Topology& topo, const SimState& state, const ForcePar
 
 // ---- one step ------------------------------------------------------------------------------------------
 
-/// Per-vertex force components, structure of arrays.
-struct ForceField {
-  std::vector<float> x, y, t;
-  void assign(std::size_t n);  ///< n zero vectors
-  void set(std::int32_t v, Vec3f f) {
-    x[v] = f.x;
-    y[v] = f.y;
-    t[v] = f.t;
-  }
-  Vec3f at(std::int32_t v) const { return {x[v], y[v], t[v]}; }
-};
-
-/// Every force of Eq. 7 separately (the equivalence suite and `validate` compare them one by one).
-struct ForceBreakdown {
-  ForceField repulsion, springs, target, boundary, overlap, torsion, temporal;
-};
-
-struct StepForces {
-  ForceField total;  ///< Eq. 7 per vertex
-  /// Per boundary vertex, the distance to the nearest other element or container wall (the slice gap of
-  /// §5.3 counts the wall as a neighbour), 0 when it overlaps; +inf for interior vertices.
-  std::vector<float> closest;
-  std::vector<std::uint8_t> contact;  ///< per vertex: ContactBit flags (growth pauses, shrinks, statistics)
-};
-
 /// Eq. 7 for every vertex from one snapshot of positions. forces.cpp.
 StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
                        const CollisionGrid& grid, ForceBreakdown* out);
@@ -305,17 +243,9 @@ void apply_loop(const Topology& topo, SimState& state);
 /// a hair (containment_margin) inside, and stops in x, y. A hard constraint like those of §5.2, because
 /// the linear Eq. 4 loses against the stiff springs of a grown element (docs/parameters.md). boundary.cpp,
 /// beside the container query it uses (kernels/boundary.cl holds the kernel).
-inline constexpr float containment_margin = 1e-5f;
 void apply_containment(const Topology& topo, SimState& state);
 
 // ---- growth (§5.3), growth.cpp -------------------------------------------------------------------------
-
-/// Bits of the per-slice `changed` flags grow_slices writes: whether g grew or shrank, and whether the
-/// element's growth_ratio or neighbour_growth_ratio limit held it below its own proposal or below one
-/// growth step at growth_rate, whichever is less (such a slice is blocked by a contact elsewhere in its
-/// element, so the stop test counts it as touching; one that the limits only slow from the room's boost
-/// is not).
-enum GrowthChange : std::uint8_t { growth_kept = 0, growth_grew = 1, growth_shrank = 2, growth_held = 4 };
 
 /// How many times growth_rate a free slice grows (docs/parameters.md, "Growth that follows the room"): its gap (the least
 /// `closest` over its vertices: the nearest other element or the wall) over boost_gap, clamped to

@@ -134,9 +134,9 @@ namespace {
 // on curve `mode`, with the slice boxes and broadphase built as a step builds them.
 bool overlap_found(const test::TinyWorld& w, int mode, std::int32_t first, std::int32_t last) {
   const CurveTangents m = test::tangents(w, mode);
-  reference::SliceBoxes boxes;
+  SliceBoxes boxes;
   reference::slice_boxes(w.topo, w.state, m, boxes);
-  reference::OverlapGrid grid;
+  OverlapGrid grid;
   reference::build_overlap_grid(w.topo, boxes, grid);
   bool found = false;
   for (std::int32_t v = first; v < last; ++v)
@@ -365,7 +365,7 @@ TEST_CASE("spline: two slices' widened boxes hold every boundary point of the cu
   }
   const test::TinyWorld w = b.build();
   const CurveTangents m = test::tangents(w, curve_spline);
-  reference::SliceBoxes boxes;
+  SliceBoxes boxes;
   reference::slice_boxes(w.topo, w.state, m, boxes);
   long outside_unwidened = 0;
   for (std::int32_t s = 0; s + 1 < w.topo.slice_count(); ++s) {

@@ -11,12 +11,6 @@
 
 namespace animpak::reference {
 
-void ForceField::assign(std::size_t n) {
-  x.assign(n, 0.0f);
-  y.assign(n, 0.0f);
-  t.assign(n, 0.0f);
-}
-
 StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
                        const CollisionGrid& grid, ForceBreakdown* out) {
   const std::int32_t n = topo.vertex_count();
