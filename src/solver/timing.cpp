@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/timing.hpp"
 
 namespace animpak {

@@ -4,7 +4,7 @@
 #include <cstddef>
 
 #include "animpak/curve.hpp"
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/spring_class.hpp"
 #include "cl_host.hpp"
 

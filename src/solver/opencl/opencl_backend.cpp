@@ -13,6 +13,7 @@
 
 #include "../counting_sort.hpp"
 #include "animpak/error.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/step_params.hpp"
 #include "boundary_order.hpp"
 #include "device_buffers.hpp"

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <string>
 
+#include "animpak/reference/overlap.hpp"
+
 namespace animpak::opencl {
 
 namespace {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "animpak/reference.hpp"
+#include "animpak/solver/grids.hpp"
 #include "device_buffers.hpp"
 #include "kernel.hpp"
 

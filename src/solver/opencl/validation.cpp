@@ -5,7 +5,8 @@
 #include <memory>
 
 #include "animpak/compare.hpp"
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
+#include "animpak/reference/step.hpp"
 #include "animpak/simulation.hpp"
 #include "animpak/step_params.hpp"
 

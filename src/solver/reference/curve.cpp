@@ -4,7 +4,7 @@
 // kernels/curve.cl is the tangents' twin.
 #include "animpak/curve.hpp"
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/overlap.hpp"
 
 namespace animpak {
 

@@ -7,7 +7,12 @@
 // The kernels add in exactly this order.
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/boundary.hpp"
+#include "animpak/reference/grid.hpp"
+#include "animpak/reference/local_forces.hpp"
+#include "animpak/reference/overlap.hpp"
+#include "animpak/reference/repulsion.hpp"
+#include "animpak/reference/step.hpp"
 
 namespace animpak::reference {
 
