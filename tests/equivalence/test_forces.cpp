@@ -79,7 +79,7 @@ struct BroadphaseUse {
 BroadphaseUse broadphase_use(const TinyWorld& w) {
   SliceBoxes boxes;
   CurveTangents tangents;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, Params{}.forces.motion_curve, tangents);
+  reference::curve_tangents(w.topo, w.state, Params{}.forces.motion_curve, tangents);
   reference::slice_boxes(w.topo, w.state, tangents, boxes);
   OverlapGrid g;
   reference::build_overlap_grid(w.topo, boxes, g);

@@ -14,7 +14,7 @@ namespace {
 SliceBoxes reference_boxes(const TinyWorld& w) {
   SliceBoxes boxes;
   CurveTangents tangents;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, Params{}.forces.motion_curve, tangents);
+  reference::curve_tangents(w.topo, w.state, Params{}.forces.motion_curve, tangents);
   reference::slice_boxes(w.topo, w.state, tangents, boxes);
   return boxes;
 }

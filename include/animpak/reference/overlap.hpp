@@ -18,10 +18,11 @@
 
 namespace animpak::reference {
 
-/// Every vertex's tangent at its slice (include/animpak/curve.hpp), across the loop seam by `links`, from
+/// Every vertex's tangent at its slice (include/animpak/curve.hpp), across the loop seam by the topology's
+/// links and along its chains (Topology::curve, Topology::chains; std::invalid_argument without them), from
 /// one snapshot: the C2 spline's (`mode` curve_spline), Steffen's (curve_monotone), or Steffen's weighed by
 /// nothing (curve_linear: straight lines). curve.cpp.
-void curve_tangents(const Topology& topo, const CurveLinks& links, const SimState& state, int mode, CurveTangents& out);
+void curve_tangents(const Topology& topo, const SimState& state, int mode, CurveTangents& out);
 
 /// Fills `out` (SliceBoxes, include/animpak/solver/grids.hpp) from one snapshot of positions: per global
 /// slice the box of its boundary polygon and its t; on the spline (`tangents` with mode curve_spline) the

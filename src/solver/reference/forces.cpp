@@ -35,7 +35,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
   slice_centroids(topo, state, cx, cy);
   // The curve between slices that the overlap test walks, as the frames show it; the boxes hold it.
   CurveTangents tangents;
-  curve_tangents(topo, curve_links(topo), state, params.motion_curve, tangents);
+  curve_tangents(topo, state, params.motion_curve, tangents);
   SliceBoxes boxes;
   slice_boxes(topo, state, tangents, boxes);
   OverlapGrid overlap_grid;
