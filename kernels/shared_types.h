@@ -39,12 +39,13 @@ typedef float ap_float;
 #define AP_CONTACT_YIELD 16
 #define AP_CONTACT_BLOCK 32
 
-/* GrowthChange values (reference.hpp): what grow_slices did to a slice's g. */
+/* GrowthChange values (include/animpak/solver/step.hpp): what grow_slices did to a slice's g. */
 #define AP_GROWTH_GREW 1
 #define AP_GROWTH_SHRANK 2
 #define AP_GROWTH_HELD 4
 
-/* How far inside the container the containment projection puts a vertex (reference.hpp). */
+/* How far inside the container the containment projection puts a vertex (containment_margin,
+ * include/animpak/solver/step.hpp). */
 #define AP_CONTAINMENT_MARGIN 1e-5f
 
 /* SpringClass values (include/animpak/spring_class.hpp); AP_SPRING_CLASSES is the size of ForceParams.k_spring. */
@@ -72,7 +73,8 @@ typedef float ap_float;
 #define AP_SLOT_CY 7
 #define AP_SLOT_CT 8
 
-/* The collision grid (reference::CollisionGrid without its arrays), passed to every grid kernel. */
+/* The collision grid (CollisionGrid, include/animpak/solver/grids.hpp, without its arrays), passed to every
+ * grid kernel. */
 typedef struct {
   ap_int n;         /* cells per axis */
   ap_float cell;    /* cell edge */
@@ -81,8 +83,8 @@ typedef struct {
   ap_int far_cells; /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
 } GridInfo;
 
-/* The overlap test's broadphase (reference::OverlapGrid without its arrays), built each step on the
- * host or on the device (overlap_grid.cl) into a one-element buffer the repulsion kernel reads. nx == 0: no grid, every query tries every element. */
+/* The overlap test's broadphase (OverlapGrid, include/animpak/solver/grids.hpp, without its arrays), built
+ * each step on the host or on the device (overlap_grid.cl) into a one-element buffer the repulsion kernel reads. nx == 0: no grid, every query tries every element. */
 typedef struct {
   ap_int nx, ny, nt;     /* cells per axis */
   ap_float x0, y0, t0;   /* low corner */

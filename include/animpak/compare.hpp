@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "animpak/reference.hpp"
+#include "animpak/solver/step.hpp"
 #include "animpak/state.hpp"
 
 namespace animpak {
@@ -42,7 +42,7 @@ FloatDifference compare_floats(std::span<const float> expected, std::span<const 
 /// One force of Eq. 7 in a ForceBreakdown.
 struct NamedForce {
   const char* name;
-  reference::ForceField reference::ForceBreakdown::*field;
+  ForceField ForceBreakdown::*field;
 };
 
 /// The seven forces in the order of Eq. 7 (the total is StepForces::total).

@@ -18,6 +18,8 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "animpak/state.hpp"
@@ -27,14 +29,6 @@ namespace animpak {
 /// The curve between slices, `motion_curve`: the paper's straight lines, the monotone cubic (0.4.0 to
 /// 0.7.0) or the C2 spline (the default).
 enum CurveMode : int { curve_linear = 0, curve_monotone = 1, curve_spline = 2 };
-
-/// Where each global slice's vertices continue in time: the slice before and the slice after, vertex k
-/// to vertex k, or -1 at an open end. Within an element, its neighbours; across a looping scene's seam
-/// (t = 1 ≡ t = 0, §5.2's loop constraint), the last slice's next is the slice after its loop partner's
-/// first, and the first slice's previous is the slice before the last of the element that loops into it.
-struct CurveLinks {
-  std::vector<std::int32_t> prev, next;
-};
 
 /// The links of every slice of `topo`, from its element ranges and loop pairs (loop_end, loop_start).
 inline CurveLinks curve_links(const Topology& topo) {
@@ -160,23 +154,6 @@ struct CurveTangents {
   int mode = curve_spline;  ///< CurveMode; curve_linear: the tangents are computed but weigh nothing
 };
 
-/// The spline's tracks: every slice, in time order, on chains that the C2 spline runs through. Within an
-/// element a chain goes slice by slice; across a looping scene's seam it goes on from an element's last
-/// slice to the slice after its loop partner's first (curve_links' `next`), so a looping chain closes on
-/// itself and spans `period` loops (two penguins that swap places: one chain over both, two loops). A
-/// looping element's first slice is its loop partner's last (the loop constraint, §5.2) and takes that
-/// slice's tangents (`alias`). Vertex k of every slice on a chain is one track: one system to solve.
-struct CurveChains {
-  std::vector<std::int32_t> begin;  ///< chains + 1: chain c's entries are [begin[c], begin[c + 1])
-  std::vector<std::int32_t> slice;  ///< per entry: its global slice, in time order
-  std::vector<float> offset;        ///< per entry: the loops added to its slice's t along the chain
-  std::vector<std::int32_t> alias;  ///< per entry: the slice that takes its tangents, or -1
-  std::vector<float> period;        ///< per chain: the loops a closed chain spans, 0 for an open one
-  std::vector<std::int32_t> entry;  ///< per slice: the entry whose tangents it has (its own or its alias's)
-  std::vector<std::int32_t> chain;  ///< per slice: the chain of `entry`
-  std::vector<std::int32_t> track_vertex, track_chain;  ///< per track: vertex k of its chain's first slice
-};
-
 /// The chains of `topo` from its links (curve_links).
 inline CurveChains curve_chains(const Topology& topo, const CurveLinks& links) {
   const std::int32_t slices = topo.slice_count();
@@ -235,6 +212,25 @@ inline CurveChains curve_chains(const Topology& topo, const CurveLinks& links) {
     }
   }
   return c;
+}
+
+/// Fills topo.curve and topo.chains (state.hpp) from its element ranges and loop pairs. Wherever a topology
+/// is built (build_world; the tests' WorldBuilder), once its slices and loop pairs are set: every consumer
+/// reads them from there instead of computing them again.
+inline void link_curves(Topology& topo) {
+  topo.curve = curve_links(topo);
+  topo.chains = curve_chains(topo, topo.curve);
+}
+
+/// Throws std::invalid_argument unless topo.curve and topo.chains cover every slice of `topo`, naming
+/// `user`: a topology put together without link_curves has none.
+inline void require_curve_links(const Topology& topo, const char* user) {
+  const std::size_t slices = static_cast<std::size_t>(topo.slice_count());
+  if (topo.curve.prev.size() != slices || topo.curve.next.size() != slices || topo.chains.chain.size() != slices ||
+      topo.chains.entry.size() != slices)
+    throw std::invalid_argument(std::string(user) +
+                                ": the topology's curve links do not cover its slices; call link_curves(topology) "
+                                "(include/animpak/curve.hpp) once its slices and loop pairs are set");
 }
 
 /// Row i of the spline's system on a track of n entries at times tau (open or closed over `period`):

@@ -10,8 +10,9 @@
 #include <string_view>
 #include <vector>
 
-#include "animpak/reference.hpp"
 #include "animpak/simulation.hpp"
+#include "animpak/solver/grids.hpp"
+#include "animpak/solver/step.hpp"
 
 namespace animpak {
 
@@ -91,15 +92,15 @@ class OpenclBackend : public Backend {
   /// Builds the grid from the current state and computes Eq. 7 with every force apart, without
   /// advancing the state (as reference::build_collision_grid then reference::step_forces); the grid is
   /// left rebuilt.
-  virtual reference::StepForces evaluate_forces(reference::ForceBreakdown* out) = 0;
+  virtual StepForces evaluate_forces(ForceBreakdown* out) = 0;
   /// The collision grid built on the device from the current state.
-  virtual reference::CollisionGrid build_and_read_grid() = 0;
+  virtual CollisionGrid build_and_read_grid() = 0;
   virtual const DeviceInfo& device() const = 0;
   /// Where this backend builds the grids: host or device, never automatic.
   virtual GridSort grid_sort() const = 0;
   /// The overlap test's broadphase as the repulsion kernel reads it, built from the current state (its
   /// tangents and slice boxes first), on the host or the device as grid_sort() says.
-  virtual reference::OverlapGrid build_and_read_overlap_grid() = 0;
+  virtual OverlapGrid build_and_read_overlap_grid() = 0;
   /// Room for `entries` entries in a device-built broadphase's lists from now on. A build that outgrows
   /// its room drops the grid for that step (every query tries every element: the same forces, slower)
   /// and the room grows at the next statistics; the tests shrink it to reach that path. No effect on a

@@ -3,12 +3,9 @@
 // code's) values converted from the authors' 500-unit artboard to the unit container, because taken
 // literally in unit space they give a repulsion that no longer falls off with distance. The
 // conversion and every other difference are in docs/parameters.md. Grouped by the stage that reads them;
-// a scene file may override any of them by its flat name in param_table() ("params": {"k_time": 2}).
+// a scene file may override any of them by its flat name in param_table() ("params": {"k_time": 2};
+// include/animpak/param_table.hpp).
 #pragma once
-
-#include <span>
-#include <string_view>
-#include <variant>
 
 namespace animpak {
 
@@ -108,26 +105,5 @@ struct Params {
   Growth growth;
   Stop stop;
 };
-
-/// One entry of the table of overridable constants.
-struct ParamInfo {
-  std::string_view name;   ///< key in the scene file's "params" object, the member's own name
-  std::string_view group;  ///< the Params group holding it: "art", "element", "placement", "forces", "growth", "stop"
-  std::variant<double& (*)(Params&), int& (*)(Params&)> field;  ///< the member, in a given Params
-  double min;                                                   ///< smallest valid value (inclusive)
-  double max;                                                   ///< largest valid value (inclusive)
-  std::string_view meaning;
-  std::string_view paper;  ///< what the paper gives, before the conversion to the unit container
-};
-
-/// Every member of Params, group by group in declaration order. docs/parameters.md documents each entry;
-/// its table is `animpak params --markdown`.
-std::span<const ParamInfo> param_table();
-
-/// Reads a constant by its table entry, as a double.
-double param_value(const Params& params, const ParamInfo& info);
-
-/// Whether the constant is an integer (a scene must give it as one).
-bool param_is_integer(const ParamInfo& info);
 
 }  // namespace animpak

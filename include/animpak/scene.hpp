@@ -109,10 +109,8 @@ struct World {
   Container container;
   std::vector<SpacetimeElement> library;  ///< built once per library entry, full size, animated
   std::vector<ElementInstance> elements;
-  Topology topology;
-  CurveLinks curve;    ///< curve_links(topology): where each slice's curve continues, for the frames
-  CurveChains chains;  ///< curve_chains(topology, curve): the spline's tracks, for the frames
-  SimState state;      ///< the initial state: shrunken elements at rest, g = 1
+  Topology topology;  ///< with its curve links and chains (link_curves)
+  SimState state;     ///< the initial state: shrunken elements at rest, g = 1
   Params params;
   std::uint64_t seed = 1;
   bool loop = true;

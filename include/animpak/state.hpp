@@ -79,6 +79,35 @@ inline std::int32_t grid_linear_cell(float x, float y, float t, float cell, std:
   return (grid_axis_cell(t, cell, n) * n + grid_axis_cell(y, cell, n)) * n + grid_axis_cell(x, cell, n);
 }
 
+// The curve every vertex follows between its slices (include/animpak/curve.hpp; docs/parameters.md, "Motion
+// between slices") runs along these links and chains. They depend only on the element ranges and loop pairs,
+// so a topology holds them (Topology::curve, Topology::chains), filled once where it is built (link_curves).
+
+/// Where each global slice's vertices continue in time: the slice before and the slice after, vertex k
+/// to vertex k, or -1 at an open end. Within an element, its neighbours; across a looping scene's seam
+/// (t = 1 ≡ t = 0, §5.2's loop constraint), the last slice's next is the slice after its loop partner's
+/// first, and the first slice's previous is the slice before the last of the element that loops into it.
+struct CurveLinks {
+  std::vector<std::int32_t> prev, next;
+};
+
+/// The spline's tracks: every slice, in time order, on chains that the C2 spline runs through. Within an
+/// element a chain goes slice by slice; across a looping scene's seam it goes on from an element's last
+/// slice to the slice after its loop partner's first (curve_links' `next`), so a looping chain closes on
+/// itself and spans `period` loops (two penguins that swap places: one chain over both, two loops). A
+/// looping element's first slice is its loop partner's last (the loop constraint, §5.2) and takes that
+/// slice's tangents (`alias`). Vertex k of every slice on a chain is one track: one system to solve.
+struct CurveChains {
+  std::vector<std::int32_t> begin;  ///< chains + 1: chain c's entries are [begin[c], begin[c + 1])
+  std::vector<std::int32_t> slice;  ///< per entry: its global slice, in time order
+  std::vector<float> offset;        ///< per entry: the loops added to its slice's t along the chain
+  std::vector<std::int32_t> alias;  ///< per entry: the slice that takes its tangents, or -1
+  std::vector<float> period;        ///< per chain: the loops a closed chain spans, 0 for an open one
+  std::vector<std::int32_t> entry;  ///< per slice: the entry whose tangents it has (its own or its alias's)
+  std::vector<std::int32_t> chain;  ///< per slice: the chain of `entry`
+  std::vector<std::int32_t> track_vertex, track_chain;  ///< per track: vertex k of its chain's first slice
+};
+
 /// Everything that does not move during a simulation. Vertex ids are global (all elements).
 struct Topology {
   // per vertex
@@ -119,6 +148,12 @@ struct Topology {
 
   // loop constraint: vertex loop_end[i] (on a t = 1 slice) coincides with loop_start[i] (t = 0 slice)
   std::vector<std::int32_t> loop_end, loop_start;
+
+  // the curve between slices, from the slice and element ranges and the loop pairs above: link_curves
+  // (include/animpak/curve.hpp) fills both once they are set; the reference's tangents, the OpenCL
+  // backend's buffers and the frames read them
+  CurveLinks curve;    ///< curve_links(*this): where each slice's curve continues
+  CurveChains chains;  ///< curve_chains(*this, curve): the spline's tracks
 
   ContainerGeometry container;
 

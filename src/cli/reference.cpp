@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/scene_spec.hpp"
 #include "commands.hpp"
 

@@ -10,7 +10,7 @@
 #include "animpak/checkpoint.hpp"
 #include "animpak/error.hpp"
 #include "animpak/file_io.hpp"
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/sha256.hpp"
 #include "animpak/version.hpp"
 #include "console.hpp"

@@ -1,4 +1,4 @@
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 
 #include <array>
 #include <limits>

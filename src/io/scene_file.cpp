@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "animpak/error.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/scene_spec.hpp"
 #include "json_fields.hpp"
 #include "scene_animation.hpp"

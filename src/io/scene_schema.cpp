@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/scene_spec.hpp"
 
 namespace animpak::io_detail {

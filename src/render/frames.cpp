@@ -20,10 +20,9 @@ std::vector<Vec2> element_tangents(const World& world, const SimState& state, in
   const int mode = world.params.forces.motion_curve;
   if (mode == curve_linear || n < 2) return out;
   const Topology& topo = world.topology;
-  // build_world fills world.curve; a World put together by hand gets its links here.
-  CurveLinks own;
-  if (world.curve.prev.size() != std::size_t(topo.slice_count())) own = curve_links(topo);
-  const CurveLinks& links = own.prev.empty() ? world.curve : own;
+  // build_world fills the topology's links and chains (link_curves).
+  require_curve_links(topo, "element_tangents");
+  const CurveLinks& links = topo.curve;
   if (mode == curve_monotone) {
     for (int s = 0; s < n; ++s)
       for (int v = 0; v < P; ++v) {
@@ -34,9 +33,7 @@ std::vector<Vec2> element_tangents(const World& world, const SimState& state, in
   }
   // The spline: every track of the chain this element's slices lie on, solved in double as the solver
   // solves it in float (include/animpak/curve.hpp, spline_tangents).
-  CurveChains own_chains;
-  if (world.chains.chain.size() != std::size_t(topo.slice_count())) own_chains = curve_chains(topo, links);
-  const CurveChains& chains = own_chains.chain.empty() ? world.chains : own_chains;
+  const CurveChains& chains = topo.chains;
   const std::int32_t c = chains.chain[inst.slice_begin], b = chains.begin[c], len = chains.begin[c + 1] - b;
   std::vector<double> mx(len), my(len), cp(len), z(len);
   for (int v = 0; v < P; ++v) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "animpak/error.hpp"
+#include "animpak/param_table.hpp"
 #include "placement.hpp"
 
 namespace animpak::scene_detail {

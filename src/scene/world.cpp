@@ -306,8 +306,7 @@ World build_world(const SceneSpec& given, Container container, std::vector<Space
     }
   }
 
-  world.curve = curve_links(topo);
-  world.chains = curve_chains(topo, world.curve);
+  link_curves(topo);
 
   SimState& state = world.state;
   const std::size_t n = state.x.size();

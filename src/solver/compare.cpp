@@ -43,13 +43,13 @@ FloatDifference compare_floats(std::span<const float> expected, std::span<const 
   return d;
 }
 
-const std::array<NamedForce, 7> breakdown_forces = {{{"repulsion", &reference::ForceBreakdown::repulsion},
-                                                     {"springs", &reference::ForceBreakdown::springs},
-                                                     {"target", &reference::ForceBreakdown::target},
-                                                     {"boundary", &reference::ForceBreakdown::boundary},
-                                                     {"overlap", &reference::ForceBreakdown::overlap},
-                                                     {"torsion", &reference::ForceBreakdown::torsion},
-                                                     {"temporal", &reference::ForceBreakdown::temporal}}};
+const std::array<NamedForce, 7> breakdown_forces = {{{"repulsion", &ForceBreakdown::repulsion},
+                                                     {"springs", &ForceBreakdown::springs},
+                                                     {"target", &ForceBreakdown::target},
+                                                     {"boundary", &ForceBreakdown::boundary},
+                                                     {"overlap", &ForceBreakdown::overlap},
+                                                     {"torsion", &ForceBreakdown::torsion},
+                                                     {"temporal", &ForceBreakdown::temporal}}};
 
 const std::array<NamedStateArray, 8> state_arrays = {{{"x", &SimState::x, "vertex"},
                                                       {"y", &SimState::y, "vertex"},

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/timing.hpp"
 
 namespace animpak {
@@ -42,7 +42,7 @@ StepTiming time_steps(Backend& backend, const Params& params, int warmup, int st
 }
 
 std::int64_t neighbour_visits(const Topology& topology, const SimState& state, const Params& params) {
-  const reference::CollisionGrid grid = reference::build_collision_grid(topology, state, params);
+  const CollisionGrid grid = reference::build_collision_grid(topology, state, params);
   std::vector<std::int32_t> near, far;
   std::int64_t visits = 0;
   for (std::int32_t v = 0; v < topology.vertex_count(); ++v) {

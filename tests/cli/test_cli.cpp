@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/version.hpp"
 #include "run_animpak.hpp"
 #include "temp_dir.hpp"

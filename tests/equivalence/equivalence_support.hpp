@@ -100,11 +100,11 @@ std::string bit_difference(const std::string& what, const std::vector<T>& expect
 }
 
 /// Compares every force component of two breakdowns; returns all differences, one line each.
-inline std::string breakdown_difference(const reference::ForceBreakdown& ref, const reference::ForceBreakdown& dev) {
+inline std::string breakdown_difference(const ForceBreakdown& ref, const ForceBreakdown& dev) {
   std::string out;
   for (const NamedForce& force : breakdown_forces) {
     const std::string n(force.name);
-    const reference::ForceField &r = ref.*force.field, &d = dev.*force.field;
+    const ForceField &r = ref.*force.field, &d = dev.*force.field;
     for (const std::string& line :
          {bit_difference(n + ".x (vertex)", r.x, d.x), bit_difference(n + ".y (vertex)", r.y, d.y),
           bit_difference(n + ".t (vertex)", r.t, d.t)})

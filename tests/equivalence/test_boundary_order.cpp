@@ -12,7 +12,7 @@ namespace {
 
 // What is wrong with `order` as w's boundary vertices sorted by `grid`'s cells: a vertex missing or
 // twice, or a cell smaller than the one before; empty when nothing is.
-std::string order_fault(const TinyWorld& w, const reference::CollisionGrid& grid, std::vector<std::int32_t> order) {
+std::string order_fault(const TinyWorld& w, const CollisionGrid& grid, std::vector<std::int32_t> order) {
   std::vector<std::int32_t> boundary;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v)
     if ((w.topo.flags[v] & vertex_boundary) != 0) boundary.push_back(v);
@@ -43,7 +43,7 @@ TEST_CASE("repulsion order: the host and the device list every boundary vertex o
     shape.max_radius = seed <= 42 ? 0.06f : 0.25f;
     const TinyWorld w = random_world(seed, shape);
     const Params params;
-    const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+    const CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
     for (const DeviceChoice& d : devices)
       for (const GridSort sort : {GridSort::host, GridSort::device}) {
         INFO("seed " << seed << " on " << d.device.name << ", sorted on the " << grid_sort_name(sort));

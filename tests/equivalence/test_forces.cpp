@@ -16,9 +16,9 @@ struct Coverage {
 
 // Compares one world's forces on every device; returns what the world exercised.
 Coverage check_forces(const TinyWorld& w, const Params& params, const std::string& label) {
-  const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
-  reference::ForceBreakdown ref_parts;
-  const reference::StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, &ref_parts);
+  const CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+  ForceBreakdown ref_parts;
+  const StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, &ref_parts);
   Coverage c;
   for (std::size_t v = 0; v < ref.contact.size(); ++v) {
     c.inside += (ref.contact[v] & contact_inside) != 0;
@@ -35,8 +35,8 @@ Coverage check_forces(const TinyWorld& w, const Params& params, const std::strin
   for (const DeviceChoice& d : devices_under_test())
     for (const GridSort sort : grid_sorts) {
       auto backend = make_opencl_backend(w.topo, w.state, params, d, sort);
-      reference::ForceBreakdown dev_parts;
-      const reference::StepForces dev = backend->evaluate_forces(&dev_parts);
+      ForceBreakdown dev_parts;
+      const StepForces dev = backend->evaluate_forces(&dev_parts);
       const std::string diff =
           breakdown_difference(ref_parts, dev_parts) + bit_difference("total.x", ref.total.x, dev.total.x) +
           bit_difference("total.y", ref.total.y, dev.total.y) + bit_difference("total.t", ref.total.t, dev.total.t) +
@@ -77,11 +77,11 @@ struct BroadphaseUse {
 };
 
 BroadphaseUse broadphase_use(const TinyWorld& w) {
-  reference::SliceBoxes boxes;
+  SliceBoxes boxes;
   CurveTangents tangents;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, Params{}.forces.motion_curve, tangents);
+  reference::curve_tangents(w.topo, w.state, Params{}.forces.motion_curve, tangents);
   reference::slice_boxes(w.topo, w.state, tangents, boxes);
-  reference::OverlapGrid g;
+  OverlapGrid g;
   reference::build_overlap_grid(w.topo, boxes, g);
   BroadphaseUse u;
   std::vector<std::int32_t> found;
@@ -203,7 +203,7 @@ TEST_CASE("forces: nearly degenerate envelope triangles", "[equivalence][opencl]
 // (three cells in x) while holding another element's triangle: the kernel takes such runs AP_LANES
 // slots at a time (closest_point_on_triangles in kernels/closest_point.cl).
 std::int32_t longest_near_row(const TinyWorld& w, const Params& params) {
-  const reference::CollisionGrid g = reference::build_collision_grid(w.topo, w.state, params);
+  const CollisionGrid g = reference::build_collision_grid(w.topo, w.state, params);
   std::int32_t longest = 0;
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
     if ((w.topo.flags[v] & vertex_boundary) == 0) continue;
@@ -297,8 +297,8 @@ TEST_CASE("forces: the wall as the element's mirror image, at the outline, a hol
     params.forces.wall_mirror = 2.5;
     check_forces(w, params, "mirror alone");
     // Not vacuous: the mirror changes the wall's force on some vertices.
-    const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
-    reference::ForceBreakdown on, off;
+    const CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+    ForceBreakdown on, off;
     reference::step_forces(w.topo, w.state, step_params(params), grid, &on);
     params.forces.wall_mirror = 0.0;
     reference::step_forces(w.topo, w.state, step_params(params), grid, &off);

@@ -6,10 +6,10 @@ namespace animpak::test {
 namespace {
 
 void check_grid(const TinyWorld& w, const Params& params, const std::string& label) {
-  const reference::CollisionGrid ref = reference::build_collision_grid(w.topo, w.state, params);
+  const CollisionGrid ref = reference::build_collision_grid(w.topo, w.state, params);
   for (const DeviceChoice& d : devices_under_test())
     for (const GridSort sort : grid_sorts) {
-      const reference::CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->build_and_read_grid();
+      const CollisionGrid dev = make_opencl_backend(w.topo, w.state, params, d, sort)->build_and_read_grid();
       CHECK(dev.n == ref.n);
       CHECK(dev.cell == ref.cell);
       const std::string diff = bit_difference("centroid x", ref.cx, dev.cx) +

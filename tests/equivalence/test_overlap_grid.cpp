@@ -11,17 +11,17 @@ namespace animpak::test {
 namespace {
 
 // The reference's slice boxes of w's state (the device's are equal, bit for bit: the forces suite).
-reference::SliceBoxes reference_boxes(const TinyWorld& w) {
-  reference::SliceBoxes boxes;
+SliceBoxes reference_boxes(const TinyWorld& w) {
+  SliceBoxes boxes;
   CurveTangents tangents;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, Params{}.forces.motion_curve, tangents);
+  reference::curve_tangents(w.topo, w.state, Params{}.forces.motion_curve, tangents);
   reference::slice_boxes(w.topo, w.state, tangents, boxes);
   return boxes;
 }
 
 // What is wrong with `g` as a broadphase of `boxes`: a cell list out of order, or a slice pair whose
 // element is missing from a cell its box meets; empty when nothing is.
-std::string broadphase_fault(const TinyWorld& w, const reference::SliceBoxes& boxes, const reference::OverlapGrid& g) {
+std::string broadphase_fault(const TinyWorld& w, const SliceBoxes& boxes, const OverlapGrid& g) {
   std::ostringstream out;
   const std::size_t cells = static_cast<std::size_t>(g.nx) * g.ny * g.nt;
   if (g.cell_start.size() != cells + 1) return "cell_start has " + std::to_string(g.cell_start.size()) + " entries";
@@ -69,13 +69,13 @@ TEST_CASE("overlap broadphase: the host's is the reference's, the device's lists
     shape.min_radius = seed <= 32 ? 0.02f : 0.1f;
     shape.max_radius = seed <= 32 ? 0.06f : 0.25f;
     const TinyWorld w = random_world(seed, shape);
-    const reference::SliceBoxes boxes = reference_boxes(w);
-    reference::OverlapGrid expected;
+    const SliceBoxes boxes = reference_boxes(w);
+    OverlapGrid expected;
     reference::build_overlap_grid(w.topo, boxes, expected);
     REQUIRE(expected.nx > 0);
     for (const DeviceChoice& d : devices) {
       INFO("seed " << seed << " on " << d.device.name);
-      const reference::OverlapGrid host =
+      const OverlapGrid host =
           make_opencl_backend(w.topo, w.state, Params{}, d, GridSort::host)->build_and_read_overlap_grid();
       CHECK(host.nx == expected.nx);
       CHECK(host.ny == expected.ny);
@@ -83,7 +83,7 @@ TEST_CASE("overlap broadphase: the host's is the reference's, the device's lists
       CHECK(host.cell_start == expected.cell_start);
       CHECK(host.elements == expected.elements);
 
-      const reference::OverlapGrid device =
+      const OverlapGrid device =
           make_opencl_backend(w.topo, w.state, Params{}, d, GridSort::device)->build_and_read_overlap_grid();
       REQUIRE(device.nx > 0);  // a grid, not the every-element fallback
       CHECK(static_cast<long>(device.nx) * device.ny * device.nt <= 8L * slice_pairs(w) + 64);
@@ -107,15 +107,15 @@ TEST_CASE("overlap broadphase: a device build that outgrows its room drops the g
     shape.max_radius = 0.2f;  // elements that overlap, so the box test decides some forces
     const TinyWorld w = random_world(seed, shape);
     const Params params;
-    const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
-    const reference::StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, nullptr);
+    const CollisionGrid grid = reference::build_collision_grid(w.topo, w.state, params);
+    const StepForces ref = reference::step_forces(w.topo, w.state, step_params(params), grid, nullptr);
     overlapping += static_cast<int>(
         std::count_if(ref.contact.begin(), ref.contact.end(), [](auto c) { return (c & contact_overlap) != 0; }));
     for (const DeviceChoice& d : devices) {
       INFO("seed " << seed << " on " << d.device.name);
       auto backend = make_opencl_backend(w.topo, w.state, params, d, GridSort::device);
       backend->set_overlap_room(3);
-      const reference::StepForces dev = backend->evaluate_forces(nullptr);
+      const StepForces dev = backend->evaluate_forces(nullptr);
       const std::string diff =
           bit_difference("total.x", ref.total.x, dev.total.x) + bit_difference("total.y", ref.total.y, dev.total.y) +
           bit_difference("total.t", ref.total.t, dev.total.t) + bit_difference("contact", ref.contact, dev.contact);
@@ -123,7 +123,7 @@ TEST_CASE("overlap broadphase: a device build that outgrows its room drops the g
       CHECK(diff.empty());
       CHECK(backend->build_and_read_overlap_grid().nx == 0);  // dropped: every query tried every element
       backend->statistics();                                  // reads the lists' total and makes room
-      const reference::OverlapGrid after = backend->build_and_read_overlap_grid();
+      const OverlapGrid after = backend->build_and_read_overlap_grid();
       CHECK(after.nx > 0);
       const std::string fault = broadphase_fault(w, reference_boxes(w), after);
       INFO(fault);

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 
 using namespace animpak;
 

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "animpak/error.hpp"
-#include "animpak/params.hpp"
+#include "animpak/param_table.hpp"
 #include "animpak/scene_spec.hpp"
 #include "temp_dir.hpp"
 

@@ -113,8 +113,11 @@ TEST_CASE("curve_links and curve_tangents (monotone): within an element, across 
   const CurveLinks links = curve_links(w.topo);
   CHECK(links.prev == std::vector<std::int32_t>{3, 0, 1, 2, 3, -1, 5, 6, 7, 8});
   CHECK(links.next == std::vector<std::int32_t>{1, 2, 3, 4, 1, 6, 7, 8, 9, -1});
+  // The topology holds the same links, filled once where it is built (link_curves); the tangents read them.
+  CHECK(w.topo.curve.prev == links.prev);
+  CHECK(w.topo.curve.next == links.next);
   CurveTangents m;
-  reference::curve_tangents(w.topo, links, w.state, curve_monotone, m);
+  reference::curve_tangents(w.topo, w.state, curve_monotone, m);
   // Element 0: slice 0 and slice 4 are the same point of a periodic motion, with the same tangent; at the
   // turn (slice 2, x at its largest) the tangent is zero; slices 1 and 3 move at Steffen's tangent.
   CHECK(m.x[0] == m.x[16]);
@@ -134,9 +137,9 @@ namespace {
 // on curve `mode`, with the slice boxes and broadphase built as a step builds them.
 bool overlap_found(const test::TinyWorld& w, int mode, std::int32_t first, std::int32_t last) {
   const CurveTangents m = test::tangents(w, mode);
-  reference::SliceBoxes boxes;
+  SliceBoxes boxes;
   reference::slice_boxes(w.topo, w.state, m, boxes);
-  reference::OverlapGrid grid;
+  OverlapGrid grid;
   reference::build_overlap_grid(w.topo, boxes, grid);
   bool found = false;
   for (std::int32_t v = first; v < last; ++v)
@@ -318,8 +321,11 @@ TEST_CASE(
   CHECK(chains.entry[9] == chains.entry[8]);
   CHECK(chains.track_vertex.size() == 3 * 4);
 
+  CHECK(w.topo.chains.slice == chains.slice);  // as link_curves filled them
+  CHECK(w.topo.chains.entry == chains.entry);
+
   CurveTangents m;
-  reference::curve_tangents(w.topo, links, w.state, curve_spline, m);
+  reference::curve_tangents(w.topo, w.state, curve_spline, m);
   // A loop's first slice has its last slice's tangent; a still coordinate has none.
   for (int k = 0; k < 4; ++k) {
     CHECK(m.x[k] == m.x[16 + k]);
@@ -365,7 +371,7 @@ TEST_CASE("spline: two slices' widened boxes hold every boundary point of the cu
   }
   const test::TinyWorld w = b.build();
   const CurveTangents m = test::tangents(w, curve_spline);
-  reference::SliceBoxes boxes;
+  SliceBoxes boxes;
   reference::slice_boxes(w.topo, w.state, m, boxes);
   long outside_unwidened = 0;
   for (std::int32_t s = 0; s + 1 < w.topo.slice_count(); ++s) {
@@ -435,4 +441,16 @@ TEST_CASE(
   CHECK(worst_area_change(curve_spline) < 0.001);
   CHECK(worst_area_change(curve_monotone) < 0.005);
   CHECK(worst_area_change(curve_linear) > 0.015);  // the chord: cos 7.5° in radius, squared
+}
+
+TEST_CASE("curve_tangents refuses a topology whose curve links were never filled, naming link_curves") {
+  test::WorldBuilder b;
+  b.add_element(test::square_tube(0.5f, 0.5f, 0.05f, {0.0f, 0.5f, 1.0f}));
+  test::TinyWorld w = b.build();
+  w.topo.curve = {};  // a topology put together without link_curves
+  w.topo.chains = {};
+  CurveTangents m;
+  CHECK_THROWS_WITH(reference::curve_tangents(w.topo, w.state, curve_spline, m), Catch::Contains("link_curves"));
+  link_curves(w.topo);
+  CHECK_NOTHROW(reference::curve_tangents(w.topo, w.state, curve_spline, m));
 }

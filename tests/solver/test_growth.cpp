@@ -64,19 +64,19 @@ TEST_CASE(
   for (std::int32_t s = 0; s < topo.slice_count(); ++s) {
     INFO("slice " << s);
     if (s == overlapping || s == outside) {
-      CHECK(changed[s] == reference::growth_shrank);
+      CHECK(changed[s] == growth_shrank);
       CHECK(same_bits(state.growth[s], before.growth[s] - shrink));
     } else if (s == at_floor) {
-      CHECK(changed[s] == reference::growth_shrank);
+      CHECK(changed[s] == growth_shrank);
       CHECK(state.growth[s] == 1.0f);
     } else if (s == at_wall || s == full || s == smaller) {
-      CHECK(changed[s] == reference::growth_kept);
+      CHECK(changed[s] == growth_kept);
       CHECK(same_bits(state.growth[s], before.growth[s]));
     } else if (s == nearly_full) {
-      CHECK(changed[s] == reference::growth_grew);
+      CHECK(changed[s] == growth_grew);
       CHECK(state.growth[s] == 2.0f);
     } else {
-      CHECK(changed[s] == reference::growth_grew);
+      CHECK(changed[s] == growth_grew);
       CHECK(same_bits(state.growth[s], before.growth[s] + step));
     }
   }
@@ -185,8 +185,8 @@ TEST_CASE("growth: no slice outgrows growth_ratio × the smallest slice of its e
   }
   CHECK(state.growth[2] == 1.0f);
   CHECK(state.growth[0] == 1.3f);
-  CHECK((changed[0] & reference::growth_held) != 0);  // it would grow: the limit holds it
-  CHECK(changed[2] == reference::growth_kept);        // the wall holds this one, not the limit
+  CHECK((changed[0] & growth_held) != 0);  // it would grow: the limit holds it
+  CHECK(changed[2] == growth_kept);        // the wall holds this one, not the limit
   // Element 1 is free and grows evenly: 40 steps of 0.05.
   for (std::int32_t s = topo.element_slice_begin[1]; s < topo.element_slice_begin[2]; ++s)
     CHECK(state.growth[s] == Approx(3.0).epsilon(1e-5));
@@ -349,14 +349,14 @@ TEST_CASE("growth: a slice the limits only slow from the room's boost is not hel
     INFO("slice " << s);
     CHECK(same_bits(state.growth[s], r * (1.5f + step)));
     CHECK(state.growth[s] > 1.5f + 2.0f * step);
-    CHECK((changed[s] & reference::growth_held) == 0);
+    CHECK((changed[s] & growth_held) == 0);
   }
   for (const std::int32_t s : {5, 7}) {  // no room at all: held
     INFO("slice " << s);
     CHECK(same_bits(state.growth[s], r * 1.5f));
-    CHECK((changed[s] & reference::growth_held) != 0);
+    CHECK((changed[s] & growth_held) != 0);
   }
-  CHECK((changed[6] & reference::growth_held) == 0);  // the wall holds it, not a limit
+  CHECK((changed[6] & growth_held) == 0);  // the wall holds it, not a limit
   CHECK(same_bits(state.growth[3], 1.5f + 4.0f * step));
 }
 

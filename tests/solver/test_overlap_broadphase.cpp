@@ -1,4 +1,4 @@
-// The overlap test's broadphase (reference::OverlapGrid, docs/architecture.md "The overlap test"): it
+// The overlap test's broadphase (OverlapGrid, docs/architecture.md "The overlap test"): it
 // must list every element whose slice pair around a query's t passes the box test, in increasing order
 // and each once, so that the overlap test gives the same bits as a walk over every element.
 #include <catch2/catch.hpp>

@@ -194,6 +194,7 @@ class WorldBuilder {
     w.topo.rest_copy_y = w.state.y;
     w.topo.rest_copy_t = w.state.t;
     reference::slice_centroids(w.topo, w.state, w.topo.slice_rest_copy_cx, w.topo.slice_rest_copy_cy);
+    link_curves(w.topo);  // as build_world does: the curve's links and chains, once
     return w;
   }
 
@@ -240,7 +241,7 @@ inline std::vector<TinySlice> square_tube(float cx, float cy, float h, const std
 /// The curve tangents of a world's state as the step computes them (default Params: the spline).
 inline CurveTangents tangents(const TinyWorld& w, int mode = Params{}.forces.motion_curve) {
   CurveTangents m;
-  reference::curve_tangents(w.topo, curve_links(w.topo), w.state, mode, m);
+  reference::curve_tangents(w.topo, w.state, mode, m);
   return m;
 }
 

@@ -33,9 +33,10 @@ TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQue
   b.seg_bx = in(topo.container.bx, "container.bx"), b.seg_by = in(topo.container.by, "container.by");
   b.container_index = in(topo.container.index.data, "container.index");
   b.loop_end = in(topo.loop_end, "loop_end"), b.loop_start = in(topo.loop_start, "loop_start");
-  const CurveLinks links = curve_links(topo);
+  require_curve_links(topo, "OpenCL backend");
+  const CurveLinks& links = topo.curve;
   b.curve_prev = in(links.prev, "curve_prev"), b.curve_next = in(links.next, "curve_next");
-  const CurveChains chains = curve_chains(topo, links);
+  const CurveChains& chains = topo.chains;
   b.chain_begin = in(chains.begin, "chain_begin"), b.chain_slice = in(chains.slice, "chain_slice");
   b.chain_offset = in(chains.offset, "chain_offset"), b.chain_alias = in(chains.alias, "chain_alias");
   b.chain_period = in(chains.period, "chain_period");

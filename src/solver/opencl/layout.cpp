@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "animpak/curve.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/spring_class.hpp"
 #include "cl_host.hpp"
 
@@ -33,9 +34,8 @@ static_assert(AP_CURVE_LINEAR == curve_linear && AP_CURVE_MONOTONE == curve_mono
 static_assert(AP_CONTACT_OVERLAP == contact_overlap && AP_CONTACT_OUTSIDE == contact_outside &&
               AP_CONTACT_WALL == contact_wall && AP_CONTACT_INSIDE == contact_inside &&
               AP_CONTACT_YIELD == contact_yield && AP_CONTACT_BLOCK == contact_block);
-static_assert(AP_GROWTH_GREW == reference::growth_grew && AP_GROWTH_SHRANK == reference::growth_shrank &&
-              AP_GROWTH_HELD == reference::growth_held);
-static_assert(AP_CONTAINMENT_MARGIN == reference::containment_margin);
+static_assert(AP_GROWTH_GREW == growth_grew && AP_GROWTH_SHRANK == growth_shrank && AP_GROWTH_HELD == growth_held);
+static_assert(AP_CONTAINMENT_MARGIN == containment_margin);
 static_assert(static_cast<int>(SpringClass::target) == AP_SPRING_CLASSES - 1);
 
 ContainerIndexInfo container_index_info(const ContainerIndex& index) {

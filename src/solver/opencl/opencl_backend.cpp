@@ -13,6 +13,7 @@
 
 #include "../counting_sort.hpp"
 #include "animpak/error.hpp"
+#include "animpak/reference/grid.hpp"
 #include "animpak/step_params.hpp"
 #include "boundary_order.hpp"
 #include "device_buffers.hpp"
@@ -193,7 +194,7 @@ class DeviceBackend final : public OpenclBackend {
     return s;
   }
 
-  reference::StepForces evaluate_forces(reference::ForceBreakdown* out) override {
+  StepForces evaluate_forces(ForceBreakdown* out) override {
     build_grid();
     order_boundary_by_cell();
     const std::int32_t n = world_.vertices;
@@ -214,7 +215,7 @@ class DeviceBackend final : public OpenclBackend {
     if (mirror_) wall_mirror_.run(queue_, boundary_.count());
     forces_.run(queue_, n);
     forces_.set(0, world_);
-    reference::StepForces r;
+    StepForces r;
     r.total.assign(n);
     r.closest.resize(n);
     r.contact.resize(n);
@@ -224,7 +225,7 @@ class DeviceBackend final : public OpenclBackend {
     if (out != nullptr) {
       std::vector<float> all(static_cast<std::size_t>(3) * AP_FORCE_COMPONENTS * n);
       read(breakdown_, all, "breakdown", true);
-      reference::ForceField* fields[AP_FORCE_COMPONENTS] = {};
+      ForceField* fields[AP_FORCE_COMPONENTS] = {};
       fields[AP_FORCE_REPULSION] = &out->repulsion, fields[AP_FORCE_SPRINGS] = &out->springs;
       fields[AP_FORCE_TARGET] = &out->target, fields[AP_FORCE_BOUNDARY] = &out->boundary;
       fields[AP_FORCE_OVERLAP] = &out->overlap, fields[AP_FORCE_TORSION] = &out->torsion;
@@ -240,9 +241,9 @@ class DeviceBackend final : public OpenclBackend {
     return r;
   }
 
-  reference::CollisionGrid build_and_read_grid() override {
+  CollisionGrid build_and_read_grid() override {
     build_grid();
-    reference::CollisionGrid g;
+    CollisionGrid g;
     g.n = grid_.n;
     g.cell = grid_.cell;
     g.cx.resize(grid_.triangles), g.cy.resize(grid_.triangles), g.ct.resize(grid_.triangles);
@@ -267,7 +268,7 @@ class DeviceBackend final : public OpenclBackend {
     return g;
   }
 
-  reference::OverlapGrid build_and_read_overlap_grid() override {
+  OverlapGrid build_and_read_overlap_grid() override {
     curve_tangents_kernel().run(queue_, curve_tangents_items());
     slice_boxes_.run(queue_, world_.slices);
     build_overlap_grid();
@@ -575,9 +576,9 @@ class DeviceBackend final : public OpenclBackend {
       loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
   cl_uint breakdown_arg_ = 0;
   cl_uint overlap_grid_arg_ = 0;
-  bool mirror_ = false;          ///< wall_mirror is on: wall_mirror_force runs before step_forces
-  cl_int curve_mode_ = 0;        ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
-  reference::SliceBoxes boxes_;  ///< read back for a host build of the broadphase
+  bool mirror_ = false;    ///< wall_mirror is on: wall_mirror_force runs before step_forces
+  cl_int curve_mode_ = 0;  ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
+  SliceBoxes boxes_;       ///< read back for a host build of the broadphase
   opencl::OverlapBroadphase broadphase_;
   opencl::BoundaryOrder boundary_;  ///< the repulsion kernel's work order
   std::vector<std::int32_t> cells_, cell_start_, sorted_;

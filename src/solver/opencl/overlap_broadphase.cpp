@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <string>
 
+#include "animpak/reference/overlap.hpp"
+
 namespace animpak::opencl {
 
 namespace {
@@ -85,8 +87,7 @@ std::array<Launch, 8> OverlapBroadphase::launches() {
            {&order_, cell_capacity_}}};
 }
 
-void OverlapBroadphase::upload(const cl::CommandQueue& queue, const Topology& topo,
-                               const reference::SliceBoxes& boxes) {
+void OverlapBroadphase::upload(const cl::CommandQueue& queue, const Topology& topo, const SliceBoxes& boxes) {
   reference::build_overlap_grid(topo, boxes, host_);
   host_info_ = {host_.nx, host_.ny, host_.nt, host_.x0, host_.y0, host_.t0, host_.cell, host_.cell_t};
   check(queue.enqueueWriteBuffer(info_, CL_FALSE, 0, sizeof(OverlapGridInfo), &host_info_),
@@ -125,10 +126,10 @@ void OverlapBroadphase::set_capacity(std::size_t entries) {
   bind_lists();
 }
 
-reference::OverlapGrid OverlapBroadphase::read(const cl::CommandQueue& queue) const {
+OverlapGrid OverlapBroadphase::read(const cl::CommandQueue& queue) const {
   OverlapGridInfo info{};
   check(queue.enqueueReadBuffer(info_, CL_TRUE, 0, sizeof(info), &info), "clEnqueueReadBuffer(overlap_grid_info)");
-  reference::OverlapGrid g;
+  OverlapGrid g;
   g.nx = info.nx, g.ny = info.ny, g.nt = info.nt;
   g.x0 = info.x0, g.y0 = info.y0, g.t0 = info.t0, g.cell = info.cell, g.cell_t = info.cell_t;
   g.cell_start.assign(1, 0);

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "animpak/reference.hpp"
+#include "animpak/solver/grids.hpp"
 #include "device_buffers.hpp"
 #include "kernel.hpp"
 
@@ -35,7 +35,7 @@ class OverlapBroadphase {
 
   /// A host build: the broadphase of `boxes` (this step's, read back), uploaded without waiting; the
   /// host copies stay untouched until the next build, which the caller starts after waiting on the queue.
-  void upload(const cl::CommandQueue& queue, const Topology& topo, const reference::SliceBoxes& boxes);
+  void upload(const cl::CommandQueue& queue, const Topology& topo, const SliceBoxes& boxes);
 
   /// Sets the repulsion kernel's arguments first, first + 1, first + 2 to the grid's shape, cell ranges
   /// and element lists (the buffers change when they grow, so every step).
@@ -51,7 +51,7 @@ class OverlapBroadphase {
   void set_capacity(std::size_t entries);
 
   /// The broadphase as the last build left it (read with a blocking read).
-  reference::OverlapGrid read(const cl::CommandQueue& queue) const;
+  OverlapGrid read(const cl::CommandQueue& queue) const;
 
  private:
   void bind_lists();
@@ -67,7 +67,7 @@ class OverlapBroadphase {
   cl::Buffer pair_slice_, pair_element_, count_, cursor_, block_sum_, total_;
   Kernel extent_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_;
   // Host build only: what the last upload sent, kept alive for its non-blocking writes.
-  reference::OverlapGrid host_;
+  OverlapGrid host_;
   OverlapGridInfo host_info_{};
 };
 

@@ -5,7 +5,8 @@
 #include <memory>
 
 #include "animpak/compare.hpp"
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
+#include "animpak/reference/step.hpp"
 #include "animpak/simulation.hpp"
 #include "animpak/step_params.hpp"
 
@@ -16,10 +17,9 @@ void record(WorstError& worst, double value, std::int64_t state, std::size_t ver
   if (value > worst.value) worst = {value, state, static_cast<std::int32_t>(vertex), axis};
 }
 
-void compare_field(ForceComparison& c, const reference::ForceField& ref, const reference::ForceField& dev,
-                   std::int64_t state) {
-  const std::pair<char, std::vector<float> reference::ForceField::*> axes[] = {
-      {'x', &reference::ForceField::x}, {'y', &reference::ForceField::y}, {'t', &reference::ForceField::t}};
+void compare_field(ForceComparison& c, const ForceField& ref, const ForceField& dev, std::int64_t state) {
+  const std::pair<char, std::vector<float> ForceField::*> axes[] = {
+      {'x', &ForceField::x}, {'y', &ForceField::y}, {'t', &ForceField::t}};
   for (const auto& [axis, member] : axes) {
     const FloatDifference d = compare_floats(ref.*member, dev.*member);
     c.differing += d.count;
@@ -34,10 +34,10 @@ void compare_field(ForceComparison& c, const reference::ForceField& ref, const r
 // through evaluate_forces (its grid rebuilt from its state, nothing advanced).
 void compare_forces(DeviceValidation& v, const Topology& topology, const Params& params, const SimState& ref_state,
                     OpenclBackend& device) {
-  const reference::CollisionGrid grid = reference::build_collision_grid(topology, ref_state, params);
-  reference::ForceBreakdown ref_parts, dev_parts;
-  const reference::StepForces ref = reference::step_forces(topology, ref_state, step_params(params), grid, &ref_parts);
-  const reference::StepForces dev = device.evaluate_forces(&dev_parts);
+  const CollisionGrid grid = reference::build_collision_grid(topology, ref_state, params);
+  ForceBreakdown ref_parts, dev_parts;
+  const StepForces ref = reference::step_forces(topology, ref_state, step_params(params), grid, &ref_parts);
+  const StepForces dev = device.evaluate_forces(&dev_parts);
   const auto state = static_cast<std::int64_t>(ref_state.iteration);
   for (std::size_t i = 0; i < breakdown_forces.size(); ++i)
     compare_field(v.forces[i], ref_parts.*breakdown_forces[i].field, dev_parts.*breakdown_forces[i].field, state);

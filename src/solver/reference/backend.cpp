@@ -27,7 +27,7 @@ class ReferenceBackend final : public Backend {
       PhaseStopwatch w(times_.grid);
       grid_ = reference::build_collision_grid(topo_, state_, params_);
     }
-    reference::StepForces forces;
+    StepForces forces;
     {
       PhaseStopwatch w(times_.forces);
       forces = reference::step_forces(topo_, state_, step_, grid_, nullptr);
@@ -89,7 +89,7 @@ class ReferenceBackend final : public Backend {
   SimState state_;
   Params params_;     ///< the grid's settings (grid_rebuild_interval, cell_size, far_cells)
   ForceParams step_;  ///< every float constant of the step, converted once (animpak/step_params.hpp)
-  reference::CollisionGrid grid_;
+  CollisionGrid grid_;
   std::vector<float> closest_;
   std::vector<std::uint8_t> contact_, changed_;
   std::vector<float> proposed_;

@@ -7,7 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/boundary.hpp"
+#include "animpak/reference/segments.hpp"
 
 namespace animpak::reference {
 

@@ -1,6 +1,6 @@
 // Closest point on a segment in the plane, for the container's wall and the overlap test's way out.
 // (The closest point on a triangle, for Eq. 1, is inline in animpak/closest_point.hpp.)
-#include "animpak/reference.hpp"
+#include "animpak/reference/segments.hpp"
 
 namespace animpak::reference {
 

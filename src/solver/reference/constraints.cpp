@@ -1,7 +1,7 @@
 // Slice constraints of paper §5.2, hard projections applied after every integration step.
 // End-to-end and simultaneity touch one element each (a kernel runs them per element in parallel);
 // the loop pass crosses elements and runs afterwards on its own.
-#include "animpak/reference.hpp"
+#include "animpak/reference/step.hpp"
 
 namespace animpak::reference {
 

@@ -4,26 +4,27 @@
 // kernels/curve.cl is the tangents' twin.
 #include "animpak/curve.hpp"
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/overlap.hpp"
 
 namespace animpak {
 
 namespace reference {
 
-void curve_tangents(const Topology& topo, const CurveLinks& links, const SimState& state, int mode,
-                    CurveTangents& out) {
+void curve_tangents(const Topology& topo, const SimState& state, int mode, CurveTangents& out) {
+  require_curve_links(topo, "curve_tangents");
   const std::int32_t n = topo.vertex_count();
   out.mode = mode;
   out.x.assign(n, 0.0f);
   out.y.assign(n, 0.0f);
   if (mode != curve_spline) {
     for (std::int32_t v = 0; v < n; ++v)
-      curve_vertex_tangent(topo, links, state, topo.slice[v], v - topo.slice_begin[topo.slice[v]], out.x[v], out.y[v]);
+      curve_vertex_tangent(topo, topo.curve, state, topo.slice[v], v - topo.slice_begin[topo.slice[v]], out.x[v],
+                           out.y[v]);
     return;
   }
   // The spline: one system per track (vertex k of every slice on a chain), solved in the order
   // kernels/curve.cl's curve_spline_tangents solves it.
-  const CurveChains chains = curve_chains(topo, links);
+  const CurveChains& chains = topo.chains;
   std::vector<float> mx, my, cp, z;
   for (std::size_t track = 0; track < chains.track_vertex.size(); ++track) {
     const std::int32_t c = chains.track_chain[track], b = chains.begin[c], len = chains.begin[c + 1] - b;

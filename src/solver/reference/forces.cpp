@@ -7,15 +7,14 @@
 // The kernels add in exactly this order.
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/boundary.hpp"
+#include "animpak/reference/grid.hpp"
+#include "animpak/reference/local_forces.hpp"
+#include "animpak/reference/overlap.hpp"
+#include "animpak/reference/repulsion.hpp"
+#include "animpak/reference/step.hpp"
 
 namespace animpak::reference {
-
-void ForceField::assign(std::size_t n) {
-  x.assign(n, 0.0f);
-  y.assign(n, 0.0f);
-  t.assign(n, 0.0f);
-}
 
 StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
                        const CollisionGrid& grid, ForceBreakdown* out) {
@@ -36,7 +35,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
   slice_centroids(topo, state, cx, cy);
   // The curve between slices that the overlap test walks, as the frames show it; the boxes hold it.
   CurveTangents tangents;
-  curve_tangents(topo, curve_links(topo), state, params.motion_curve, tangents);
+  curve_tangents(topo, state, params.motion_curve, tangents);
   SliceBoxes boxes;
   slice_boxes(topo, state, tangents, boxes);
   OverlapGrid overlap_grid;

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "../counting_sort.hpp"
-#include "animpak/reference.hpp"
+#include "animpak/reference/grid.hpp"
 
 namespace animpak::reference {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/growth.hpp"
 
 namespace animpak::reference {
 

@@ -10,7 +10,7 @@
 // above the cap.
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/step.hpp"
 
 namespace animpak::reference {
 

@@ -16,7 +16,8 @@
 #include <cmath>
 
 #include "../counting_sort.hpp"
-#include "animpak/reference.hpp"
+#include "animpak/reference/overlap.hpp"
+#include "animpak/reference/segments.hpp"
 
 namespace animpak::reference {
 

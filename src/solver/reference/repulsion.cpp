@@ -8,7 +8,9 @@
 // dependent ones (docs/architecture.md, "The twin rule"). k_rpl multiplies the sum once at the end.
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/boundary.hpp"
+#include "animpak/reference/grid.hpp"
+#include "animpak/reference/repulsion.hpp"
 
 namespace animpak::reference {
 

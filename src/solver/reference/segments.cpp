@@ -1,6 +1,6 @@
 // Segment tests shared by the container (boundary.cpp) and the overlap test (overlap.cpp); their kernel
 // twins are in kernels/segments.cl.
-#include "animpak/reference.hpp"
+#include "animpak/reference/segments.hpp"
 
 namespace animpak::reference {
 namespace {

@@ -8,7 +8,7 @@
 // back along the triangle's height.
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/local_forces.hpp"
 
 namespace animpak::reference {
 

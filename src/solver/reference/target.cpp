@@ -4,7 +4,7 @@
 // between are left to the other forces (docs/scene-format.md, docs/parameters.md `k_target`).
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/local_forces.hpp"
 
 namespace animpak::reference {
 

@@ -1,6 +1,6 @@
 // Temporal force, paper Eq. 6: F_tmp = k_tmp u^t (t − t'), t the rest time of the vertex's slice,
 // t' its current time, u^t = (0, 0, 1). It draws slices back to their original place in time.
-#include "animpak/reference.hpp"
+#include "animpak/reference/local_forces.hpp"
 
 namespace animpak::reference {
 

@@ -14,7 +14,7 @@
 // rest direction already carries the target's angle (src/scene/placement.cpp places the slice so).
 #include <cmath>
 
-#include "animpak/reference.hpp"
+#include "animpak/reference/local_forces.hpp"
 
 namespace animpak::reference {
 

@@ -1,0 +1,35 @@
+// The reference's step after the forces' phases: their sum, paper Eq. 7 (src/solver/reference/forces.cpp),
+//   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp),
+// the symplectic Euler step with the velocity cap (§5, integrate.cpp) and the slice constraints of §5.2
+// (constraints.cpp), hard projections applied after every integration; containment follows them
+// (boundary.hpp). kernels/forces.cl, integrate.cl and constraints.cl are their twins.
+#pragma once
+
+#include <cstdint>
+
+#include "animpak/solver/grids.hpp"
+#include "animpak/solver/step.hpp"
+#include "animpak/state.hpp"
+#include "animpak/step_params.hpp"
+
+namespace animpak::reference {
+
+/// Eq. 7 for every vertex from one snapshot of positions; with `out`, every force apart too. forces.cpp.
+StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,
+                       const CollisionGrid& grid, ForceBreakdown* out);
+
+/// Symplectic Euler with the velocity cap (§5). integrate.cpp.
+void integrate(const ForceField& force, const ForceParams& params, SimState& state);
+
+/// End-to-end (§5.2): element e's first slice to t = 0, last slice to t = 1. constraints.cpp.
+void apply_end_to_end(const Topology& topo, SimState& state, std::int32_t e);
+
+/// Simultaneity (§5.2): every inner slice of element e snapped to the mean t of its vertices.
+/// constraints.cpp.
+void apply_simultaneity(const Topology& topo, SimState& state, std::int32_t e);
+
+/// Loop (§5.2): both vertices of every loop pair move to the average of their x, y; t untouched.
+/// constraints.cpp.
+void apply_loop(const Topology& topo, SimState& state);
+
+}  // namespace animpak::reference
