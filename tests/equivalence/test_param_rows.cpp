@@ -26,6 +26,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "animpak/param_table.hpp"
 #include "animpak/params.hpp"
 #include "animpak/step_params.hpp"
 #include "equivalence_support.hpp"
@@ -184,15 +185,15 @@ Params row_params(const RowCase& c, const ParamInfo& info, double value) {
   return p;
 }
 
-reference::StepForces row_reference_forces(const TinyWorld& w, const SimState& state, const Params& params,
-                                           reference::ForceBreakdown& parts) {
-  const reference::CollisionGrid grid = reference::build_collision_grid(w.topo, state, params);
+StepForces row_reference_forces(const TinyWorld& w, const SimState& state, const Params& params,
+                                           ForceBreakdown& parts) {
+  const CollisionGrid grid = reference::build_collision_grid(w.topo, state, params);
   return reference::step_forces(w.topo, state, step_params(params), grid, &parts);
 }
 
 /// Every force component, the totals, the gaps and the contacts; empty when all match bit for bit.
-std::string row_forces_difference(const reference::StepForces& ref, const reference::ForceBreakdown& ref_parts,
-                                  const reference::StepForces& dev, const reference::ForceBreakdown& dev_parts) {
+std::string row_forces_difference(const StepForces& ref, const ForceBreakdown& ref_parts,
+                                  const StepForces& dev, const ForceBreakdown& dev_parts) {
   return breakdown_difference(ref_parts, dev_parts) + bit_difference("total.x", ref.total.x, dev.total.x) +
          bit_difference("total.y", ref.total.y, dev.total.y) + bit_difference("total.t", ref.total.t, dev.total.t) +
          bit_difference("closest", ref.closest, dev.closest) + bit_difference("contact", ref.contact, dev.contact);
@@ -200,8 +201,8 @@ std::string row_forces_difference(const reference::StepForces& ref, const refere
 
 /// What the reference makes of a world: the forces before the first step and the state after the last.
 struct RowOutcome {
-  reference::StepForces forces;
-  reference::ForceBreakdown parts;
+  StepForces forces;
+  ForceBreakdown parts;
   SimState state;
 };
 
@@ -233,7 +234,7 @@ void compare_row(const RowCase& c, const ParamInfo& info, const std::vector<Devi
     for (const GridSort sort : grid_sorts) {
       auto ref = make_reference_backend(w.topo, w.state, params);
       auto dev = make_opencl_backend(w.topo, w.state, params, d, sort);
-      reference::ForceBreakdown ref_parts, dev_parts;
+      ForceBreakdown ref_parts, dev_parts;
       std::string diff = row_forces_difference(row_reference_forces(w, w.state, params, ref_parts), ref_parts,
                                                dev->evaluate_forces(&dev_parts), dev_parts);
       if (!diff.empty()) diff = "forces before the first step:\n" + diff;
@@ -246,7 +247,7 @@ void compare_row(const RowCase& c, const ParamInfo& info, const std::vector<Devi
       }
       if (diff.empty()) {
         const SimState last = ref->state();
-        reference::ForceBreakdown ref_last, dev_last;
+        ForceBreakdown ref_last, dev_last;
         diff = row_forces_difference(row_reference_forces(w, last, params, ref_last), ref_last,
                                      dev->evaluate_forces(&dev_last), dev_last);
         if (!diff.empty()) diff = "forces after the last step:\n" + diff;
@@ -339,8 +340,8 @@ TEST_CASE("param rows: in the sparse world each bound of the room's boost sets t
   const TinyWorld w = row_world(c->world);
   const Params params = row_params(*c, *info, c->value);
   const ForceParams p = step_params(params);
-  reference::ForceBreakdown parts;
-  const reference::StepForces forces = row_reference_forces(w, w.state, params, parts);
+  ForceBreakdown parts;
+  const StepForces forces = row_reference_forces(w, w.state, params, parts);
   int by_gap = 0, by_boost = 0, by_speed = 0;
   for (std::int32_t s = 0; s < w.topo.slice_count(); ++s) {
     std::uint8_t bits = 0;
