@@ -186,14 +186,14 @@ Params row_params(const RowCase& c, const ParamInfo& info, double value) {
 }
 
 StepForces row_reference_forces(const TinyWorld& w, const SimState& state, const Params& params,
-                                           ForceBreakdown& parts) {
+                                ForceBreakdown& parts) {
   const CollisionGrid grid = reference::build_collision_grid(w.topo, state, params);
   return reference::step_forces(w.topo, state, step_params(params), grid, &parts);
 }
 
 /// Every force component, the totals, the gaps and the contacts; empty when all match bit for bit.
-std::string row_forces_difference(const StepForces& ref, const ForceBreakdown& ref_parts,
-                                  const StepForces& dev, const ForceBreakdown& dev_parts) {
+std::string row_forces_difference(const StepForces& ref, const ForceBreakdown& ref_parts, const StepForces& dev,
+                                  const ForceBreakdown& dev_parts) {
   return breakdown_difference(ref_parts, dev_parts) + bit_difference("total.x", ref.total.x, dev.total.x) +
          bit_difference("total.y", ref.total.y, dev.total.y) + bit_difference("total.t", ref.total.t, dev.total.t) +
          bit_difference("closest", ref.closest, dev.closest) + bit_difference("contact", ref.contact, dev.contact);
