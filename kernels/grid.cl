@@ -1,5 +1,5 @@
 /* Collision grid of §5.1 on the device: envelope-triangle centroids and their cells, the stable
- * counting sort (or its host twin in opencl_backend.cpp), the per-slot copies the force kernels read,
+ * counting sort (or its host twin in grid_schedule.cpp), the per-slot copies the force kernels read,
  * and the row ranges they walk. */
 
 /** Cell of one coordinate: clamp(floor(c / cell), 0, n - 1) in float, NaN to 0 (state.hpp). */

@@ -18,11 +18,11 @@ float growth_multiplier(const float gap, const float boost_gap, const float boos
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world,
                              const ForceParams p,
-                             const int growing,                       /* input: 0 in the settling phase */
-                             const int hold_secondary,                /* input: 1 while secondary elements wait */
-                             __global const int* slice_begin,         /* input: slices + 1 */
-                             __global const int* slice_element,       /* input: per slice */
-                             __global const uchar* element_secondary, /* input: per element */
+                             const int growing,                     /* input: 0 in the settling phase */
+                             const int hold_secondary,              /* input: 1 while secondary elements wait */
+                             __global const int* slice_begin,       /* input: slices + 1 */
+                             __global const int* slice_element,     /* input: per slice */
+                             __global const int* element_secondary, /* input: per element */
                              __global const uchar* contact, /* input: AP_CONTACT_* per vertex, from step_forces */
                              __global const float* closest, /* input: per vertex, from step_forces */
                              __global const float* rest_copy_x,

@@ -7,8 +7,8 @@ __kernel void slice_centroids(
     __global const int* slice_begin, /* input: slice s holds [slice_begin[s], slice_begin[s+1]) */
     __global const float* x,         /* input: positions */
     __global const float* y,         /* input */
-    __global float* cx,              /* output: centroid per slice */
-    __global float* cy) {            /* output */
+    __global float* slice_cx,        /* output: centroid per slice */
+    __global float* slice_cy) {      /* output */
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   float sx = 0.0f, sy = 0.0f;
@@ -17,11 +17,11 @@ __kernel void slice_centroids(
     sy = sy + y[v];
   }
   const float count = (float)(slice_begin[s + 1] - slice_begin[s]);
-  cx[s] = 0.0f;
-  cy[s] = 0.0f;
+  slice_cx[s] = 0.0f;
+  slice_cy[s] = 0.0f;
   if (count > 0.0f) {
-    cx[s] = sx / count;
-    cy[s] = sy / count;
+    slice_cx[s] = sx / count;
+    slice_cy[s] = sy / count;
   }
 }
 

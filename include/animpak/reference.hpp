@@ -256,6 +256,19 @@ Vec3f torsion_force(const Topology& topo, const SimState& state, const ForcePara
 /// Eq. 6: k_tmp (rest_t − t) along t. temporal.cpp.
 Vec3f temporal_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
 
+/// What a step reads besides the forces for one vertex (growth, §5.3, and the statistics).
+struct ContactGap {
+  /// For a boundary vertex, the distance to the nearest other element or container wall (the slice gap
+  /// of §5.3 counts the wall as a neighbour), 0 when it overlaps; +inf for interior vertices.
+  float closest = std::numeric_limits<float>::infinity();
+  std::uint8_t contact = 0;  ///< ContactBit flags
+};
+
+/// Vertex v's ContactGap from the step's queries: the overlap test, the nearest other element's
+/// distance (`nearest`, RepulsionResult::closest) and the container query. contact.cpp.
+ContactGap contact_gap(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v,
+                       const OverlapResult& overlap, float nearest, const ContainerQuery& wall);
+
 // ---- one step ------------------------------------------------------------------------------------------
 
 /// Per-vertex force components, structure of arrays.

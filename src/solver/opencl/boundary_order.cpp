@@ -31,10 +31,11 @@ BoundaryOrder::BoundaryOrder(const cl::Context& context, const cl::CommandQueue&
   sorted_buf_ = ints(per_vertex, "boundary_sorted");
   start_buf_ = ints(static_cast<std::size_t>(grid_.cells) + 1, "boundary_cell_start");
   cells_ = Kernel(program, "boundary_cells");
-  cells_.bind(grid_, order_, x, y, t, cell_, previous_);
+  cells_.bind(
+      {{"grid", grid_}, {"order", order_}, {"x", x}, {"y", y}, {"t", t}, {"cell", cell_}, {"previous", previous_}});
   sort_ = DeviceCountingSort(context, program, count_, grid_.cells, cell_, start_buf_, sorted_buf_, "order: ");
   gather_ = Kernel(program, "boundary_gather");
-  gather_.bind(grid_, sorted_buf_, previous_, order_);
+  gather_.bind({{"grid", grid_}, {"sorted", sorted_buf_}, {"previous", previous_}, {"order", order_}});
 }
 
 std::array<Launch, 9> BoundaryOrder::launches() {

@@ -14,7 +14,7 @@ cl::Buffer ints(const cl::Context& context, std::int32_t n, const char* name) {
 }
 
 // The kernels read the item and cell counts from a GridInfo (its other fields are the grid's shape).
-GridInfo counts_info(std::int32_t items, std::int32_t cells) { return GridInfo{0, 1.0f, items, cells, 0}; }
+GridInfo counts_info(std::int32_t items, std::int32_t cells) { return GridInfo{0, 1.0f, items, cells, 0, 0, 0}; }
 
 Kernel labelled(const cl::Program& program, const std::string& label, const char* name) {
   return Kernel(program, name, label.empty() ? nullptr : (label + name).c_str());
@@ -29,11 +29,12 @@ DeviceScan::DeviceScan(const cl::Context& context, const cl::Program& program, s
   cursor_ = ints(context, cells, "cell_cursor");
   const GridInfo info = counts_info(0, cells);
   block_sums_ = labelled(program, label, "grid_block_sums");
-  block_sums_.bind(info, count, block_sum_);
+  block_sums_.bind({{"grid", info}, {"cell_count", count}, {"block_sum", block_sum_}});
   scan_blocks_ = labelled(program, label, "grid_scan_blocks");
-  scan_blocks_.bind(info, block_sum_);
+  scan_blocks_.bind({{"grid", info}, {"block_sum", block_sum_}});
   scan_cells_ = labelled(program, label, "grid_scan_cells");
-  scan_cells_.bind(info, count, block_sum_, start, cursor_);
+  scan_cells_.bind(
+      {{"grid", info}, {"cell_count", count}, {"block_start", block_sum_}, {"cell_start", start}, {"cursor", cursor_}});
 }
 
 std::array<Launch, 3> DeviceScan::launches() {
@@ -49,13 +50,13 @@ DeviceCountingSort::DeviceCountingSort(const cl::Context& context, const cl::Pro
   scan_ = DeviceScan(context, program, cells, count_, start, label);
   const GridInfo info = counts_info(items, cells);
   clear_ = labelled(program, label, "grid_clear");
-  clear_.bind(info, count_);
+  clear_.bind({{"grid", info}, {"cell_count", count_}});
   count_kernel_ = labelled(program, label, "grid_count");
-  count_kernel_.bind(info, keys, count_);
+  count_kernel_.bind({{"grid", info}, {"triangle_cell", keys}, {"cell_count", count_}});
   scatter_ = labelled(program, label, "grid_scatter");
-  scatter_.bind(info, keys, scan_.cursor(), sorted);
+  scatter_.bind({{"grid", info}, {"triangle_cell", keys}, {"cursor", scan_.cursor()}, {"sorted_triangles", sorted}});
   order_ = labelled(program, label, "grid_order_cells");
-  order_.bind(info, start, sorted);
+  order_.bind({{"grid", info}, {"cell_start", start}, {"sorted_triangles", sorted}});
 }
 
 std::array<Launch, 7> DeviceCountingSort::launches() {

@@ -4,7 +4,7 @@
 // entries) and the item indices by cell, increasing within a cell (`sorted`): the same arrays as the
 // host's. The collision grid sorts its envelope triangles with one (GPUs), the repulsion order its
 // boundary vertices with another (boundary_order.hpp); the far field's runs are packed by a scan
-// (opencl_backend.cpp).
+// (grid_schedule.cpp).
 #pragma once
 
 #include <array>
