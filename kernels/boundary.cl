@@ -129,16 +129,19 @@ void boundary_force(const ForceParams p,
 /** Containment: a vertex outside the container moves past its nearest boundary point by
  * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
 __kernel void apply_containment(const WorldInfo world,
-                                __global const float* seg_ax,
-                                __global const float* seg_ay, /* input: container segments */
-                                __global const float* seg_bx,
-                                __global const float* seg_by,             /* input */
+                                __global const float* segments,           /* input: container segments */
                                 const ContainerIndexInfo container_index, /* the container's index */
                                 __global const int* container_lists,      /* input: its lists */
-                                __global float* x,
-                                __global float* y, /* input/output: positions */
-                                __global float* vx,
-                                __global float* vy) { /* input/output: velocities */
+                                __global float* positions,                /* input/output: x, y */
+                                __global float* velocities) {             /* input/output: x, y */
+  __global const float* seg_ax = segments + AP_SEG_AX * world.segment_stride;
+  __global const float* seg_ay = segments + AP_SEG_AY * world.segment_stride;
+  __global const float* seg_bx = segments + AP_SEG_BX * world.segment_stride;
+  __global const float* seg_by = segments + AP_SEG_BY * world.segment_stride;
+  __global float* x = positions + AP_X * world.vertex_stride;
+  __global float* y = positions + AP_Y * world.vertex_stride;
+  __global float* vx = velocities + AP_X * world.vertex_stride;
+  __global float* vy = velocities + AP_Y * world.vertex_stride;
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v];

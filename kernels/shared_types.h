@@ -74,10 +74,11 @@ typedef float ap_float;
 
 /* Grouped buffers: one buffer holds the planes of a group, all of one type, plane k from element
  * k * stride on, the group's stride (WorldInfo, GridInfo) padded to the device's base-address alignment
- * so that the host can also see each plane as a sub-buffer of its own (src/solver/opencl/plane_buffer.hpp;
- * docs/architecture.md, "Layout shared by host and kernels"). A kernel takes the group and names its
- * planes once, `x = positions + AP_X * world.vertex_stride`, so its arithmetic reads one array per
- * quantity as before. The planes of each group, by index: */
+ * so that every plane starts as aligned as a buffer of its own (src/solver/opencl/plane_buffer.hpp;
+ * docs/architecture.md, "Layout shared by host and kernels"). Every kernel that reads or writes a plane
+ * takes the whole group and names its planes once at its top, `x = positions + AP_X * world.vertex_stride`,
+ * so its arithmetic reads one array per quantity; the host never binds a plane on its own. The planes of
+ * each group, by index: */
 /* positions, velocities, forces (float, vertex_stride): x, y, t. */
 #define AP_X 0
 #define AP_Y 1

@@ -117,7 +117,6 @@ ScratchBuffers allocate_scratch(const cl::Context& context, const WorldInfo& wor
   w.triangle_cell = scratch(it, "triangle_cell");
   w.sorted = scratch(it, "sorted_triangles");
   w.grid_index = group(AP_INDEX_PLANES, grid.index_stride, "grid_index");
-  w.cell_start = w.grid_index.view(AP_INDEX_CELL_START);
   // The slot vertices end in 16 spare slots: the near block's lanes read a whole group past a row's end
   // (repulsion.cl).
   const std::size_t spare = 16;
@@ -131,9 +130,6 @@ ScratchBuffers allocate_scratch(const cl::Context& context, const WorldInfo& wor
   w.wall = group(AP_WALL_PLANES, world.vertex_stride, "wall");
   w.wall_inside = scratch(vertices, "wall_inside");
   w.slice_geometry = group(AP_GEOM_PLANES, world.slice_stride, "slice_geometry");
-  w.box_x0 = w.slice_geometry.view(AP_GEOM_X0), w.box_y0 = w.slice_geometry.view(AP_GEOM_Y0);
-  w.box_x1 = w.slice_geometry.view(AP_GEOM_X1), w.box_y1 = w.slice_geometry.view(AP_GEOM_Y1);
-  w.box_t = w.slice_geometry.view(AP_GEOM_T);
   w.curve = group(AP_CURVE_PLANES, world.vertex_stride, "curve");
   w.spline_cp = scratch(fn, "spline_cp"), w.spline_z = scratch(fn, "spline_z");
   w.proposed = scratch(fs, "proposed_growth");

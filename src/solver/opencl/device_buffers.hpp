@@ -55,14 +55,12 @@ struct ScratchBuffers {
   cl::Buffer env_cx, env_cy, env_ct, triangle_cell;  // centroids and cells
   cl::Buffer sorted;                                 // grid sort
   PlaneBuffer grid_index;                            // cell and run ranges, slot and run elements (AP_INDEX_*)
-  cl::Buffer cell_start;                             // grid_index's cell ranges, which the grid sort fills
   cl::Buffer slot_vertices;                          // triangles in cell order: nine planes a.x … c.t
   PlaneBuffer slot_centroids;                        // their centroids
   cl::Buffer cell_runs, runs;                        // far-field cell aggregates, packed in cell order
   PlaneBuffer repulsion;                             // repulsion and the overlap test (AP_RPL_*)
   cl::Buffer repulsion_contact;                      // the overlap test's bits
   PlaneBuffer slice_geometry;                        // per-slice centroids and boxes (AP_GEOM_*)
-  cl::Buffer box_x0, box_y0, box_x1, box_y1, box_t;  // slice_geometry's boxes, which the broadphase reads
   PlaneBuffer curve;                                 // the curve between slices: tangents, handles (AP_CURVE_*)
   cl::Buffer spline_cp, spline_z;                    // the spline's solve
   PlaneBuffer wall;                                  // the wall's mirror image and query (AP_WALL_*)

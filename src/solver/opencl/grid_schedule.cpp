@@ -51,9 +51,7 @@ void DeviceBackend::host_sort() {
   ++host_sorts_;
   counting_sort(cells_, grid_.cells, cell_start_, sorted_);
   // The host vectors stay untouched until the next build, which first waits on this queue.
-  check(queue_.enqueueWriteBuffer(scratch_.cell_start, CL_FALSE, 0, sizeof(std::int32_t) * cell_start_.size(),
-                                  cell_start_.data()),
-        "clEnqueueWriteBuffer(cell_start)");
+  scratch_.grid_index.write(queue_, AP_INDEX_CELL_START, cell_start_, false);
   if (!sorted_.empty())
     check(
         queue_.enqueueWriteBuffer(scratch_.sorted, CL_FALSE, 0, sizeof(std::int32_t) * sorted_.size(), sorted_.data()),

@@ -72,9 +72,9 @@ DeviceBackend::DeviceBackend(const Topology& topology, SimState initial, const P
   upload_state(initial);
   topo_buf_ = upload_topology(context_, queue_, topo_, world_);
   allocate_scratch();
-  broadphase_ = OverlapBroadphase(context_, queue_, program, topo_, scratch_, sort_ == GridSort::device);
-  boundary_ = BoundaryOrder(context_, queue_, program, std::move(boundary), grid_, positions_.view(AP_X),
-                            positions_.view(AP_Y), positions_.view(AP_T), sort_ == GridSort::device);
+  broadphase_ = OverlapBroadphase(context_, queue_, program, topo_, world_, scratch_, sort_ == GridSort::device);
+  boundary_ = BoundaryOrder(context_, queue_, program, std::move(boundary), grid_, world_, positions_.buffer(),
+                            sort_ == GridSort::device);
   const ForceParams p = step_params(params);
   curve_mode_ = p.motion_curve;
   const ArgValues values = argument_values(p);

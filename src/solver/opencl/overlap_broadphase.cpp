@@ -15,8 +15,8 @@ std::size_t first_capacity(std::int32_t pairs) { return static_cast<std::size_t>
 }  // namespace
 
 OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::CommandQueue& queue,
-                                     const cl::Program& program, const Topology& topo, const ScratchBuffers& scratch,
-                                     bool on_device)
+                                     const cl::Program& program, const Topology& topo, const WorldInfo& world,
+                                     const ScratchBuffers& scratch, bool on_device)
     : on_device_(on_device), context_(context) {
   // The slice pairs in increasing slice order (hence element order), as reference::build_overlap_grid.
   std::vector<std::int32_t> pair_slice, pair_element;
@@ -46,12 +46,7 @@ OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::Comma
   // The collision grid's scan kernels (grid.cl) run over the cell capacity: a GridInfo with just that.
   const GridInfo scan{0, 1.0f, pairs_, cell_capacity_, 0, 0, 0};
   extent_ = Kernel(program, "overlap_grid_extent");
-  const ArgValues boxes{{"box_x0", scratch.box_x0},
-                        {"box_y0", scratch.box_y0},
-                        {"box_x1", scratch.box_x1},
-                        {"box_y1", scratch.box_y1},
-                        {"box_t", scratch.box_t}};
-  values_ = boxes;
+  values_ = ArgValues{{"world", world}, {"slice_geometry", scratch.slice_geometry.buffer()}};
   for (const Arg& a : std::initializer_list<Arg>{{"pairs", pairs_},
                                                  {"cell_capacity", cell_capacity_},
                                                  {"pair_slice", pair_slice_},
@@ -73,9 +68,10 @@ OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::Comma
   scan_blocks_.bind({{"grid", scan}, {"block_sum", block_sum_}});
   scan_cells_ = Kernel(program, "grid_scan_cells");
   scan_cells_.bind({{"grid", scan},
+                    {"start_plane", 0},
                     {"cell_count", count_},
                     {"block_start", block_sum_},
-                    {"cell_start", start_},
+                    {"starts", start_},
                     {"cursor", cursor_}});
   scatter_ = Kernel(program, "overlap_grid_scatter");
   order_ = Kernel(program, "overlap_grid_order");

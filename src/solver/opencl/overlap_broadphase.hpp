@@ -20,9 +20,10 @@ class OverlapBroadphase {
  public:
   OverlapBroadphase() = default;
   /// The buffers for `topo`'s slice pairs, and on the device its kernels bound to the slice boxes in
-  /// `scratch` (slice_boxes fills them before each build).
+  /// `scratch`'s slice_geometry, its planes `world.slice_stride` apart (slice_boxes fills them before each
+  /// build).
   OverlapBroadphase(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
-                    const Topology& topo, const ScratchBuffers& scratch, bool on_device);
+                    const Topology& topo, const WorldInfo& world, const ScratchBuffers& scratch, bool on_device);
   OverlapBroadphase(const OverlapBroadphase&) = delete;
   OverlapBroadphase& operator=(const OverlapBroadphase&) = delete;
   OverlapBroadphase(OverlapBroadphase&&) = default;

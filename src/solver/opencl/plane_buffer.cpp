@@ -19,25 +19,8 @@ std::int32_t plane_stride(std::int64_t length, std::int32_t alignment) {
 
 PlaneBuffer::PlaneBuffer(const cl::Context& context, cl_mem_flags flags, int planes, std::int32_t stride,
                          const std::string& name)
-    : name_(name), flags_(flags), planes_(planes), stride_(stride) {
+    : name_(name), planes_(planes), stride_(stride) {
   buffer_ = make_buffer(context, flags, std::size_t{4} * static_cast<std::size_t>(stride) * planes, name);
-  for (int k = 0; k < planes; ++k) views_.push_back(make_view(k, 1));
-}
-
-cl::Buffer PlaneBuffer::view(int first, int count) const {
-  return count == 1 ? views_.at(static_cast<std::size_t>(first)) : make_view(first, count);
-}
-
-cl::Buffer PlaneBuffer::make_view(int first, int planes) const {
-  if (first < 0 || planes < 1 || first + planes > planes_)
-    throw std::out_of_range(name_ + ": planes " + std::to_string(first) + "+" + std::to_string(planes) +
-                            " of a group of " + std::to_string(planes_));
-  cl_buffer_region region{std::size_t{4} * static_cast<std::size_t>(stride_) * first,
-                          std::size_t{4} * static_cast<std::size_t>(stride_) * planes};
-  cl_int err = CL_SUCCESS;
-  cl_mem view = clCreateSubBuffer(buffer_(), flags_, CL_BUFFER_CREATE_TYPE_REGION, &region, &err);
-  check(err, "clCreateSubBuffer(" + name_ + " plane " + std::to_string(first) + ")");
-  return cl::Buffer(view);
 }
 
 std::size_t PlaneBuffer::offset(int k, std::size_t length) const {

@@ -120,7 +120,7 @@ reference::CollisionGrid DeviceBackend::build_and_read_grid() {
     g.sorted_triangles.resize(grid_.triangles);
     read(w.triangle_cell, g.triangle_cell, "triangle_cell");
     read(w.sorted, g.sorted_triangles, "sorted_triangles");
-    read(w.cell_start, g.cell_start, "cell_start", true);
+    read(w.grid_index, AP_INDEX_CELL_START, g.cell_start, true);
   }
   pending_.clear();
   reference::fill_slot_elements(topo_, g);

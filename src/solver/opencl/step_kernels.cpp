@@ -20,41 +20,21 @@ ArgValues DeviceBackend::argument_values(const ForceParams& p) const {
       {"container_index", container_index_info(topo_.container.index)},
       {"growing", settling_since_ == 0 ? 1 : 0},
       {"hold_secondary", secondary_since_ == 0 ? 1 : 0},
-      // The state (SimState), as groups and as the planes of kernels that read one.
+      // The state (SimState), as groups: a kernel names the planes it reads (shared_types.h).
       {"positions", positions_.buffer()},
-      {"x", positions_.view(AP_X)},
-      {"y", positions_.view(AP_Y)},
-      {"t", positions_.view(AP_T)},
-      {"vx", velocities_.view(AP_X)},
-      {"vy", velocities_.view(AP_Y)},
-      {"vt", velocities_.view(AP_T)},
+      {"velocities", velocities_.buffer()},
       {"spring_rest", rest_},
       {"growth", growth_},
       // The topology (device_buffers.cpp).
       {"vertex_topology", b.vertex_topology.buffer()},
-      {"slice", b.vertex_topology.view(AP_TOPO_SLICE)},
       {"vertex_rest", b.vertex_rest.buffer()},
-      {"rest_copy_x", b.vertex_rest.view(AP_REST_COPY_X)},
-      {"rest_copy_y", b.vertex_rest.view(AP_REST_COPY_Y)},
-      {"rest_copy_t", b.vertex_rest.view(AP_REST_COPY_T)},
       {"slice_rest_copy_cx", b.rest_copy_cx},
       {"slice_rest_copy_cy", b.rest_copy_cy},
       {"springs", b.springs.buffer()},
-      {"spring_begin", b.springs.view(AP_SPRINGS_BEGIN)},
-      {"spring_other", b.springs.view(AP_SPRINGS_OTHER)},
       {"triangles", b.triangles.buffer()},
       {"slice_topology", b.slice_topology.buffer()},
-      {"slice_begin", b.slice_topology.view(AP_SLICES_BEGIN)},
-      {"slice_boundary", b.slice_topology.view(AP_SLICES_BOUNDARY)},
-      {"slice_element", b.slice_topology.view(AP_SLICES_ELEMENT)},
-      {"element_slice_begin", b.slice_topology.view(AP_SLICES_ELEMENT_BEGIN)},
-      {"element_secondary", b.slice_topology.view(AP_SLICES_SECONDARY)},
       {"targets", b.targets.buffer()},
       {"segments", b.segments.buffer()},
-      {"seg_ax", b.segments.view(AP_SEG_AX)},
-      {"seg_ay", b.segments.view(AP_SEG_AY)},
-      {"seg_bx", b.segments.view(AP_SEG_BX)},
-      {"seg_by", b.segments.view(AP_SEG_BY)},
       {"container_lists", b.container_index},
       {"env_a", b.env_a},
       {"env_b", b.env_b},
@@ -79,33 +59,13 @@ ArgValues DeviceBackend::argument_values(const ForceParams& p) const {
       {"triangle_cell", w.triangle_cell},
       {"sorted_triangles", w.sorted},
       {"grid_index", w.grid_index.buffer()},
-      {"cell_start", w.cell_start},
-      {"slot_element", w.grid_index.view(AP_INDEX_SLOT_ELEMENT)},
-      {"run_start", w.grid_index.view(AP_INDEX_RUN_START)},
-      {"run_element", w.grid_index.view(AP_INDEX_RUN_ELEMENT)},
       {"slot_vertices", w.slot_vertices},
       {"slot_centroids", w.slot_centroids.buffer()},
-      {"slot_cx", w.slot_centroids.view(AP_X)},
-      {"slot_cy", w.slot_centroids.view(AP_Y)},
-      {"slot_ct", w.slot_centroids.view(AP_T)},
       {"cell_runs", w.cell_runs},
       {"runs", w.runs},
       // The force phases' scratch, in step order.
       {"slice_geometry", w.slice_geometry.buffer()},
-      {"slice_cx", w.slice_geometry.view(AP_GEOM_CX)},
-      {"slice_cy", w.slice_geometry.view(AP_GEOM_CY)},
-      {"box_x0", w.box_x0},
-      {"box_y0", w.box_y0},
-      {"box_x1", w.box_x1},
-      {"box_y1", w.box_y1},
-      {"box_t", w.box_t},
       {"curve_planes", w.curve.buffer()},
-      {"tangent_x", w.curve.view(AP_CURVE_TANGENT_X)},
-      {"tangent_y", w.curve.view(AP_CURVE_TANGENT_Y)},
-      {"handle_px", w.curve.view(AP_CURVE_HANDLE_PX)},
-      {"handle_py", w.curve.view(AP_CURVE_HANDLE_PY)},
-      {"handle_qx", w.curve.view(AP_CURVE_HANDLE_QX)},
-      {"handle_qy", w.curve.view(AP_CURVE_HANDLE_QY)},
       {"cp", w.spline_cp},
       {"z", w.spline_z},
       {"repulsion", w.repulsion.buffer()},
@@ -113,9 +73,6 @@ ArgValues DeviceBackend::argument_values(const ForceParams& p) const {
       {"wall", w.wall.buffer()},
       {"wall_inside", w.wall_inside},
       {"forces", forces_buf_.buffer()},
-      {"fx", forces_buf_.view(AP_X)},
-      {"fy", forces_buf_.view(AP_Y)},
-      {"ft", forces_buf_.view(AP_T)},
       {"breakdown", breakdown_},
       // What the step leaves for growth and the statistics.
       {"closest", closest_},
@@ -138,14 +95,16 @@ void DeviceBackend::bind_grid_kernels(const cl::Program& program, const ArgValue
   envelope_cells_.bind(values);
   if (sort_ == GridSort::device)
     grid_sort_ =
-        DeviceCountingSort(context_, program, grid_.triangles, grid_.cells, w.triangle_cell, w.cell_start, w.sorted);
+        DeviceCountingSort(context_, program, grid_.triangles, grid_.cells, w.triangle_cell,
+                           StartPlane{w.grid_index.buffer(), AP_INDEX_CELL_START, w.grid_index.stride()}, w.sorted);
   grid_gather_ = Kernel(program, "grid_gather");
   grid_gather_.bind(values);
   slot_positions_ = Kernel(program, "slot_positions");
   slot_positions_.bind(values);
   run_counts_ = Kernel(program, "grid_run_counts");
   run_counts_.bind(values);
-  run_scan_ = DeviceScan(context_, program, grid_.cells, w.cell_runs, w.grid_index.view(AP_INDEX_RUN_START), "runs: ");
+  run_scan_ = DeviceScan(context_, program, grid_.cells, w.cell_runs,
+                         StartPlane{w.grid_index.buffer(), AP_INDEX_RUN_START, w.grid_index.stride()}, "runs: ");
   grid_runs_ = Kernel(program, "grid_runs");
   grid_runs_.bind(values);
 }
