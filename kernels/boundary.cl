@@ -129,22 +129,25 @@ void boundary_force(const ForceParams p,
 /** Containment: a vertex outside the container moves past its nearest boundary point by
  * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
 __kernel void apply_containment(const WorldInfo world,
-                                __global const float* seg_ax,
-                                __global const float* seg_ay, /* input: container segments */
-                                __global const float* seg_bx,
-                                __global const float* seg_by,             /* input */
+                                __global const float* segments,           /* input: container segments */
                                 const ContainerIndexInfo container_index, /* the container's index */
-                                __global const int* index,                /* input: its lists */
-                                __global float* x,
-                                __global float* y, /* input/output: positions */
-                                __global float* vx,
-                                __global float* vy) { /* input/output: velocities */
+                                __global const int* container_lists,      /* input: its lists */
+                                __global float* positions,                /* input/output: x, y */
+                                __global float* velocities) {             /* input/output: x, y */
+  __global const float* seg_ax = segments + AP_SEG_AX * world.segment_stride;
+  __global const float* seg_ay = segments + AP_SEG_AY * world.segment_stride;
+  __global const float* seg_bx = segments + AP_SEG_BX * world.segment_stride;
+  __global const float* seg_by = segments + AP_SEG_BY * world.segment_stride;
+  __global float* x = positions + AP_X * world.vertex_stride;
+  __global float* y = positions + AP_Y * world.vertex_stride;
+  __global float* vx = velocities + AP_X * world.vertex_stride;
+  __global float* vy = velocities + AP_Y * world.vertex_stride;
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v];
   float d2, qx, qy;
-  if (container_query(world.segments, container_index, index, px, py, false, seg_ax, seg_ay, seg_bx, seg_by, &d2, &qx,
-                      &qy))
+  if (container_query(world.segments, container_index, container_lists, px, py, false, seg_ax, seg_ay, seg_bx, seg_by,
+                      &d2, &qx, &qy))
     return;
   const float dx = qx - px, dy = qy - py;
   const float e2 = dx * dx + dy * dy;
@@ -165,58 +168,49 @@ __kernel void apply_containment(const WorldInfo world,
 __kernel void wall_mirror_force(const GridInfo grid,
                                 const ForceParams p,
                                 const WorldInfo world,
-                                const int boundary_count,
-                                __global const int* boundary_vertices, /* input: the boundary vertices */
-                                __global const float* x,
-                                __global const float* y,
-                                __global const float* t,          /* input */
-                                __global const int* element,      /* input: per vertex */
-                                __global const int* cell_start,   /* input: cells + 1 */
-                                __global const int* slot_element, /* input: per grid slot (grid_gather) */
-                                __global const float* slot_vertices,
-                                __global const float* slot_cx,
-                                __global const float* slot_cy,
-                                __global const float* slot_ct,
-                                __global const int* run_start,   /* input: cells + 1 (grid_runs) */
-                                __global const int* run_element, /* input: per run (grid_runs) */
-                                __global const float4* runs,     /* input: per run (grid_runs) */
-                                __global const float* seg_ax,
-                                __global const float* seg_ay, /* input: container segments */
-                                __global const float* seg_bx,
-                                __global const float* seg_by,             /* input */
+                                __global const int* boundary_vertices,    /* input: world.boundaries of them */
+                                __global const float* positions,          /* input: x, y, t */
+                                __global const int* vertex_topology,      /* input: AP_TOPO_ELEMENT */
+                                __global const int* grid_index,           /* input: AP_INDEX_* */
+                                __global const float* slot_vertices,      /* input: per grid slot (slot_positions) */
+                                __global const float* slot_centroids,     /* input: per grid slot (grid_gather) */
+                                __global const float4* runs,              /* input: per run (grid_runs) */
+                                __global const float* segments,           /* input: AP_SEG_*, the container */
                                 const ContainerIndexInfo container_index, /* the container's index */
                                 __global const int* container_lists,      /* input: its lists */
-                                __global float* mirror_x,
-                                __global float* mirror_y,
-                                __global float* mirror_t,    /* output: per boundary vertex */
-                                __global uchar* wall_inside, /* output: its container query, per boundary vertex */
-                                __global float* wall_d2,
-                                __global float* wall_qx,
-                                __global float* wall_qy) {
+                                __global float* wall,                     /* output: AP_WALL_* per boundary vertex */
+                                __global uchar* wall_inside) {            /* output: its container query's inside */
   const int i = get_global_id(0);
-  if (i >= boundary_count) return;
+  if (i >= world.boundaries) return;
+  const int vs = world.vertex_stride;
   const int v = boundary_vertices[i];
-  const float px = x[v], py = y[v], pt = t[v];
+  const float px = positions[AP_X * vs + v], py = positions[AP_Y * vs + v], pt = positions[AP_T * vs + v];
   float d2, qx, qy;
-  const bool inside = container_query(world.segments, container_index, container_lists, px, py, true, seg_ax, seg_ay,
-                                      seg_bx, seg_by, &d2, &qx, &qy);
+  const bool inside = container_query(
+      world.segments, container_index, container_lists, px, py, true, segments + AP_SEG_AX * world.segment_stride,
+      segments + AP_SEG_AY * world.segment_stride, segments + AP_SEG_BX * world.segment_stride,
+      segments + AP_SEG_BY * world.segment_stride, &d2, &qx, &qy);
   float mx = 0.0f, my = 0.0f, mt = 0.0f;
   if (p.k_mirror != 0.0f && inside && d2 > 0.0f && d2 < p.wall_range2) {
     float sx, sy, st, closest2;
-    repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_start, run_element,
-                  runs, element[v], 1, qx + (qx - px), qy + (qy - py), pt, p.repulsion_epsilon, &sx, &sy, &st,
-                  &closest2);
+    repulsion_sum(grid, grid_index + AP_INDEX_CELL_START * grid.index_stride,
+                  grid_index + AP_INDEX_SLOT_ELEMENT * grid.index_stride, slot_vertices,
+                  slot_centroids + AP_X * grid.slot_stride, slot_centroids + AP_Y * grid.slot_stride,
+                  slot_centroids + AP_T * grid.slot_stride, grid_index + AP_INDEX_RUN_START * grid.index_stride,
+                  grid_index + AP_INDEX_RUN_ELEMENT * grid.index_stride, runs,
+                  vertex_topology[AP_TOPO_ELEMENT * vs + v], 1, qx + (qx - px), qy + (qy - py), pt, p.repulsion_epsilon,
+                  &sx, &sy, &st, &closest2);
     const float nx = px - qx, ny = py - qy;
     const float twice = 2.0f * ((sx * nx + sy * ny) / d2);
     mx = p.k_mirror * (sx - twice * nx);
     my = p.k_mirror * (sy - twice * ny);
     mt = p.k_mirror * st;
   }
-  mirror_x[v] = mx;
-  mirror_y[v] = my;
-  mirror_t[v] = mt;
+  wall[AP_WALL_MIRROR_X * vs + v] = mx;
+  wall[AP_WALL_MIRROR_Y * vs + v] = my;
+  wall[AP_WALL_MIRROR_T * vs + v] = mt;
   wall_inside[v] = inside ? 1 : 0;
-  wall_d2[v] = d2;
-  wall_qx[v] = qx;
-  wall_qy[v] = qy;
+  wall[AP_WALL_D2 * vs + v] = d2;
+  wall[AP_WALL_QX * vs + v] = qx;
+  wall[AP_WALL_QY * vs + v] = qy;
 }

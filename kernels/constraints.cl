@@ -5,10 +5,12 @@
  * the reference applies end-to-end's second assignment last) or simultaneity (an inner slice snapped
  * to the mean t of its vertices, summed in index order). */
 __kernel void slice_constraints(const WorldInfo world,
-                                __global const int* slice_begin,         /* input: slices + 1 */
-                                __global const int* slice_element,       /* input: per slice */
-                                __global const int* element_slice_begin, /* input: elements + 1 */
-                                __global float* t) {                     /* input/output: vertex times */
+                                __global const int* slice_topology, /* input: slice_begin, slice_element, ... */
+                                __global float* positions) {        /* input/output: vertex times */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const int* slice_element = slice_topology + AP_SLICES_ELEMENT * world.slice_stride;
+  __global const int* element_slice_begin = slice_topology + AP_SLICES_ELEMENT_BEGIN * world.slice_stride;
+  __global float* t = positions + AP_T * world.vertex_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int e = slice_element[s];
@@ -31,8 +33,9 @@ __kernel void slice_constraints(const WorldInfo world,
 __kernel void loop_constraint(const WorldInfo world,
                               __global const int* loop_end,   /* input: vertex on a t = 1 slice */
                               __global const int* loop_start, /* input: its partner on the t = 0 slice */
-                              __global float* x,              /* input/output */
-                              __global float* y) {            /* input/output */
+                              __global float* positions) {    /* input/output: x, y */
+  __global float* x = positions + AP_X * world.vertex_stride;
+  __global float* y = positions + AP_Y * world.vertex_stride;
   const int i = get_global_id(0);
   if (i >= world.loops) return;
   const int a = loop_end[i], b = loop_start[i];

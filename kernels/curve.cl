@@ -94,17 +94,21 @@ AP_INLINE ap_floatv curve_value_lanes(const ap_floatv x0,
  * curve_tangents). The slice before the first of an element, across the loop seam, lies one period
  * earlier; the slice after the last, one period later. */
 __kernel void curve_tangents(const WorldInfo world,
-                             __global const int* slice,               /* input: per vertex */
-                             __global const int* slice_begin,         /* input: slices + 1 */
-                             __global const int* slice_element,       /* input: per slice */
-                             __global const int* element_slice_begin, /* input: elements + 1 */
-                             __global const int* curve_prev,          /* input: per slice, -1 at an open end */
-                             __global const int* curve_next,          /* input: per slice, -1 at an open end */
-                             __global const float* x,
-                             __global const float* y,
-                             __global const float* t,     /* input: positions */
-                             __global float* tangent_x,   /* output: per vertex */
-                             __global float* tangent_y) { /* output: per vertex */
+                             __global const int* vertex_topology, /* input: slice per vertex */
+                             __global const int* slice_topology,  /* input: slice_begin, slice_element, ... */
+                             __global const int* curve_prev,      /* input: per slice, -1 at an open end */
+                             __global const int* curve_next,      /* input: per slice, -1 at an open end */
+                             __global const float* positions,     /* input: x, y, t per vertex */
+                             __global float* curve_planes) {      /* output: tangent_x, tangent_y per vertex */
+  __global const int* slice = vertex_topology + AP_TOPO_SLICE * world.vertex_stride;
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const int* slice_element = slice_topology + AP_SLICES_ELEMENT * world.slice_stride;
+  __global const int* element_slice_begin = slice_topology + AP_SLICES_ELEMENT_BEGIN * world.slice_stride;
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
+  __global float* tangent_x = curve_planes + AP_CURVE_TANGENT_X * world.vertex_stride;
+  __global float* tangent_y = curve_planes + AP_CURVE_TANGENT_Y * world.vertex_stride;
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const int s = slice[v], k = v - slice_begin[s];
@@ -186,7 +190,8 @@ void spline_row(int i,
  * correction for its corners. The eliminated right-hand sides live in the tangents themselves, the sweep's
  * ratios in cp and the correction's column in z (per vertex). A chain's entry with an alias (a looping
  * element's first slice) hands its tangents on. */
-__kernel void curve_spline_tangents(const int tracks,
+__kernel void curve_spline_tangents(const WorldInfo world,
+                                    const int tracks,
                                     __global const int* track_vertex,   /* input: per track */
                                     __global const int* track_chain,    /* input: per track */
                                     __global const int* chain_begin,    /* input: chains + 1 */
@@ -194,14 +199,17 @@ __kernel void curve_spline_tangents(const int tracks,
                                     __global const float* chain_offset, /* input: per entry */
                                     __global const int* chain_alias,    /* input: per entry, -1 for none */
                                     __global const float* chain_period, /* input: per chain */
-                                    __global const int* slice_begin,    /* input: slices + 1 */
-                                    __global const float* x,
-                                    __global const float* y,
-                                    __global const float* t, /* input: positions */
+                                    __global const int* slice_topology, /* input: slice_begin */
+                                    __global const float* positions,    /* input: x, y, t per vertex */
                                     __global float* cp,
-                                    __global float* z,           /* scratch: per vertex */
-                                    __global float* tangent_x,   /* output: per vertex */
-                                    __global float* tangent_y) { /* output: per vertex */
+                                    __global float* z,              /* scratch: per vertex */
+                                    __global float* curve_planes) { /* output: tangent_x, tangent_y */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
+  __global float* tangent_x = curve_planes + AP_CURVE_TANGENT_X * world.vertex_stride;
+  __global float* tangent_y = curve_planes + AP_CURVE_TANGENT_Y * world.vertex_stride;
   const int track = get_global_id(0);
   if (track >= tracks) return;
   const int c = track_chain[track], b = chain_begin[c], n = chain_begin[c + 1] - b;

@@ -1,5 +1,5 @@
 /* Collision grid of §5.1 on the device: envelope-triangle centroids and their cells, the stable
- * counting sort (or its host twin in opencl_backend.cpp), the per-slot copies the force kernels read,
+ * counting sort (or its host twin in grid_schedule.cpp), the per-slot copies the force kernels read,
  * and the row ranges they walk. */
 
 /** Cell of one coordinate: clamp(floor(c / cell), 0, n - 1) in float, NaN to 0 (state.hpp). */
@@ -18,17 +18,19 @@ int grid_linear_cell(const GridInfo grid, float x, float y, float t) {
 }
 
 /** Centroid (a + b + c) / 3 and linear cell of every envelope triangle; one work-item per triangle. */
-__kernel void envelope_cells(const GridInfo grid,           /* input */
-                             __global const int* env_a,     /* input: vertex ids per triangle */
-                             __global const int* env_b,     /* input */
-                             __global const int* env_c,     /* input */
-                             __global const float* x,       /* input: positions per vertex */
-                             __global const float* y,       /* input */
-                             __global const float* t,       /* input */
-                             __global float* cx,            /* output: centroid per triangle */
-                             __global float* cy,            /* output */
-                             __global float* ct,            /* output */
-                             __global int* triangle_cell) { /* output: linear cell per triangle */
+__kernel void envelope_cells(const GridInfo grid,             /* input */
+                             const WorldInfo world,           /* input: positions' stride */
+                             __global const int* env_a,       /* input: vertex ids per triangle */
+                             __global const int* env_b,       /* input */
+                             __global const int* env_c,       /* input */
+                             __global const float* positions, /* input: x, y, t per vertex */
+                             __global float* cx,              /* output: centroid per triangle */
+                             __global float* cy,              /* output */
+                             __global float* ct,              /* output */
+                             __global int* triangle_cell) {   /* output: linear cell per triangle */
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
   const int i = get_global_id(0);
   if (i >= grid.triangles) return;
   const int a = env_a[i], b = env_b[i], c = env_c[i];
@@ -95,12 +97,15 @@ __kernel void grid_scan_blocks(const GridInfo grid, __global int* block_sum) { /
 }
 
 /** cell_start (exclusive scan of the counts, plus the total at [cells]) and the scatter cursors;
- * one work-item per block. */
+ * one work-item per block. cell_start is plane start_plane of `starts`, planes grid.index_stride apart
+ * (grid_index's cell or run ranges; plane 0 of a buffer of its own). */
 __kernel void grid_scan_cells(const GridInfo grid,
+                              const int start_plane,
                               __global const int* cell_count,  /* input: per cell */
                               __global const int* block_start, /* input: per block, scanned */
-                              __global int* cell_start,        /* output: cells + 1 */
+                              __global int* starts,            /* output: cells + 1 in plane start_plane */
                               __global int* cursor) {          /* output: per cell */
+  __global int* cell_start = starts + start_plane * grid.index_stride;
   const int b = get_global_id(0);
   const int blocks = (grid.cells + AP_SCAN_BLOCK - 1) / AP_SCAN_BLOCK;
   if (b >= blocks) return;
@@ -141,10 +146,12 @@ void grid_sort_range(__global int* ids, int begin, int end) {
   }
 }
 
-/** Orders one cell's range by triangle id. */
+/** Orders one cell's range by triangle id (cell_start as grid_scan_cells writes it). */
 __kernel void grid_order_cells(const GridInfo grid,
-                               __global const int* cell_start,   /* input: cells + 1 */
+                               const int start_plane,
+                               __global const int* starts,       /* input: cells + 1 in plane start_plane */
                                __global int* sorted_triangles) { /* in/out */
+  __global const int* cell_start = starts + start_plane * grid.index_stride;
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
   grid_sort_range(sorted_triangles, cell_start[c], cell_start[c + 1]);
@@ -159,11 +166,13 @@ __kernel void grid_gather(const GridInfo grid,
                           __global const int* env_element,      /* input: per triangle */
                           __global const float* cx,
                           __global const float* cy,
-                          __global const float* ct,   /* input */
-                          __global int* slot_element, /* output: per slot */
-                          __global float* slot_cx,
-                          __global float* slot_cy,
-                          __global float* slot_ct) { /* output */
+                          __global const float* ct,         /* input */
+                          __global int* grid_index,         /* output: slot_element per slot */
+                          __global float* slot_centroids) { /* output: x, y, t per slot */
+  __global int* slot_element = grid_index + AP_INDEX_SLOT_ELEMENT * grid.index_stride;
+  __global float* slot_cx = slot_centroids + AP_X * grid.slot_stride;
+  __global float* slot_cy = slot_centroids + AP_Y * grid.slot_stride;
+  __global float* slot_ct = slot_centroids + AP_T * grid.slot_stride;
   const int k = get_global_id(0);
   if (k >= grid.triangles) return;
   const int tri = sorted_triangles[k];
@@ -177,14 +186,16 @@ __kernel void grid_gather(const GridInfo grid,
  * block reads them from consecutive addresses. Run every step, as the grid may be older than the
  * positions (grid_rebuild_interval); copies only. One work-item per slot. */
 __kernel void slot_positions(const GridInfo grid,
+                             const WorldInfo world,                /* input: positions' stride */
                              __global const int* sorted_triangles, /* input */
                              __global const int* env_a,
                              __global const int* env_b,
                              __global const int* env_c,
-                             __global const float* x,
-                             __global const float* y,
-                             __global const float* t,         /* input */
+                             __global const float* positions, /* input: x, y, t per vertex */
                              __global float* slot_vertices) { /* output: nine planes of grid.triangles */
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
   const int k = get_global_id(0);
   const int n = grid.triangles;
   if (k >= n) return;
@@ -203,9 +214,10 @@ __kernel void slot_positions(const GridInfo grid,
 
 /** How many runs of slots owned by one element each cell holds (grid_runs); one work-item per cell. */
 __kernel void grid_run_counts(const GridInfo grid,
-                              __global const int* cell_start,   /* input: cells + 1 */
-                              __global const int* slot_element, /* input: per slot (grid_gather) */
-                              __global int* cell_runs) {        /* output: per cell */
+                              __global const int* grid_index, /* input: cell_start, slot_element (grid_gather) */
+                              __global int* cell_runs) {      /* output: per cell */
+  __global const int* cell_start = grid_index + AP_INDEX_CELL_START * grid.index_stride;
+  __global const int* slot_element = grid_index + AP_INDEX_SLOT_ELEMENT * grid.index_stride;
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
   const int begin = cell_start[c], end = cell_start[c + 1];
@@ -221,14 +233,16 @@ __kernel void grid_run_counts(const GridInfo grid,
  * addresses: the far shell walks one range per row instead of hopping from run to run. One work-item
  * per cell. */
 __kernel void grid_runs(const GridInfo grid,
-                        __global const int* cell_start,   /* input: cells + 1 */
-                        __global const int* slot_element, /* input: per slot (grid_gather) */
-                        __global const float* slot_cx,
-                        __global const float* slot_cy,
-                        __global const float* slot_ct, /* input: per slot */
-                        __global const int* run_start, /* input: cells + 1 */
-                        __global int* run_element,     /* output: per run */
-                        __global float* runs) {        /* output: per run, four floats (a float4 to readers) */
+                        __global int* grid_index, /* input: cell_start, slot_element, run_start; output: run_element */
+                        __global const float* slot_centroids, /* input: x, y, t per slot */
+                        __global float* runs) {               /* output: per run, four floats (a float4 to readers) */
+  __global const int* cell_start = grid_index + AP_INDEX_CELL_START * grid.index_stride;
+  __global const int* slot_element = grid_index + AP_INDEX_SLOT_ELEMENT * grid.index_stride;
+  __global const int* run_start = grid_index + AP_INDEX_RUN_START * grid.index_stride;
+  __global int* run_element = grid_index + AP_INDEX_RUN_ELEMENT * grid.index_stride;
+  __global const float* slot_cx = slot_centroids + AP_X * grid.slot_stride;
+  __global const float* slot_cy = slot_centroids + AP_Y * grid.slot_stride;
+  __global const float* slot_ct = slot_centroids + AP_T * grid.slot_stride;
   const int c = get_global_id(0);
   if (c >= grid.cells) return;
   const int end = cell_start[c + 1];
@@ -259,13 +273,15 @@ __kernel void grid_runs(const GridInfo grid,
 
 /** Each boundary vertex's linear cell (as envelope_cells gives a centroid's) and a copy of the order
  * it is sorted from; one work-item per boundary vertex. */
-__kernel void boundary_cells(const GridInfo grid,       /* grid.triangles: the boundary vertices */
-                             __global const int* order, /* input: the boundary vertices, last order */
-                             __global const float* x,
-                             __global const float* y,
-                             __global const float* t,  /* input: positions per vertex */
-                             __global int* cell,       /* output: per boundary vertex */
-                             __global int* previous) { /* output: a copy of order */
+__kernel void boundary_cells(const GridInfo grid,             /* grid.triangles: the boundary vertices */
+                             const WorldInfo world,           /* input: positions' stride */
+                             __global const int* order,       /* input: the boundary vertices, last order */
+                             __global const float* positions, /* input: x, y, t per vertex */
+                             __global int* cell,              /* output: per boundary vertex */
+                             __global int* previous) {        /* output: a copy of order */
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
   const int i = get_global_id(0);
   if (i >= grid.triangles) return;
   const int v = order[i];

@@ -18,19 +18,21 @@ float growth_multiplier(const float gap, const float boost_gap, const float boos
 /** Slice s's proposed g; one work-item per slice. */
 __kernel void propose_growth(const WorldInfo world,
                              const ForceParams p,
-                             const int growing,                       /* input: 0 in the settling phase */
-                             const int hold_secondary,                /* input: 1 while secondary elements wait */
-                             __global const int* slice_begin,         /* input: slices + 1 */
-                             __global const int* slice_element,       /* input: per slice */
-                             __global const uchar* element_secondary, /* input: per element */
-                             __global const uchar* contact, /* input: AP_CONTACT_* per vertex, from step_forces */
-                             __global const float* closest, /* input: per vertex, from step_forces */
-                             __global const float* rest_copy_x,
-                             __global const float* rest_copy_y, /* input: rest copy per vertex */
+                             const int growing,                  /* input: 0 in the settling phase */
+                             const int hold_secondary,           /* input: 1 while secondary elements wait */
+                             __global const int* slice_topology, /* input: slice_begin, slice_element, ... */
+                             __global const uchar* contact,      /* input: AP_CONTACT_* per vertex, from step_forces */
+                             __global const float* closest,      /* input: per vertex, from step_forces */
+                             __global const float* vertex_rest,  /* input: rest copy per vertex */
                              __global const float* slice_rest_copy_cx,
                              __global const float* slice_rest_copy_cy, /* input: per slice */
                              __global const float* growth,             /* input: g per slice */
                              __global float* proposed) {               /* output: proposed g per slice */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const int* slice_element = slice_topology + AP_SLICES_ELEMENT * world.slice_stride;
+  __global const int* element_secondary = slice_topology + AP_SLICES_SECONDARY * world.slice_stride;
+  __global const float* rest_copy_x = vertex_rest + AP_REST_COPY_X * world.vertex_stride;
+  __global const float* rest_copy_y = vertex_rest + AP_REST_COPY_Y * world.vertex_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   uchar bits = 0;
@@ -62,11 +64,12 @@ __kernel void propose_growth(const WorldInfo world,
  * `changed` says whether it grew or shrank and whether a limit held it. */
 __kernel void grow_slices(const WorldInfo world,
                           const ForceParams p,
-                          __global const int* slice_element,       /* input: per slice */
-                          __global const int* element_slice_begin, /* input: elements + 1 */
-                          __global const float* proposed,          /* input: from propose_growth */
-                          __global float* growth,                  /* input/output: g per slice */
-                          __global uchar* changed) {               /* output: AP_GROWTH_* bits */
+                          __global const int* slice_topology, /* input: slice_element, element_slice_begin */
+                          __global const float* proposed,     /* input: from propose_growth */
+                          __global float* growth,             /* input/output: g per slice */
+                          __global uchar* changed) {          /* output: AP_GROWTH_* bits */
+  __global const int* slice_element = slice_topology + AP_SLICES_ELEMENT * world.slice_stride;
+  __global const int* element_slice_begin = slice_topology + AP_SLICES_ELEMENT_BEGIN * world.slice_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int e = slice_element[s];
@@ -93,17 +96,20 @@ __kernel void grow_slices(const WorldInfo world,
 /** Rest length of every CSR slot of vertex v whose spring has an end on a changed slice
  * (state.hpp: rest_copy_length, each end's slice scaled by its g about its rest copy centroid). */
 __kernel void update_rest_lengths(const WorldInfo world,
-                                  __global const int* slice,        /* input: per vertex */
-                                  __global const int* spring_begin, /* input: vertices + 1 */
-                                  __global const int* spring_other, /* input: per slot */
-                                  __global const uchar* changed,    /* input: per slice */
-                                  __global const float* growth,     /* input: g per slice */
-                                  __global const float* rest_copy_x,
-                                  __global const float* rest_copy_y,
-                                  __global const float* rest_copy_t, /* input: rest copy per vertex */
+                                  __global const int* vertex_topology, /* input: slice per vertex */
+                                  __global const int* springs,         /* input: CSR rows and the other ends */
+                                  __global const uchar* changed,       /* input: per slice */
+                                  __global const float* growth,        /* input: g per slice */
+                                  __global const float* vertex_rest,   /* input: rest copy per vertex */
                                   __global const float* slice_rest_copy_cx,
                                   __global const float* slice_rest_copy_cy, /* input: per slice */
                                   __global float* spring_rest) {            /* output: per slot */
+  __global const int* slice = vertex_topology + AP_TOPO_SLICE * world.vertex_stride;
+  __global const int* spring_begin = springs + AP_SPRINGS_BEGIN * world.spring_stride;
+  __global const int* spring_other = springs + AP_SPRINGS_OTHER * world.spring_stride;
+  __global const float* rest_copy_x = vertex_rest + AP_REST_COPY_X * world.vertex_stride;
+  __global const float* rest_copy_y = vertex_rest + AP_REST_COPY_Y * world.vertex_stride;
+  __global const float* rest_copy_t = vertex_rest + AP_REST_COPY_T * world.vertex_stride;
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const int sv = slice[v];

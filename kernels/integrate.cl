@@ -4,15 +4,18 @@
 /** One Euler step of vertex i. */
 __kernel void integrate(const WorldInfo world,
                         const ForceParams p,
-                        __global const float* fx,
-                        __global const float* fy,
-                        __global const float* ft, /* input: Eq. 7 */
-                        __global float* vx,
-                        __global float* vy,
-                        __global float* vt, /* input/output: velocities */
-                        __global float* x,
-                        __global float* y,
-                        __global float* t) { /* input/output: positions */
+                        __global const float* forces, /* input: Eq. 7, x, y, t */
+                        __global float* velocities,   /* input/output: x, y, t */
+                        __global float* positions) {  /* input/output: x, y, t */
+  __global const float* fx = forces + AP_X * world.vertex_stride;
+  __global const float* fy = forces + AP_Y * world.vertex_stride;
+  __global const float* ft = forces + AP_T * world.vertex_stride;
+  __global float* vx = velocities + AP_X * world.vertex_stride;
+  __global float* vy = velocities + AP_Y * world.vertex_stride;
+  __global float* vt = velocities + AP_T * world.vertex_stride;
+  __global float* x = positions + AP_X * world.vertex_stride;
+  __global float* y = positions + AP_Y * world.vertex_stride;
+  __global float* t = positions + AP_T * world.vertex_stride;
   const int i = get_global_id(0);
   if (i >= world.vertices) return;
   const float dt = p.dt, cap = p.velocity_cap;

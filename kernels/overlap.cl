@@ -75,25 +75,30 @@ curve_point_lanes(const CurveArrays curve, int lo, int hi, int k, const CurveBas
  * curve_value's p (towards the next slice) or q (towards the one before), the same operands. */
 __kernel void slice_boxes(
     const WorldInfo world,
-    __global const int* slice_begin,         /* input: slices + 1 */
-    __global const int* slice_boundary,      /* input: boundary vertices per slice */
-    __global const int* slice_element,       /* input: per slice */
-    __global const int* element_slice_begin, /* input: elements + 1 */
-    __global const float* x,
-    __global const float* y,         /* input: positions */
-    __global const float* t,         /* input */
-    __global const float* tangent_x, /* input: curve_tangents, per vertex */
-    __global const float* tangent_y, /* input */
-    const int mode,                  /* input: ForceParams.motion_curve */
-    __global float* handle_px,
-    __global float* handle_py, /* output on the spline: per boundary vertex, towards the next slice */
-    __global float* handle_qx,
-    __global float* handle_qy, /* output on the spline: per boundary vertex, towards the one before */
-    __global float* box_x0,
-    __global float* box_y0, /* output: per slice */
-    __global float* box_x1,
-    __global float* box_y1,  /* output: per slice */
-    __global float* box_t) { /* output: per slice */
+    __global const int* slice_topology, /* input: slice_begin, slice_boundary, slice_element, ... */
+    __global const float* positions,    /* input: x, y, t per vertex */
+    __global float* curve_planes,       /* input: tangents (curve_tangents); output on the spline: handles */
+    const int mode,                     /* input: ForceParams.motion_curve */
+    __global float* slice_geometry) {   /* output: the boxes and their t per slice */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const int* slice_boundary = slice_topology + AP_SLICES_BOUNDARY * world.slice_stride;
+  __global const int* slice_element = slice_topology + AP_SLICES_ELEMENT * world.slice_stride;
+  __global const int* element_slice_begin = slice_topology + AP_SLICES_ELEMENT_BEGIN * world.slice_stride;
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
+  /* The handles go towards the next slice (p) and the one before (q), per boundary vertex. */
+  __global const float* tangent_x = curve_planes + AP_CURVE_TANGENT_X * world.vertex_stride;
+  __global const float* tangent_y = curve_planes + AP_CURVE_TANGENT_Y * world.vertex_stride;
+  __global float* handle_px = curve_planes + AP_CURVE_HANDLE_PX * world.vertex_stride;
+  __global float* handle_py = curve_planes + AP_CURVE_HANDLE_PY * world.vertex_stride;
+  __global float* handle_qx = curve_planes + AP_CURVE_HANDLE_QX * world.vertex_stride;
+  __global float* handle_qy = curve_planes + AP_CURVE_HANDLE_QY * world.vertex_stride;
+  __global float* box_x0 = slice_geometry + AP_GEOM_X0 * world.slice_stride;
+  __global float* box_y0 = slice_geometry + AP_GEOM_Y0 * world.slice_stride;
+  __global float* box_x1 = slice_geometry + AP_GEOM_X1 * world.slice_stride;
+  __global float* box_y1 = slice_geometry + AP_GEOM_Y1 * world.slice_stride;
+  __global float* box_t = slice_geometry + AP_GEOM_T * world.slice_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   const int lo = slice_begin[s], count = slice_boundary[s];
@@ -320,7 +325,7 @@ AP_INLINE void overlap_point_element(int e,
                                      const CurveArrays curve,
                                      int mode,
                                      __global const float* growth,
-                                     __global const uchar* element_secondary,
+                                     __global const int* element_secondary,
                                      OverlapFound* r) {
   float w;
   const int s = overlap_slice_pair(e, start, pt, ex0, ex1, ey0, ey1, element_slice_begin, slice_t, box_x0, box_y0,
@@ -431,7 +436,7 @@ void overlap_points(int count,
                     const CurveArrays curve,
                     int mode,
                     __global const float* growth,
-                    __global const uchar* element_secondary,
+                    __global const int* element_secondary,
                     const OverlapGridInfo grid,
                     __global const int* grid_start,
                     __global const int* grid_elements,
@@ -505,7 +510,7 @@ uchar overlap_test(int v,
                    const CurveArrays curve,
                    int mode,
                    __global const float* growth,
-                   __global const uchar* element_secondary,
+                   __global const int* element_secondary,
                    const OverlapGridInfo grid,
                    __global const int* grid_start,
                    __global const int* grid_elements,

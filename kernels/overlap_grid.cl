@@ -34,15 +34,17 @@ long overlap_grid_axis(float span, float edge) { return (long)fmin(1024.0f, floo
  * a cell edge of their mean extent (the larger of x and y; t on its own), doubled until the cells are
  * no more than 8 per pair + 64 and no more than `cell_capacity`. A box that is not finite (a blown-up
  * state) leaves the grid without cells (nx = 0), as the reference does for NaN. */
-__kernel void overlap_grid_extent(const int pairs,
+__kernel void overlap_grid_extent(const WorldInfo world,
+                                  const int pairs,
                                   const int cell_capacity,               /* cells the buffers hold */
                                   __global const int* pair_slice,        /* input: lower slice per pair */
-                                  __global const float* box_x0,          /* input: slice_boxes */
-                                  __global const float* box_y0,          /* input */
-                                  __global const float* box_x1,          /* input */
-                                  __global const float* box_y1,          /* input */
-                                  __global const float* box_t,           /* input */
+                                  __global const float* slice_geometry,  /* input: slice_boxes */
                                   __global OverlapGridInfo* grid_info) { /* output: one */
+  __global const float* box_x0 = slice_geometry + AP_GEOM_X0 * world.slice_stride;
+  __global const float* box_y0 = slice_geometry + AP_GEOM_Y0 * world.slice_stride;
+  __global const float* box_x1 = slice_geometry + AP_GEOM_X1 * world.slice_stride;
+  __global const float* box_y1 = slice_geometry + AP_GEOM_Y1 * world.slice_stride;
+  __global const float* box_t = slice_geometry + AP_GEOM_T * world.slice_stride;
   __local float low[3][AP_LOCAL_SIZE], high[3][AP_LOCAL_SIZE], extent[3][AP_LOCAL_SIZE];
   __local int bad[AP_LOCAL_SIZE];
   const int item = get_local_id(0);
@@ -111,15 +113,17 @@ bool overlap_pair_cells(const OverlapGridInfo g, const float* b, int* c0, int* c
 }
 
 /** Counts, per cell, the pairs whose box meets it; one work-item per pair. */
-__kernel void overlap_grid_count(const int pairs,
-                                 __global const int* pair_slice, /* input: lower slice per pair */
-                                 __global const float* box_x0,   /* input: slice_boxes */
-                                 __global const float* box_y0,
-                                 __global const float* box_x1,
-                                 __global const float* box_y1,
-                                 __global const float* box_t,
+__kernel void overlap_grid_count(const WorldInfo world,
+                                 const int pairs,
+                                 __global const int* pair_slice,            /* input: lower slice per pair */
+                                 __global const float* slice_geometry,      /* input: slice_boxes */
                                  __global const OverlapGridInfo* grid_info, /* input: overlap_grid_extent */
                                  __global int* cell_count) {                /* in/out: per cell */
+  __global const float* box_x0 = slice_geometry + AP_GEOM_X0 * world.slice_stride;
+  __global const float* box_y0 = slice_geometry + AP_GEOM_Y0 * world.slice_stride;
+  __global const float* box_x1 = slice_geometry + AP_GEOM_X1 * world.slice_stride;
+  __global const float* box_y1 = slice_geometry + AP_GEOM_Y1 * world.slice_stride;
+  __global const float* box_t = slice_geometry + AP_GEOM_T * world.slice_stride;
   const int i = get_global_id(0);
   if (i >= pairs) return;
   float b[6];
@@ -135,20 +139,22 @@ __kernel void overlap_grid_count(const int pairs,
 /** Lists pair i's element in every cell its box meets, at slots claimed from the cells' cursors (in
  * no particular order: overlap_grid_order sorts them); nothing when the lists would outgrow
  * `capacity` entries. One work-item per pair. */
-__kernel void overlap_grid_scatter(const int pairs,
+__kernel void overlap_grid_scatter(const WorldInfo world,
+                                   const int pairs,
                                    const int cell_capacity,
                                    const int capacity,
-                                   __global const int* pair_slice,   /* input: lower slice per pair */
-                                   __global const int* pair_element, /* input: owner per pair */
-                                   __global const float* box_x0,     /* input: slice_boxes */
-                                   __global const float* box_y0,
-                                   __global const float* box_x1,
-                                   __global const float* box_y1,
-                                   __global const float* box_t,
+                                   __global const int* pair_slice,            /* input: lower slice per pair */
+                                   __global const int* pair_element,          /* input: owner per pair */
+                                   __global const float* slice_geometry,      /* input: slice_boxes */
                                    __global const OverlapGridInfo* grid_info, /* input: overlap_grid_extent */
                                    __global const int* cell_start,            /* input: cell_capacity + 1 */
                                    __global int* cursor,                      /* in/out: per cell */
                                    __global int* elements) {                  /* output: capacity */
+  __global const float* box_x0 = slice_geometry + AP_GEOM_X0 * world.slice_stride;
+  __global const float* box_y0 = slice_geometry + AP_GEOM_Y0 * world.slice_stride;
+  __global const float* box_x1 = slice_geometry + AP_GEOM_X1 * world.slice_stride;
+  __global const float* box_y1 = slice_geometry + AP_GEOM_Y1 * world.slice_stride;
+  __global const float* box_t = slice_geometry + AP_GEOM_T * world.slice_stride;
   const int i = get_global_id(0);
   if (i >= pairs || cell_start[cell_capacity] > capacity) return;
   float b[6];

@@ -238,73 +238,70 @@ void repulsion_sum(const GridInfo grid,
  * is near) and its overlap test (a vertex that overlaps gets no Eq. 1 force: Eq. 3 takes over).
  * One work-item per boundary vertex, so no work-item of a group idles through an interior vertex;
  * step_forces reads the results back per vertex. */
-__kernel void repulsion_force(const GridInfo grid,
-                              const ForceParams p,
-                              const int boundary_count,
-                              const int elements,
-                              __global const int* boundary_vertices, /* input: the boundary vertices */
-                              __global const float* x,
-                              __global const float* y,
-                              __global const float* t,             /* input */
-                              __global const int* element,         /* input: per vertex */
-                              __global const int* slice,           /* input: per vertex */
-                              __global const int* cell_start,      /* input: cells + 1 */
-                              __global const int* slot_element,    /* input: per grid slot (grid_gather) */
-                              __global const float* slot_vertices, /* input: per grid slot (grid_gather) */
-                              __global const float* slot_cx,
-                              __global const float* slot_cy,
-                              __global const float* slot_ct,
-                              __global const int* run_start,           /* input: cells + 1 (grid_runs) */
-                              __global const int* run_element,         /* input: per run (grid_runs) */
-                              __global const float4* runs,             /* input: per run (grid_runs) */
-                              __global const int* element_slice_begin, /* input: elements + 1 */
-                              __global const int* slice_begin,         /* input: slices + 1 */
-                              __global const int* slice_boundary,      /* input: per slice */
-                              __global const float* box_x0,
-                              __global const float* box_y0, /* input: slice_boxes */
-                              __global const float* box_x1,
-                              __global const float* box_y1,    /* input */
-                              __global const float* box_t,     /* input: slice_boxes' slice t */
-                              __global const float* tangent_x, /* input: curve_tangents, per vertex */
-                              __global const float* tangent_y, /* input: curve_tangents, per vertex */
-                              __global const float* handle_px,
-                              __global const float* handle_py, /* input: slice_boxes, per boundary vertex */
-                              __global const float* handle_qx,
-                              __global const float* handle_qy,         /* input: slice_boxes, per boundary vertex */
-                              __global const float* growth,            /* input: g per slice */
-                              __global const uchar* element_secondary, /* input: per element, 1 if secondary */
-                              __global float* rpl_x,
-                              __global float* rpl_y,
-                              __global float* rpl_t,   /* output: per vertex */
-                              __global float* closest, /* output: per vertex */
-                              __global uchar* contact, /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
-                              __global float* depth_x,
-                              __global float* depth_y,                      /* output: the way out when inside */
-                              __global const OverlapGridInfo* overlap_grid, /* the overlap test's broadphase */
-                              __global const int* overlap_start,            /* input: its cells + 1 */
-                              __global const int* overlap_elements) {       /* input: its element lists */
+__kernel void repulsion_force(
+    const GridInfo grid,
+    const ForceParams p,
+    const WorldInfo world,
+    __global const int* boundary_vertices,        /* input: world.boundaries of them */
+    __global const float* positions,              /* input: x, y, t */
+    __global const int* vertex_topology,          /* input: AP_TOPO_ELEMENT, AP_TOPO_SLICE */
+    __global const int* grid_index,               /* input: AP_INDEX_* */
+    __global const float* slot_vertices,          /* input: per grid slot (slot_positions) */
+    __global const float* slot_centroids,         /* input: per grid slot (grid_gather) */
+    __global const float4* runs,                  /* input: per run (grid_runs) */
+    __global const int* slice_topology,           /* input: AP_SLICES_* */
+    __global const float* slice_geometry,         /* input: AP_GEOM_X0 … AP_GEOM_T, slice_boxes */
+    __global const float* curve_planes,           /* input: AP_CURVE_*, tangents and handles */
+    __global const float* growth,                 /* input: g per slice */
+    __global float* repulsion,                    /* output: AP_RPL_* per boundary vertex */
+    __global uchar* repulsion_contact,            /* output: AP_CONTACT_OVERLAP / _INSIDE / _YIELD / _BLOCK */
+    __global const OverlapGridInfo* overlap_grid, /* the overlap test's broadphase */
+    __global const int* overlap_start,            /* input: its cells + 1 */
+    __global const int* overlap_elements) {       /* input: its element lists */
   const int i = get_global_id(0);
-  if (i >= boundary_count) return;
+  if (i >= world.boundaries) return;
+  const int vs = world.vertex_stride, ss = world.slice_stride;
+  __global const float* x = positions + AP_X * vs;
+  __global const float* y = positions + AP_Y * vs;
+  __global const float* t = positions + AP_T * vs;
+  __global const int* element = vertex_topology + AP_TOPO_ELEMENT * vs;
+  __global const int* cell_start = grid_index + AP_INDEX_CELL_START * grid.index_stride;
+  __global const int* slot_element = grid_index + AP_INDEX_SLOT_ELEMENT * grid.index_stride;
+  __global const int* run_start = grid_index + AP_INDEX_RUN_START * grid.index_stride;
+  __global const int* run_element = grid_index + AP_INDEX_RUN_ELEMENT * grid.index_stride;
+  __global const float* slot_cx = slot_centroids + AP_X * grid.slot_stride;
+  __global const float* slot_cy = slot_centroids + AP_Y * grid.slot_stride;
+  __global const float* slot_ct = slot_centroids + AP_T * grid.slot_stride;
   const int v = boundary_vertices[i];
   const float px = x[v], py = y[v], pt = t[v];
   const int own = element[v];
   float way_out_x, way_out_y;
-  const CurveArrays curve = {x, y, tangent_x, tangent_y, handle_px, handle_py, handle_qx, handle_qy};
-  const uchar bits =
-      overlap_test(v, p.interval_points, elements, element, slice, element_slice_begin, slice_begin, slice_boundary,
-                   box_x0, box_y0, box_x1, box_y1, box_t, t, curve, p.motion_curve, growth, element_secondary,
-                   *overlap_grid, overlap_start, overlap_elements, &way_out_x, &way_out_y);
+  const CurveArrays curve = {x,
+                             y,
+                             curve_planes + AP_CURVE_TANGENT_X * vs,
+                             curve_planes + AP_CURVE_TANGENT_Y * vs,
+                             curve_planes + AP_CURVE_HANDLE_PX * vs,
+                             curve_planes + AP_CURVE_HANDLE_PY * vs,
+                             curve_planes + AP_CURVE_HANDLE_QX * vs,
+                             curve_planes + AP_CURVE_HANDLE_QY * vs};
+  const uchar bits = overlap_test(v, p.interval_points, world.elements, element, vertex_topology + AP_TOPO_SLICE * vs,
+                                  slice_topology + AP_SLICES_ELEMENT_BEGIN * ss, slice_topology + AP_SLICES_BEGIN * ss,
+                                  slice_topology + AP_SLICES_BOUNDARY * ss, slice_geometry + AP_GEOM_X0 * ss,
+                                  slice_geometry + AP_GEOM_Y0 * ss, slice_geometry + AP_GEOM_X1 * ss,
+                                  slice_geometry + AP_GEOM_Y1 * ss, slice_geometry + AP_GEOM_T * ss, t, curve,
+                                  p.motion_curve, growth, slice_topology + AP_SLICES_SECONDARY * ss, *overlap_grid,
+                                  overlap_start, overlap_elements, &way_out_x, &way_out_y);
   const bool overlapping = bits != 0;
   const float eps = p.repulsion_epsilon;
   float sx, sy, st, closest2;
   repulsion_sum(grid, cell_start, slot_element, slot_vertices, slot_cx, slot_cy, slot_ct, run_start, run_element, runs,
                 own, 0, px, py, pt, eps, &sx, &sy, &st, &closest2);
   const float k = p.k_repulsion;
-  rpl_x[v] = overlapping ? 0.0f : k * sx;
-  rpl_y[v] = overlapping ? 0.0f : k * sy;
-  rpl_t[v] = overlapping ? 0.0f : k * st;
-  closest[v] = sqrt(closest2);
-  contact[v] = bits;
-  depth_x[v] = way_out_x;
-  depth_y[v] = way_out_y;
+  repulsion[AP_RPL_X * vs + v] = overlapping ? 0.0f : k * sx;
+  repulsion[AP_RPL_Y * vs + v] = overlapping ? 0.0f : k * sy;
+  repulsion[AP_RPL_T * vs + v] = overlapping ? 0.0f : k * st;
+  repulsion[AP_RPL_CLOSEST * vs + v] = sqrt(closest2);
+  repulsion_contact[v] = bits;
+  repulsion[AP_RPL_DEPTH_X * vs + v] = way_out_x;
+  repulsion[AP_RPL_DEPTH_Y * vs + v] = way_out_y;
 }

@@ -73,14 +73,122 @@ typedef float ap_float;
 #define AP_SLOT_CY 7
 #define AP_SLOT_CT 8
 
+/* Grouped buffers: one buffer holds the planes of a group, all of one type, plane k from element
+ * k * stride on, the group's stride (WorldInfo, GridInfo) padded to the device's base-address alignment
+ * so that every plane starts as aligned as a buffer of its own (src/solver/opencl/plane_buffer.hpp;
+ * docs/architecture.md, "Layout shared by host and kernels"). Every kernel that reads or writes a plane
+ * takes the whole group and names its planes once at its top, `x = positions + AP_X * world.vertex_stride`,
+ * so its arithmetic reads one array per quantity; the host never binds a plane on its own. The planes of
+ * each group, by index: */
+/* positions, velocities, forces (float, vertex_stride): x, y, t. */
+#define AP_X 0
+#define AP_Y 1
+#define AP_T 2
+/* vertex_topology (int, vertex_stride): per vertex its element, slice, VertexFlag bits and target point
+ * (or -1). */
+#define AP_TOPO_ELEMENT 0
+#define AP_TOPO_SLICE 1
+#define AP_TOPO_FLAGS 2
+#define AP_TOPO_TARGET 3
+#define AP_TOPO_PLANES 4
+/* vertex_rest (float, vertex_stride): the rest state per vertex, its t and direction from the slice
+ * centroid (Eq. 4, 5), and the rest copy (§5.3). */
+#define AP_REST_T 0
+#define AP_REST_DIR_X 1
+#define AP_REST_DIR_Y 2
+#define AP_REST_COPY_X 3
+#define AP_REST_COPY_Y 4
+#define AP_REST_COPY_T 5
+#define AP_REST_PLANES 6
+/* springs (int, spring_stride): the CSR rows, vertices + 1, and per slot the other end and the
+ * SpringClass. */
+#define AP_SPRINGS_BEGIN 0
+#define AP_SPRINGS_OTHER 1
+#define AP_SPRINGS_CLASS 2
+#define AP_SPRINGS_PLANES 3
+/* triangles (int, triangle_stride): the slice triangles' corners, the incident-triangle rows (vertices
+ * + 1) and their list. */
+#define AP_TRIS_A 0
+#define AP_TRIS_B 1
+#define AP_TRIS_C 2
+#define AP_TRIS_BEGIN 3
+#define AP_TRIS_LIST 4
+#define AP_TRIS_PLANES 5
+/* slice_topology (int, slice_stride): slice_begin (slices + 1), slice_boundary, slice_element,
+ * element_slice_begin (elements + 1) and element_secondary (per element, 1 if secondary). */
+#define AP_SLICES_BEGIN 0
+#define AP_SLICES_BOUNDARY 1
+#define AP_SLICES_ELEMENT 2
+#define AP_SLICES_ELEMENT_BEGIN 3
+#define AP_SLICES_SECONDARY 4
+#define AP_SLICES_PLANES 5
+/* slice_geometry (float, slice_stride): the centroids (slice_centroids) and boxes with their t
+ * (slice_boxes). */
+#define AP_GEOM_CX 0
+#define AP_GEOM_CY 1
+#define AP_GEOM_X0 2
+#define AP_GEOM_Y0 3
+#define AP_GEOM_X1 4
+#define AP_GEOM_Y1 5
+#define AP_GEOM_T 6
+#define AP_GEOM_PLANES 7
+/* curve (float, vertex_stride): the tangents (curve_tangents) and the Bézier handles of the boundary
+ * vertices towards the next slice (P) and the one before (Q) (slice_boxes). */
+#define AP_CURVE_TANGENT_X 0
+#define AP_CURVE_TANGENT_Y 1
+#define AP_CURVE_HANDLE_PX 2
+#define AP_CURVE_HANDLE_PY 3
+#define AP_CURVE_HANDLE_QX 4
+#define AP_CURVE_HANDLE_QY 5
+#define AP_CURVE_PLANES 6
+/* repulsion (float, vertex_stride): what repulsion_force hands on per boundary vertex: Eq. 1, the
+ * nearest other element's distance and the overlap test's way out. Its contact bits are a uchar buffer
+ * of their own. */
+#define AP_RPL_X 0
+#define AP_RPL_Y 1
+#define AP_RPL_T 2
+#define AP_RPL_CLOSEST 3
+#define AP_RPL_DEPTH_X 4
+#define AP_RPL_DEPTH_Y 5
+#define AP_RPL_PLANES 6
+/* wall (float, vertex_stride): the wall's mirror image (wall_mirror_force) and the container query's
+ * squared distance and nearest point, written by wall_mirror_force or step_forces, whichever makes the
+ * query; whether the vertex is inside is a uchar buffer of its own. */
+#define AP_WALL_MIRROR_X 0
+#define AP_WALL_MIRROR_Y 1
+#define AP_WALL_MIRROR_T 2
+#define AP_WALL_D2 3
+#define AP_WALL_QX 4
+#define AP_WALL_QY 5
+#define AP_WALL_PLANES 6
+/* targets (float, target_stride): the target points' x, y, t (AP_X, AP_Y, AP_T). */
+/* segments (float, segment_stride): the container's segments, a to b. */
+#define AP_SEG_AX 0
+#define AP_SEG_AY 1
+#define AP_SEG_BX 2
+#define AP_SEG_BY 3
+#define AP_SEG_PLANES 4
+/* grid_index (int, GridInfo.index_stride): the collision grid's cell ranges (cells + 1), each slot's
+ * element (grid_gather; then AP_LANES spare slots), the far field's run ranges (cells + 1) and each
+ * run's element (grid_runs). */
+#define AP_INDEX_CELL_START 0
+#define AP_INDEX_SLOT_ELEMENT 1
+#define AP_INDEX_RUN_START 2
+#define AP_INDEX_RUN_ELEMENT 3
+#define AP_INDEX_PLANES 4
+/* slot_centroids (float, GridInfo.slot_stride): each slot's triangle centroid (grid_gather), x, y, t
+ * (AP_X, AP_Y, AP_T). */
+
 /* The collision grid (CollisionGrid, include/animpak/solver/grids.hpp, without its arrays), passed to every
  * grid kernel. */
 typedef struct {
-  ap_int n;         /* cells per axis */
-  ap_float cell;    /* cell edge */
-  ap_int triangles; /* envelope triangles */
-  ap_int cells;     /* n * n * n */
-  ap_int far_cells; /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
+  ap_int n;            /* cells per axis */
+  ap_float cell;       /* cell edge */
+  ap_int triangles;    /* envelope triangles */
+  ap_int cells;        /* n * n * n */
+  ap_int far_cells;    /* 1: the far shell reads the cell aggregates (grid_runs); 0: every centroid */
+  ap_int index_stride; /* grid_index's planes */
+  ap_int slot_stride;  /* slot_centroids' planes */
 } GridInfo;
 
 /* The overlap test's broadphase (OverlapGrid, include/animpak/solver/grids.hpp, without its arrays), built
@@ -131,11 +239,19 @@ typedef struct {
   ap_float pad_boost;          /* unused: keeps the size a multiple of 8 bytes */
 } ForceParams;
 
-/* Sizes of the world, passed to every kernel that walks more than one array. */
+/* Sizes of the world and the strides of its grouped buffers, passed to every kernel that walks more
+ * than one array. */
 typedef struct {
   ap_int vertices, slices, elements, loops;
-  ap_int segments;  /* container segments */
-  ap_int breakdown; /* 1: the forces kernel also writes every force separately (equivalence tests) */
+  ap_int segments;        /* container segments */
+  ap_int breakdown;       /* 1: the forces kernel also writes every force separately (equivalence tests) */
+  ap_int boundaries;      /* boundary vertices: the repulsion and wall-image kernels' work-items */
+  ap_int vertex_stride;   /* positions, velocities, forces, vertex_topology, vertex_rest, curve, repulsion, wall */
+  ap_int slice_stride;    /* slice_topology, slice_geometry */
+  ap_int spring_stride;   /* springs */
+  ap_int triangle_stride; /* triangles */
+  ap_int target_stride;   /* targets */
+  ap_int segment_stride;  /* segments */
 } WorldInfo;
 
 /* Force components in the breakdown buffer, each 3 * vertices floats (x, then y, then t). */

@@ -4,20 +4,23 @@
 /** Slice s's closest gap (min in vertex order), its overlapping and outside vertices and its first
  * non-finite vertex. */
 __kernel void slice_statistics(const WorldInfo world,
-                               __global const int* slice_begin, /* input: slices + 1 */
-                               __global const float* closest,   /* input: per vertex, from step_forces */
-                               __global const uchar* contact,   /* input: AP_CONTACT_* per vertex */
-                               __global const uchar* changed,   /* input: AP_GROWTH_* per slice */
-                               __global const float* x,
-                               __global const float* y,
-                               __global const float* t, /* input */
-                               __global const float* vx,
-                               __global const float* vy,
-                               __global const float* vt,    /* input */
-                               __global float* slice_gap,   /* output: per slice */
-                               __global int* slice_overlap, /* output: overlapping vertices per slice */
+                               __global const int* slice_topology, /* input: slice_begin */
+                               __global const float* closest,      /* input: per vertex, from step_forces */
+                               __global const uchar* contact,      /* input: AP_CONTACT_* per vertex */
+                               __global const uchar* changed,      /* input: AP_GROWTH_* per slice */
+                               __global const float* positions,    /* input: x, y, t */
+                               __global const float* velocities,   /* input: x, y, t */
+                               __global float* slice_gap,          /* output: per slice */
+                               __global int* slice_overlap,        /* output: overlapping vertices per slice */
                                __global int* slice_outside, /* output: vertices outside the container per slice */
                                __global int* slice_bad) {   /* output: first non-finite vertex, or -1 */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
+  __global const float* vx = velocities + AP_X * world.vertex_stride;
+  __global const float* vy = velocities + AP_Y * world.vertex_stride;
+  __global const float* vt = velocities + AP_T * world.vertex_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   float gap = INFINITY;

@@ -3,12 +3,15 @@
 
 /** Mean x, y of every slice's vertices in index order; one work-item per slice. */
 __kernel void slice_centroids(
-    const WorldInfo world,           /* input */
-    __global const int* slice_begin, /* input: slice s holds [slice_begin[s], slice_begin[s+1]) */
-    __global const float* x,         /* input: positions */
-    __global const float* y,         /* input */
-    __global float* cx,              /* output: centroid per slice */
-    __global float* cy) {            /* output */
+    const WorldInfo world,              /* input */
+    __global const int* slice_topology, /* input: slice s holds [slice_begin[s], slice_begin[s+1]) */
+    __global const float* positions,    /* input: x, y, t per vertex */
+    __global float* slice_geometry) {   /* output: centroid per slice */
+  __global const int* slice_begin = slice_topology + AP_SLICES_BEGIN * world.slice_stride;
+  __global const float* x = positions + AP_X * world.vertex_stride;
+  __global const float* y = positions + AP_Y * world.vertex_stride;
+  __global float* slice_cx = slice_geometry + AP_GEOM_CX * world.slice_stride;
+  __global float* slice_cy = slice_geometry + AP_GEOM_CY * world.slice_stride;
   const int s = get_global_id(0);
   if (s >= world.slices) return;
   float sx = 0.0f, sy = 0.0f;
@@ -17,11 +20,11 @@ __kernel void slice_centroids(
     sy = sy + y[v];
   }
   const float count = (float)(slice_begin[s + 1] - slice_begin[s]);
-  cx[s] = 0.0f;
-  cy[s] = 0.0f;
+  slice_cx[s] = 0.0f;
+  slice_cy[s] = 0.0f;
   if (count > 0.0f) {
-    cx[s] = sx / count;
-    cy[s] = sy / count;
+    slice_cx[s] = sx / count;
+    slice_cy[s] = sy / count;
   }
 }
 

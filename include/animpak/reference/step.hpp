@@ -6,13 +6,29 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
+#include "animpak/reference/boundary.hpp"
+#include "animpak/reference/overlap.hpp"
 #include "animpak/solver/grids.hpp"
 #include "animpak/solver/step.hpp"
 #include "animpak/state.hpp"
 #include "animpak/step_params.hpp"
 
 namespace animpak::reference {
+
+/// What a step reads besides the forces for one vertex (growth, §5.3, and the statistics).
+struct ContactGap {
+  /// For a boundary vertex, the distance to the nearest other element or container wall (the slice gap
+  /// of §5.3 counts the wall as a neighbour), 0 when it overlaps; +inf for interior vertices.
+  float closest = std::numeric_limits<float>::infinity();
+  std::uint8_t contact = 0;  ///< ContactBit flags
+};
+
+/// Vertex v's ContactGap from the step's queries: the overlap test, the nearest other element's
+/// distance (`nearest`, RepulsionResult::closest) and the container query. contact.cpp; kernels/contact.cl.
+ContactGap contact_gap(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v,
+                       const OverlapResult& overlap, float nearest, const ContainerQuery& wall);
 
 /// Eq. 7 for every vertex from one snapshot of positions; with `out`, every force apart too. forces.cpp.
 StepForces step_forces(const Topology& topo, const SimState& state, const ForceParams& params,

@@ -10,8 +10,8 @@
 namespace animpak::opencl {
 
 BoundaryOrder::BoundaryOrder(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
-                             std::vector<std::int32_t> boundary, const GridInfo& grid, const cl::Buffer& x,
-                             const cl::Buffer& y, const cl::Buffer& t, bool on_device)
+                             std::vector<std::int32_t> boundary, const GridInfo& grid, const WorldInfo& world,
+                             const cl::Buffer& positions, bool on_device)
     : on_device_(on_device),
       count_(static_cast<std::int32_t>(boundary.size())),
       grid_(grid),
@@ -31,10 +31,16 @@ BoundaryOrder::BoundaryOrder(const cl::Context& context, const cl::CommandQueue&
   sorted_buf_ = ints(per_vertex, "boundary_sorted");
   start_buf_ = ints(static_cast<std::size_t>(grid_.cells) + 1, "boundary_cell_start");
   cells_ = Kernel(program, "boundary_cells");
-  cells_.bind(grid_, order_, x, y, t, cell_, previous_);
-  sort_ = DeviceCountingSort(context, program, count_, grid_.cells, cell_, start_buf_, sorted_buf_, "order: ");
+  cells_.bind({{"grid", grid_},
+               {"world", world},
+               {"order", order_},
+               {"positions", positions},
+               {"cell", cell_},
+               {"previous", previous_}});
+  sort_ =
+      DeviceCountingSort(context, program, count_, grid_.cells, cell_, StartPlane{start_buf_}, sorted_buf_, "order: ");
   gather_ = Kernel(program, "boundary_gather");
-  gather_.bind(grid_, sorted_buf_, previous_, order_);
+  gather_.bind({{"grid", grid_}, {"sorted", sorted_buf_}, {"previous", previous_}, {"order", order_}});
 }
 
 std::array<Launch, 9> BoundaryOrder::launches() {

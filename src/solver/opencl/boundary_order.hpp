@@ -20,10 +20,10 @@ class BoundaryOrder {
  public:
   BoundaryOrder() = default;
   /// The boundary vertices in `boundary`'s order, uploaded; on the device, its sort's kernels bound to
-  /// the positions x, y, t and the collision grid's shape `grid`.
+  /// the positions group (its planes `world.vertex_stride` apart) and the collision grid's shape `grid`.
   BoundaryOrder(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
-                std::vector<std::int32_t> boundary, const GridInfo& grid, const cl::Buffer& x, const cl::Buffer& y,
-                const cl::Buffer& t, bool on_device);
+                std::vector<std::int32_t> boundary, const GridInfo& grid, const WorldInfo& world,
+                const cl::Buffer& positions, bool on_device);
   BoundaryOrder(const BoundaryOrder&) = delete;
   BoundaryOrder& operator=(const BoundaryOrder&) = delete;
   BoundaryOrder(BoundaryOrder&&) = default;

@@ -4,7 +4,7 @@
 // entries) and the item indices by cell, increasing within a cell (`sorted`): the same arrays as the
 // host's. The collision grid sorts its envelope triangles with one (GPUs), the repulsion order its
 // boundary vertices with another (boundary_order.hpp); the far field's runs are packed by a scan
-// (opencl_backend.cpp).
+// (grid_schedule.cpp).
 #pragma once
 
 #include <array>
@@ -15,6 +15,15 @@
 
 namespace animpak::opencl {
 
+/// Where a scan writes its cell ranges: plane `plane` of `buffer`, planes `stride` ints apart (a grouped
+/// buffer's, such as grid_index's cell or run ranges; plane 0 and stride 0 for a buffer of its own). The
+/// kernels take the whole buffer and form the plane themselves (kernels/grid.cl, grid_scan_cells).
+struct StartPlane {
+  cl::Buffer buffer;
+  cl_int plane = 0;
+  std::int32_t stride = 0;
+};
+
 /// The exclusive scan of `cells` counts on the device (grid_block_sums, grid_scan_blocks, grid_scan_cells):
 /// `start` gets cells + 1 entries, the total last, and its own `cursor` a copy of the first `cells`
 /// (the counting sort's scatter takes its slots from it).
@@ -22,7 +31,7 @@ class DeviceScan {
  public:
   DeviceScan() = default;
   DeviceScan(const cl::Context& context, const cl::Program& program, std::int32_t cells, const cl::Buffer& count,
-             const cl::Buffer& start, const std::string& label = "");
+             const StartPlane& start, const std::string& label = "");
 
   /// The scan's launches, in order: block sums, their scan in one work-group, then each block's cells.
   std::array<Launch, 3> launches();
@@ -41,7 +50,7 @@ class DeviceCountingSort {
   /// counts and a scan of its own; `label`, when not empty, prefixes its kernels' names in
   /// the profile ("order: grid_count").
   DeviceCountingSort(const cl::Context& context, const cl::Program& program, std::int32_t items, std::int32_t cells,
-                     const cl::Buffer& keys, const cl::Buffer& start, const cl::Buffer& sorted,
+                     const cl::Buffer& keys, const StartPlane& start, const cl::Buffer& sorted,
                      const std::string& label = "");
 
   /// The sort's launches, in order: count, scan, scatter, then each cell's range put in increasing order.

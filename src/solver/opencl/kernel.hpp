@@ -1,11 +1,15 @@
-// A named kernel: arguments bound once by position, launches at the one fixed local size with the
-// global size padded (the kernels guard `if (i >= n) return;`), each launch's event kept for timing.
+// A named kernel: arguments bound by name through the parameter table (kernel_args.hpp), launches at
+// the one fixed local size with the global size padded (the kernels guard `if (i >= n) return;`), each
+// launch's event kept for timing.
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "cl_host.hpp"
+#include "kernel_args.hpp"
 
 namespace animpak::opencl {
 
@@ -15,23 +19,29 @@ class Kernel {
   /// `label`, when given, names it in the profile (pack --profile) in place of its OpenCL name: one
   /// kernel bound twice, to different buffers, then shows as two rows.
   Kernel(const cl::Program& program, const char* name, const char* label = nullptr)
-      : name_(label != nullptr ? label : name) {
+      : name_(label != nullptr ? label : name), parameters_(&kernel_parameters(name)) {
     cl_int err = CL_SUCCESS;
     kernel_ = cl::Kernel(program, name, &err);
     check(err, std::string("clCreateKernel(") + name + ")");
   }
 
-  /// Sets arguments 0, 1, ... in order; returns how many were set.
-  template <typename... Args>
-  cl_uint bind(const Args&... args) {
-    cl_uint index = 0;
-    (set(index++, args), ...);
-    return index;
+  /// Sets every argument from the value of its parameter's name in `values` (the table's row);
+  /// std::invalid_argument naming the kernel and parameter when `values` has none.
+  void bind(const ArgValues& values) {
+    for (std::size_t i = 0; i < parameters_->names.size(); ++i) {
+      const std::string_view name = parameters_->names[i];
+      const Arg* arg = values.find(name);
+      if (arg == nullptr)
+        throw std::invalid_argument("kernel " + std::string(parameters_->kernel) + ": no value for its argument '" +
+                                    std::string(name) + "' where it is bound; add one of that name");
+      arg->apply(kernel_, static_cast<cl_uint>(i), describe(name));
+    }
   }
 
+  /// Sets the argument `name` (a parameter of the table's row) to `value`.
   template <typename T>
-  void set(cl_uint index, const T& value) {
-    check(kernel_.setArg(index, value), "clSetKernelArg(" + name_ + ", " + std::to_string(index) + ")");
+  void set(std::string_view name, const T& value) {
+    Arg(name, value).apply(kernel_, index(name), describe(name));
   }
 
   /// Enqueues `items` work-items (nothing for 0) and returns the launch's event.
@@ -55,7 +65,16 @@ class Kernel {
   void set_phase(const char* phase) { phase_ = phase; }
 
  private:
+  cl_uint index(std::string_view name) const {
+    for (std::size_t i = 0; i < parameters_->names.size(); ++i)
+      if (parameters_->names[i] == name) return static_cast<cl_uint>(i);
+    throw std::invalid_argument("kernel " + std::string(parameters_->kernel) + " has no argument '" +
+                                std::string(name) + "' (src/solver/opencl/kernel_args.cpp)");
+  }
+  std::string describe(std::string_view name) const { return name_ + ", " + std::string(name); }
+
   std::string name_;
+  const KernelParameters* parameters_ = nullptr;
   cl::Kernel kernel_;
   double seconds_ = 0.0;
   std::uint64_t launches_ = 0;

@@ -11,11 +11,13 @@
 namespace animpak::opencl {
 
 static_assert(sizeof(ap_int) == sizeof(cl_int) && sizeof(ap_float) == sizeof(cl_float));
-static_assert(sizeof(GridInfo) == 20 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12 &&
-              offsetof(GridInfo, far_cells) == 16);
+static_assert(sizeof(GridInfo) == 28 && offsetof(GridInfo, cell) == 4 && offsetof(GridInfo, cells) == 12 &&
+              offsetof(GridInfo, far_cells) == 16 && offsetof(GridInfo, slot_stride) == 24);
 static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, nx) == 12 &&
               offsetof(ContainerIndexInfo, cell_segments) == 28);
-static_assert(sizeof(WorldInfo) == 24 && offsetof(WorldInfo, breakdown) == 20);
+static_assert(sizeof(WorldInfo) == 52 && offsetof(WorldInfo, breakdown) == 20 &&
+              offsetof(WorldInfo, boundaries) == 24 && offsetof(WorldInfo, vertex_stride) == 28 &&
+              offsetof(WorldInfo, segment_stride) == 48);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
 static_assert(sizeof(ForceParams) == 34 * 4 && offsetof(ForceParams, k_spring) == 12 &&
@@ -44,7 +46,7 @@ ContainerIndexInfo container_index_info(const ContainerIndex& index) {
 }
 
 GridInfo grid_info(const Params& params, std::int32_t triangles) {
-  GridInfo g{};
+  GridInfo g{};  // the strides of its grouped buffers come with the device (with_grid_strides)
   g.n = reference::grid_cells_per_axis(params.forces.cell_size);
   g.cell = static_cast<float>(params.forces.cell_size);
   g.triangles = triangles;

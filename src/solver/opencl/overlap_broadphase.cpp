@@ -17,11 +17,9 @@ std::size_t first_capacity(std::int32_t pairs) { return static_cast<std::size_t>
 }  // namespace
 
 OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::CommandQueue& queue,
-                                     const cl::Program& program, const Topology& topo, const ScratchBuffers& scratch,
-                                     bool on_device)
-    : on_device_(on_device),
-      context_(context),
-      boxes_{scratch.box_x0, scratch.box_y0, scratch.box_x1, scratch.box_y1, scratch.box_t} {
+                                     const cl::Program& program, const Topology& topo, const WorldInfo& world,
+                                     const ScratchBuffers& scratch, bool on_device)
+    : on_device_(on_device), context_(context) {
   // The slice pairs in increasing slice order (hence element order), as reference::build_overlap_grid.
   std::vector<std::int32_t> pair_slice, pair_element;
   for (std::int32_t e = 0; e < topo.element_count(); ++e)
@@ -48,21 +46,35 @@ OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::Comma
   block_sum_ = make_buffer(context, CL_MEM_READ_WRITE, sizeof(std::int32_t) * blocks, "overlap_scan_blocks");
   total_ = upload_buffer(context, queue, std::vector<std::int32_t>{0}, "overlap_total");  // no lists before a build
   // The collision grid's scan kernels (grid.cl) run over the cell capacity: a GridInfo with just that.
-  const GridInfo scan{0, 1.0f, pairs_, cell_capacity_, 0};
+  const GridInfo scan{0, 1.0f, pairs_, cell_capacity_, 0, 0, 0};
   extent_ = Kernel(program, "overlap_grid_extent");
-  extent_.bind(pairs_, cell_capacity_, pair_slice_, scratch.box_x0, scratch.box_y0, scratch.box_x1, scratch.box_y1,
-               scratch.box_t, info_);
+  values_ = ArgValues{{"world", world}, {"slice_geometry", scratch.slice_geometry.buffer()}};
+  for (const Arg& a : std::initializer_list<Arg>{{"pairs", pairs_},
+                                                 {"cell_capacity", cell_capacity_},
+                                                 {"pair_slice", pair_slice_},
+                                                 {"pair_element", pair_element_},
+                                                 {"grid_info", info_},
+                                                 {"cell_count", count_},
+                                                 {"cell_start", start_},
+                                                 {"cursor", cursor_},
+                                                 {"total", total_}})
+    values_.add(a);
+  extent_.bind(values_);
   clear_ = Kernel(program, "grid_clear");
-  clear_.bind(scan, count_);
+  clear_.bind({{"grid", scan}, {"cell_count", count_}});
   count_kernel_ = Kernel(program, "overlap_grid_count");
-  count_kernel_.bind(pairs_, pair_slice_, scratch.box_x0, scratch.box_y0, scratch.box_x1, scratch.box_y1, scratch.box_t,
-                     info_, count_);
+  count_kernel_.bind(values_);
   block_sums_ = Kernel(program, "grid_block_sums");
-  block_sums_.bind(scan, count_, block_sum_);
+  block_sums_.bind({{"grid", scan}, {"cell_count", count_}, {"block_sum", block_sum_}});
   scan_blocks_ = Kernel(program, "grid_scan_blocks");
-  scan_blocks_.bind(scan, block_sum_);
+  scan_blocks_.bind({{"grid", scan}, {"block_sum", block_sum_}});
   scan_cells_ = Kernel(program, "grid_scan_cells");
-  scan_cells_.bind(scan, count_, block_sum_, start_, cursor_);
+  scan_cells_.bind({{"grid", scan},
+                    {"start_plane", 0},
+                    {"cell_count", count_},
+                    {"block_start", block_sum_},
+                    {"starts", start_},
+                    {"cursor", cursor_}});
   scatter_ = Kernel(program, "overlap_grid_scatter");
   order_ = Kernel(program, "overlap_grid_order");
   bind_lists();
@@ -70,9 +82,10 @@ OverlapBroadphase::OverlapBroadphase(const cl::Context& context, const cl::Comma
 
 void OverlapBroadphase::bind_lists() {
   const cl_int capacity = static_cast<cl_int>(capacity_);
-  scatter_.bind(pairs_, cell_capacity_, capacity, pair_slice_, pair_element_, boxes_[0], boxes_[1], boxes_[2],
-                boxes_[3], boxes_[4], info_, start_, cursor_, elements_);
-  order_.bind(cell_capacity_, capacity, start_, elements_, info_, total_);
+  values_.add({"capacity", capacity});
+  values_.add({"elements", elements_});
+  scatter_.bind(values_);
+  order_.bind(values_);
 }
 
 std::array<Launch, 8> OverlapBroadphase::launches() {
@@ -107,10 +120,16 @@ void OverlapBroadphase::upload(const cl::CommandQueue& queue, const Topology& to
   put(elements_, capacity_, host_.elements, "overlap_elements");
 }
 
-void OverlapBroadphase::bind(Kernel& repulsion, cl_uint first) const {
-  repulsion.set(first, info_);
-  repulsion.set(first + 1, start_);
-  repulsion.set(first + 2, elements_);
+void OverlapBroadphase::add_values(ArgValues& values) const {
+  values.add({"overlap_grid", info_});
+  values.add({"overlap_start", start_});
+  values.add({"overlap_elements", elements_});
+}
+
+void OverlapBroadphase::bind(Kernel& repulsion) const {
+  repulsion.set("overlap_grid", info_);
+  repulsion.set("overlap_start", start_);
+  repulsion.set("overlap_elements", elements_);
 }
 
 void OverlapBroadphase::make_room(std::int32_t total) {

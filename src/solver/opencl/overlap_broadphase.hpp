@@ -20,9 +20,10 @@ class OverlapBroadphase {
  public:
   OverlapBroadphase() = default;
   /// The buffers for `topo`'s slice pairs, and on the device its kernels bound to the slice boxes in
-  /// `scratch` (slice_boxes fills them before each build).
+  /// `scratch`'s slice_geometry, its planes `world.slice_stride` apart (slice_boxes fills them before each
+  /// build).
   OverlapBroadphase(const cl::Context& context, const cl::CommandQueue& queue, const cl::Program& program,
-                    const Topology& topo, const ScratchBuffers& scratch, bool on_device);
+                    const Topology& topo, const WorldInfo& world, const ScratchBuffers& scratch, bool on_device);
   OverlapBroadphase(const OverlapBroadphase&) = delete;
   OverlapBroadphase& operator=(const OverlapBroadphase&) = delete;
   OverlapBroadphase(OverlapBroadphase&&) = default;
@@ -37,9 +38,11 @@ class OverlapBroadphase {
   /// host copies stay untouched until the next build, which the caller starts after waiting on the queue.
   void upload(const cl::CommandQueue& queue, const Topology& topo, const SliceBoxes& boxes);
 
-  /// Sets the repulsion kernel's arguments first, first + 1, first + 2 to the grid's shape, cell ranges
-  /// and element lists (the buffers change when they grow, so every step).
-  void bind(Kernel& repulsion, cl_uint first) const;
+  /// Sets the repulsion kernel's overlap_grid, overlap_start and overlap_elements to the grid's shape,
+  /// cell ranges and element lists (the buffers change when they grow, so every step).
+  void bind(Kernel& repulsion) const;
+  /// The same three buffers, as values to bind the repulsion kernel from at first.
+  void add_values(ArgValues& values) const;
 
   /// A device build's element lists in all, as of the last build (read with the statistics).
   const cl::Buffer& total() const { return total_; }
@@ -62,7 +65,7 @@ class OverlapBroadphase {
   std::size_t capacity_ = 0;        ///< element list entries the buffer holds
   std::size_t start_capacity_ = 0;  ///< cell range entries the buffer holds
   cl::Buffer info_, start_, elements_;
-  cl::Buffer boxes_[5];  ///< the slice boxes (x0, y0, x1, y1, t): the device build's input
+  ArgValues values_;  ///< the device build's kernels' arguments, the slice boxes (its input) among them
   // Device build only:
   cl::Buffer pair_slice_, pair_element_, count_, cursor_, block_sum_, total_;
   Kernel extent_, clear_, count_kernel_, block_sums_, scan_blocks_, scan_cells_, scatter_, order_;

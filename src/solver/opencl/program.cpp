@@ -15,10 +15,10 @@ namespace animpak::opencl {
 namespace {
 
 // Dependency order: each file uses only functions of the files before it.
-constexpr const char* kernel_files[] = {
-    "closest_point.cl", "segments.cl",  "grid.cl",        "curve.cl",    "overlap.cl", "overlap_grid.cl",
-    "repulsion.cl",     "springs.cl",   "target.cl",      "boundary.cl", "torsion.cl", "temporal.cl",
-    "forces.cl",        "integrate.cl", "constraints.cl", "growth.cl",   "stats.cl"};
+constexpr const char* kernel_files[] = {"closest_point.cl", "segments.cl",  "grid.cl",     "curve.cl",  "overlap.cl",
+                                        "overlap_grid.cl",  "repulsion.cl", "springs.cl",  "target.cl", "boundary.cl",
+                                        "contact.cl",       "torsion.cl",   "temporal.cl", "forces.cl", "integrate.cl",
+                                        "constraints.cl",   "growth.cl",    "stats.cl"};
 
 std::string kernel_text(const char* name) {
   if (const char* dir = std::getenv("ANIMPAK_KERNEL_DIR"); dir != nullptr && *dir != '\0') {

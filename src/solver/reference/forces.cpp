@@ -4,7 +4,8 @@
 // The sum is formed left to right in Eq. 7's order, with the target-point spring (an Eq. 2 spring)
 // right after the edge springs, and the fold guard added to the springs' sum (F_edg = springs + fold):
 //   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
-// The kernels add in exactly this order.
+// The kernels add in exactly this order. Each vertex's gap and contact bits come from the same queries
+// (contact_gap, contact.cpp; the kernel contact_gap runs after step_forces).
 #include <cmath>
 
 #include "animpak/reference/boundary.hpp"
@@ -40,7 +41,6 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
   slice_boxes(topo, state, tangents, boxes);
   OverlapGrid overlap_grid;
   build_overlap_grid(topo, boxes, overlap_grid);
-  const float stop_gap = params.stop_gap;
   const float k_mirror = params.k_mirror;
 
   std::vector<std::int32_t> near, far;
@@ -76,35 +76,10 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
     r.total.x[v] = rpl.force.x + edg.x + tgt.x + bdr.x + ovr.x + tor.x + tmp.x;
     r.total.y[v] = rpl.force.y + edg.y + tgt.y + bdr.y + ovr.y + tor.y + tmp.y;
     r.total.t[v] = rpl.force.t + edg.t + tgt.t + bdr.t + ovr.t + tor.t + tmp.t;
-    // The wall is a neighbour too (§5.3's slice gap): a lone element stops at the container. A vertex
-    // that overlaps touches, whatever the nearest triangle's distance (a point of a slice interval
-    // may overlap where v itself is clear).
-    std::uint8_t contact = wall.inside ? 0 : contact_outside;
-    if (boundary) {
-      float wall_gap = wall.inside ? std::sqrt(wall.distance2) : 0.0f;
-      // With the mirror image, the wall's neighbour is that image, twice as far away.
-      if (k_mirror != 0.0f) wall_gap = wall_gap + wall_gap;
-      // Both ends inside, the boundary edge to the next vertex may still leave the container around a
-      // reflex corner. Only when the wall is nearer than the edge is long can it cross (the crossing point
-      // is on the wall): that edge counts as outside, and its vertex touches.
-      if (wall.inside) {
-        const std::int32_t lo = topo.slice_begin[s];
-        const std::int32_t next = v - lo + 1 == topo.slice_boundary[s] ? lo : v + 1;
-        const float ex = state.x[next] - px, ey = state.y[next] - py;
-        if (wall.distance2 < ex * ex + ey * ey &&
-            edge_crosses_container(topo.container, px, py, state.x[next], state.y[next])) {
-          contact = contact_outside;
-          wall_gap = 0.0f;
-        }
-      }
-      r.closest[v] = overlap.overlap ? 0.0f : (wall_gap < rpl.closest ? wall_gap : rpl.closest);
-      if (wall_gap < stop_gap) contact |= contact_wall;
-    }
-    if (overlap.overlap) contact |= contact_overlap;
-    if (overlap.inside) contact |= contact_inside;
-    if (overlap.yield) contact |= contact_yield;
-    if (overlap.block) contact |= contact_block;
-    r.contact[v] = contact;
+    // What the step reads besides the forces: the gap and contact bits (contact.cpp).
+    const ContactGap gap = contact_gap(topo, state, params, v, overlap, rpl.closest, wall);
+    r.closest[v] = gap.closest;
+    r.contact[v] = gap.contact;
     if (out != nullptr) {
       out->repulsion.set(v, rpl.force);
       out->springs.set(v, edg);
