@@ -101,9 +101,9 @@ class DeviceBackend final : public OpenclBackend {
   Kernel envelope_cells_, grid_gather_, slot_positions_, run_counts_, grid_runs_, slice_boxes_, curve_tangents_,
       curve_spline_tangents_, repulsion_force_, wall_mirror_, slice_centroids_, forces_, contact_gap_, integrate_,
       constraints_, loop_, apply_containment_, propose_growth_, grow_, rest_lengths_, statistics_;
-  bool mirror_ = false;          ///< wall_mirror is on: wall_mirror_force runs before step_forces
-  cl_int curve_mode_ = 0;        ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
-  SliceBoxes boxes_;  ///< read back for a host build of the broadphase
+  bool mirror_ = false;    ///< wall_mirror is on: wall_mirror_force runs before step_forces
+  cl_int curve_mode_ = 0;  ///< ForceParams.motion_curve: the spline's tangents come from curve_spline_tangents
+  SliceBoxes boxes_;       ///< read back for a host build of the broadphase
   OverlapBroadphase broadphase_;
   BoundaryOrder boundary_;  ///< the repulsion kernel's work order
   std::vector<std::int32_t> cells_, cell_start_, sorted_;

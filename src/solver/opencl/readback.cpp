@@ -2,6 +2,7 @@
 // demand (every check_interval steps, and every step while the run settles), the full state only in
 // state(), the forces and grids for the equivalence suite and validate; and the device time of every
 // launch and transfer, from the profiling events.
+#include "animpak/reference/grid.hpp"
 #include "device_backend.hpp"
 
 namespace animpak::opencl {
