@@ -60,7 +60,10 @@ void shuffle(std::vector<T>& v, Rng& rng) {
 }
 
 // `seeds` in the order they spread: from the first seed, each next one the seed farthest from those
-// before it (ties to the lower index), as spread_seeds picks them.
+// before it (ties to the lower index). spread_seeds' selection without its wall term: counting the wall
+// (as spread_seeds does to choose where seeds go) starts the order deep inside and mixed the kinds of
+// fill scenes less (nearest neighbour of the same kind 0.21 and 0.18 against 0.20 and 0.10 without it,
+// tests/scene/test_world.cpp).
 std::vector<Vec2> in_spreading_order(const std::vector<Vec2>& seeds) {
   const std::size_t n = seeds.size();
   std::vector<Vec2> order;
