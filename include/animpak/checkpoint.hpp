@@ -16,13 +16,17 @@
 
 namespace animpak {
 
-inline constexpr std::uint32_t checkpoint_version = 5;
+inline constexpr std::uint32_t checkpoint_version = 6;
 
 struct Checkpoint {
   std::string scene_text;            ///< the scene file's contents when the packing started
   std::filesystem::path scene_file;  ///< absolute in memory; stored relative to the state's folder
   std::uint64_t seed = 0;            ///< the seed actually used (scene or --seed)
   std::string stop_reason;           ///< "running" when interrupted or still going
+  /// The level the state is at (docs/parameters.md, "Coarse to fine"): the slices per element of the scene's
+  /// coarse level (coarse_slices), or 0 for the scene's own slices. A state stopped at its coarse level is a
+  /// preview unless `pack` goes on to refine it.
+  std::int32_t level_slices = 0;
   SimState state;
 };
 

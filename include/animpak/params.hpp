@@ -22,6 +22,9 @@ struct Params {
     double boundary_tolerance = 0.008;  ///< largest distance between the boundary polygon and the outline
     double interior_spacing = 0.15;     ///< minimum distance between interior (Poisson-disk) samples
     int slices = 100;                   ///< n_s, slices along the time axis
+    /// The packing starts with about one slice per coarse_step of these and refines to them once that
+    /// coarse level stops (docs/parameters.md, "Coarse to fine"; levels.hpp); 1: the scene's slices throughout.
+    int coarse_step = 4;
   };
 
   /// §4 initial configuration (src/scene).

@@ -86,18 +86,6 @@ Picture draw_art_preview(const ArtShape& art, int size);
 /// table of elements). Our own drawing of the imported art, never the file's text.
 std::string art_svg(const ArtShape& art, int size);
 
-/// Slice vertex positions of element instance `element` at frame time tf (paper §6): on the curve between
-/// the two consecutive slices whose current t values bracket tf (include/animpak/curve.hpp; the paper's
-/// linear interpolation with `motion_curve` 0).
-std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf);
-/// The same with the element's tangents computed once (element_tangents), for many times of one state.
-std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
-                             const std::vector<Vec2>& tangents);
-/// The curve's tangent (dx/dt, dy/dt) at every vertex of every slice of element `element`, slice-major
-/// (slice s, vertex v at s · vertices_per_slice + v), in double: the spline's from a solve along the chain
-/// its slices lie on, Steffen's from their neighbours, or zeros for straight lines.
-std::vector<Vec2> element_tangents(const World& world, const SimState& state, int element);
-
 /// How large element `element` is drawn for these slice positions relative to its library size (the
 /// square root of the boundary's area ratio): stroke widths follow it.
 double element_scale(const World& world, int element, const std::vector<Vec2>& positions);

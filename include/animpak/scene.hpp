@@ -122,6 +122,18 @@ struct World {
 /// every element is inside the container. InputError names the elements (and slice) at fault.
 World build_world(const SceneSpec& scene, Container container, std::vector<SpacetimeElement> library);
 
+/// Slice vertex positions of element instance `element` at frame time tf (paper §6): on the curve between
+/// the two consecutive slices whose current t values bracket tf (include/animpak/curve.hpp; the paper's
+/// linear interpolation with `motion_curve` 0).
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf);
+/// The same with the element's tangents computed once (element_tangents), for many times of one state.
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
+                             const std::vector<Vec2>& tangents);
+/// The curve's tangent (dx/dt, dy/dt) at every vertex of every slice of element `element`, slice-major
+/// (slice s, vertex v at s · vertices_per_slice + v), in double: the spline's from a solve along the chain
+/// its slices lie on, Steffen's from their neighbours, or zeros for straight lines.
+std::vector<Vec2> element_tangents(const World& world, const SimState& state, int element);
+
 /// How many elements the frames draw and measure: every element, then under mirror symmetry the reflection of each
 /// (drawn element N + i is element i reflected across Container::mirror; docs/scene-format.md, "Mirror").
 int drawn_count(const World& world);

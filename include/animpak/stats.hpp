@@ -164,6 +164,15 @@ struct StatsKernel {
   bool operator==(const StatsKernel&) const = default;
 };
 
+/// One level of a coarse-to-fine packing (docs/parameters.md, "Coarse to fine"), in the order they ran: its
+/// slices per element, and this run's iterations and simulation seconds at it (a resumed run: its own).
+struct StatsLevel {
+  std::int64_t slices = 0;
+  std::uint64_t iterations = 0;
+  double seconds = 0.0;
+  bool operator==(const StatsLevel&) const = default;
+};
+
 /// `seconds`: the set-up, the simulation, and each phase by its name (phase_fields).
 struct StatsSeconds {
   double setup = 0.0, simulation = 0.0;
@@ -197,6 +206,9 @@ struct Stats {
   std::optional<std::vector<StatsGrowth>> final_growth;
   std::optional<StatsProgress> progress;
   std::optional<std::vector<StatsKernel>> kernels;
+  /// The level the state is at: the coarse level's slices per element, or absent at the scene's own.
+  std::optional<std::int64_t> level_slices;
+  std::optional<std::vector<StatsLevel>> levels;  ///< the levels this run stepped, when it stepped two
   std::optional<std::vector<StatsFrame>> frames, between_slices;
   std::optional<StatsQuality> quality;
   std::optional<StatsMotion> motion;

@@ -68,6 +68,9 @@ struct PackOptions {
   std::string grid_sort = "auto";  ///< auto, host or device (GridSort)
   bool force = false;              ///< overwrite the packing already in `out`
   bool still = false;              ///< pack the scene's still reference (still_scene_text)
+  /// stop at the coarse level's stop and render it (docs/parameters.md, "Coarse to fine"); `--resume` without
+  /// it goes on to the scene's slices
+  bool preview = false;
   /// a folder `pack --still` wrote: stats.json carries its coverage beside this packing's
   std::optional<std::filesystem::path> still_reference;
   bool verbose = false;              ///< the progress line with overlaps, outside and the g range

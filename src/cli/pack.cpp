@@ -12,6 +12,7 @@
 
 #include "animpak/checkpoint.hpp"
 #include "animpak/error.hpp"
+#include "animpak/levels.hpp"
 #include "animpak/opencl.hpp"
 #include "animpak/progress.hpp"
 #include "animpak/run.hpp"
@@ -99,8 +100,12 @@ class Progress {
 
 // A packing that stopped on its own (not interrupted) is finished: resuming it would only step it on past
 // its stop, changing it. One stopped by its iteration limit continues under a larger limit.
-bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_iterations) {
+// A state stopped at its coarse level (a preview) goes on to the scene's slices unless `preview` asks for
+// the preview alone.
+bool finished(const Checkpoint& c, const std::optional<std::uint64_t>& max_iterations, bool preview) {
   if (c.stop_reason == "interrupted" || c.stop_reason == "running") return false;
+  if (c.level_slices != 0 && !preview && c.stop_reason != "max_iterations" && c.stop_reason != "non_finite")
+    return false;
   return !(c.stop_reason == "max_iterations" && max_iterations && *max_iterations > c.state.iteration);
 }
 
@@ -114,14 +119,14 @@ double simulation_seconds(const std::filesystem::path& stats) {
 // The device by --device or the default rule, said in one line. A device asked for by name must work;
 // one picked by the default rule falls back to the reference with the first lines of its error.
 std::unique_ptr<Backend> make_backend(const std::string& request, GridSort sort, const World& world,
-                                      std::string& driver) {
+                                      std::string& driver, bool quiet = false) {
   const DeviceChoice choice = choose_device(request);
-  std::cerr << "animpak: device: " << choice.reason << "\n";
+  if (!quiet) std::cerr << "animpak: device: " << choice.reason << "\n";
   if (!choice.reference) {
     try {
       auto backend = make_opencl_backend(world.topology, world.state, world.params, choice, sort);
       driver = choice.device.driver + " (" + choice.device.platform_version + ")";
-      std::cerr << "animpak: grids built on the " << grid_sort_name(backend->grid_sort()) << "\n";
+      if (!quiet) std::cerr << "animpak: grids built on the " << grid_sort_name(backend->grid_sort()) << "\n";
       return backend;
     } catch (const OpenclError& e) {
       if (choice.explicit_request) throw;
@@ -178,13 +183,13 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   double previous_seconds = 0.0;
   if (options.resume) {
     checkpoint = read_checkpoint(run_dir / "state.bin", out);
-    if (staged && finished(checkpoint, options.max_iterations)) {
+    if (staged && finished(checkpoint, options.max_iterations, options.preview)) {
       // Killed after its last state was written and before the swap: nothing left but the swap.
       install_new_pack(out);
       std::cerr << "animpak: " << out.string() << ": swapped in the finished packing a killed pack left in "
                 << run_dir.string() << "\n";
     }
-    if (finished(checkpoint, options.max_iterations)) {
+    if (finished(checkpoint, options.max_iterations, options.preview)) {
       std::cerr << "animpak: " << out.string() << " holds a finished packing (stopped after "
                 << checkpoint.state.iteration << " iterations: " << checkpoint.stop_reason
                 << "); nothing to resume, nothing changed. `animpak render " << shell_word(out.string())
@@ -212,38 +217,74 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   // whose bytes are the same); a resume from the folder's copies.
   const PackedScene scene = options.resume ? packed_scene(run_dir, checkpoint)
                                            : PackedScene{checkpoint.scene_text, checkpoint.scene_file, {}};
-  LoadedWorld loaded = [&] {
+  // The scene at a level: its own slices (0) or its coarse level's (docs/parameters.md, "Coarse to fine").
+  const auto build_level = [&](std::int32_t level, bool with_state) {
+    Checkpoint at_level = checkpoint;
+    at_level.level_slices = level;
     try {
-      return world_from_checkpoint(checkpoint, options.resume.has_value(), scene);
+      return world_from_checkpoint(at_level, with_state, scene);
     } catch (...) {
       // A new packing that cannot be built (art too complex, too many elements) leaves nothing staged.
       if (!options.resume) std::filesystem::remove_all(run_dir);
       throw;
     }
-  }();
-  World& world = loaded.world;
+  };
+  // `loaded` is the scene at its own slices; a new packing starts at its coarse level when it has one, a
+  // resumed one at the level its state is at.
+  LoadedWorld loaded = build_level(0, options.resume && checkpoint.level_slices == 0);
+  if (!options.resume) checkpoint.level_slices = coarse_slices(loaded.world.params);
+  std::optional<LoadedWorld> coarse;
+  if (checkpoint.level_slices != 0) {
+    coarse = build_level(checkpoint.level_slices, options.resume.has_value());
+    loaded.setup_seconds += coarse->setup_seconds;
+    if (const std::string why = level_mismatch(coarse->world, loaded.world); !why.empty()) {
+      if (options.resume)
+        throw InputError(checkpoint.scene_file.string() + ": the state is at the coarse level, but " + why +
+                         "; pack the scene again");
+      std::cerr << "animpak: warning: no coarse level: " << why << "; packing at the scene's "
+                << loaded.world.params.element.slices << " slices throughout\n";
+      coarse.reset();
+      checkpoint.level_slices = 0;
+    }
+  }
+  if (options.preview && checkpoint.level_slices == 0 && !options.resume) {
+    std::filesystem::remove_all(run_dir);
+    throw UsageError(checkpoint.scene_file.string() + ": --preview: the scene has no coarse level (" +
+                     std::to_string(loaded.world.params.element.slices) + " slices, params.coarse_step " +
+                     std::to_string(loaded.world.params.element.coarse_step) +
+                     "; docs/parameters.md, \"Coarse to fine\"); pack it without --preview");
+  }
+  World* level_world = coarse ? &coarse->world : &loaded.world;
   // --max-iterations replaces the scene's limit for this run; run_simulation stops there (an absolute count).
-  if (options.max_iterations) world.params.stop.max_iterations = static_cast<int>(*options.max_iterations);
-  // A resumed run repeats no set-up report (the seeding it did not do again), only its warnings.
-  for (const std::string& note : world.notes)
+  if (options.max_iterations)
+    for (World* w : {&loaded.world, coarse ? &coarse->world : nullptr})
+      if (w) w->params.stop.max_iterations = static_cast<int>(*options.max_iterations);
+  // A resumed run repeats no set-up report (the seeding it did not do again), only its warnings; the
+  // scene's own slices say them (the coarse level's would warn of motions its slices cannot follow).
+  for (const std::string& note : loaded.world.notes)
     if (!options.resume || note.rfind("warning:", 0) == 0) std::cerr << "animpak: " << note << "\n";
   if (options.resume)
     std::cerr << "animpak: resuming " << (run_dir / "state.bin").string() << " at iteration "
               << checkpoint.state.iteration << " after " << clock_text(previous_seconds) << "\n";
-  std::cerr << "animpak: " << world.elements.size() << " elements, " << world.topology.vertex_count() << " vertices, "
-            << world.topology.spring_other.size() / 2 << " springs, " << world.topology.envelope_count()
-            << " envelope triangles\n";
+  if (coarse)
+    std::cerr << "animpak: coarse to fine: " << checkpoint.level_slices << " slices until they stop"
+              << (options.preview ? " (the preview)"
+                                  : ", then the scene's " + std::to_string(loaded.world.params.element.slices))
+              << "\n";
+  std::cerr << "animpak: " << level_world->elements.size() << " elements, " << level_world->topology.vertex_count()
+            << " vertices, " << level_world->topology.spring_other.size() / 2 << " springs, "
+            << level_world->topology.envelope_count() << " envelope triangles\n";
 
   const std::uint64_t checkpoint_start = checkpoint.state.iteration;
   std::string driver;
-  std::unique_ptr<Backend> backend =
-      make_backend(options.device, parse_grid_sort(options.grid_sort, "--grid-sort"), world, driver);
+  const GridSort sort = parse_grid_sort(options.grid_sort, "--grid-sort");
+  std::unique_ptr<Backend> backend = make_backend(options.device, sort, *level_world, driver);
   std::vector<ProgressSample> previous_samples =
       options.resume && !staged ? read_progress(out / "stats.json") : std::vector<ProgressSample>{};
   if (previous_samples.empty() && previous_seconds > 0)  // a stats.json from before the samples were kept
     previous_samples.push_back({checkpoint.state.iteration, previous_seconds});
-  Progress progress(world.params, world.topology.has_secondary(), unit_mesh_density(world), previous_samples,
-                    options.verbose);
+  Progress progress(loaded.world.params, loaded.world.topology.has_secondary(), unit_mesh_density(loaded.world),
+                    previous_samples, options.verbose);
   RunControl control;
   control.interrupt = &interrupted;
   control.on_check = [&](const StepStatistics& st) { progress(st); };
@@ -256,7 +297,40 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     saved.state = state;
     write_checkpoint(run_dir / "state.bin", saved, out);
   };
-  RunResult result = run_simulation(*backend, world.params, control);
+  // Each level runs to its own stop; a coarse level that stopped (not interrupted, not out of iterations) is
+  // refined to the scene's slices and the packing goes on there, unless this is a preview.
+  const auto level_stop = [](const std::string& reason) {
+    return reason == "gap" || reason == "stalled" || reason == "unsettled";
+  };
+  RunResult result;
+  result.last_good = checkpoint.state;
+  result.reason = StopReason::running;
+  bool resumed_stopped = options.resume && level_stop(checkpoint.stop_reason);
+  std::vector<LevelTimes> levels;
+  double simulated = 0.0;
+  for (;;) {
+    if (!resumed_stopped) {
+      const std::uint64_t first = level_world->state.iteration;
+      result = run_simulation(*backend, level_world->params, control);
+      simulated += result.seconds;
+      levels.push_back({level_world->params.element.slices, result.last_good.iteration - first, result.seconds,
+                        backend->times(), backend->kernel_times()});
+    }
+    const std::string reason = resumed_stopped ? checkpoint.stop_reason : stop_reason_name(result.reason);
+    resumed_stopped = false;
+    if (!coarse || options.preview || !level_stop(reason)) break;
+    loaded.world.state = refine_state(coarse->world, result.last_good, loaded.world);
+    std::cerr << "animpak: the " << checkpoint.level_slices << "-slice level stopped after "
+              << result.last_good.iteration << " iterations (" << reason << "); refined to "
+              << loaded.world.params.element.slices << " slices\n";
+    checkpoint.level_slices = 0;
+    coarse.reset();
+    level_world = &loaded.world;
+    result.last_good = loaded.world.state;
+    backend = make_backend(options.device, sort, loaded.world, driver, true);
+  }
+  result.seconds = simulated;
+  World& world = *level_world;
   signals.reset();
   progress.finish();
   result.seconds += previous_seconds;
@@ -270,16 +344,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   const std::vector<std::filesystem::path> replaced = staged ? install_new_pack(out) : remove_rendered(out);
   removed.insert(removed.end(), replaced.begin(), replaced.end());
 
-  PackReport report{world,
-                    result,
-                    backend->times(),
-                    checkpoint,
-                    {},
-                    loaded.setup_seconds,
-                    backend->name(),
-                    driver,
-                    progress.samples(),
-                    backend->kernel_times()};
+  const LevelTimes total = total_times(levels);
+  PackReport report{world,           result, total.times,        checkpoint,    {},    loaded.setup_seconds,
+                    backend->name(), driver, progress.samples(), total.kernels, levels};
   if (result.reason == StopReason::non_finite) {
     write_stats(out / "stats.json", report);
     const std::int32_t v = result.last.first_bad_vertex;
@@ -293,10 +360,20 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   }
   std::cerr << "animpak: stopped after " << result.last_good.iteration << " iterations (" << checkpoint.stop_reason
             << ") in " << clock_text(result.seconds) << "\n";
+  if (checkpoint.level_slices != 0 && result.reason != StopReason::interrupted)
+    std::cerr << "animpak: a preview at " << checkpoint.level_slices << " slices; `" << options.program
+              << " pack --resume " << shell_word(out.string()) << "` goes on to the scene's "
+              << loaded.world.params.element.slices << "\n";
   // This run's own share (a resumed run's earlier time is in result.seconds, not in the phase times).
-  if (options.profile)
+  if (options.profile) {
+    // Each level's own, then (coarse to fine) the run's sum.
+    if (levels.size() > 1)
+      for (const LevelTimes& l : levels)
+        std::cerr << "level of " << l.slices
+                  << " slices: " << profile_text(l.times, l.kernels, l.iterations, l.seconds);
     std::cerr << profile_text(report.times, report.kernels, result.last_good.iteration - checkpoint_start,
                               result.seconds - previous_seconds);
+  }
   if (world.topology.has_secondary()) {
     if (result.last_good.secondary_since != 0)
       std::cerr << "animpak: the secondary elements grew from iteration " << result.last_good.secondary_since
@@ -312,6 +389,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
   if (result.reason == StopReason::interrupted) {
     std::string command = options.program + " pack --resume " + shell_word(out.string());
     if (options.max_iterations) command += " --max-iterations " + std::to_string(*options.max_iterations);
+    if (options.preview) command += " --preview";
     std::cerr << "animpak: interrupted; continue with: " << command << "\n";
   }
   // stats.json first, so that a render that fails (ffmpeg, a full disk) leaves this run's, not the last one's.

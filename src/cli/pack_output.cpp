@@ -30,10 +30,32 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+LevelTimes total_times(const std::vector<LevelTimes>& levels) {
+  LevelTimes total;
+  for (const LevelTimes& l : levels) {
+    total.iterations += l.iterations;
+    total.seconds += l.seconds;
+    for (const NamedPhase& phase : phase_fields) total.times.*phase.seconds += l.times.*phase.seconds;
+    for (const KernelTime& k : l.kernels) {
+      const auto same = std::find_if(total.kernels.begin(), total.kernels.end(),
+                                     [&](const KernelTime& t) { return t.name == k.name; });
+      if (same == total.kernels.end()) {
+        total.kernels.push_back(k);
+      } else {
+        same->seconds += k.seconds;
+        same->launches += k.launches;
+      }
+    }
+  }
+  return total;
+}
+
 LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state, const PackedScene& packed) {
   const auto start = std::chrono::steady_clock::now();
   SceneSpec scene = parse_scene(packed.text, packed.file, packed.file.parent_path(), packed.locate);
   scene.seed = checkpoint.seed;
+  // A state at the coarse level (docs/parameters.md, "Coarse to fine") is of the scene at that level's slices.
+  if (checkpoint.level_slices != 0) scene.params.element.slices = checkpoint.level_slices;
   LoadedWorld loaded{make_world(scene), 0.0};
   if (with_state) {
     const Topology& topo = loaded.world.topology;
@@ -273,6 +295,11 @@ Stats pack_stats(const PackReport& r) {
   progress.stall = StatsProgress::Stall{stop.stall_window, stop.stall_growth, stop.stall_tests};
   progress.secondary = w.topology.has_secondary();
   stats.progress = progress;
+  if (r.checkpoint.level_slices != 0) stats.level_slices = r.checkpoint.level_slices;
+  if (r.levels.size() > 1) {
+    stats.levels.emplace();
+    for (const LevelTimes& l : r.levels) stats.levels->push_back({l.slices, l.iterations, l.seconds});
+  }
   if (!r.kernels.empty()) {
     stats.kernels.emplace();
     for (const KernelTime& k : r.kernels) stats.kernels->push_back({k.name, k.phase, k.seconds, k.launches});

@@ -21,6 +21,19 @@ struct LoadedWorld {
 /// and with `with_state` puts the checkpoint's state in it after checking that the sizes match.
 LoadedWorld world_from_checkpoint(const Checkpoint& checkpoint, bool with_state, const PackedScene& scene);
 
+/// One level's share of a pack run (docs/parameters.md, "Coarse to fine"): its slices per element, the
+/// iterations and simulation seconds it ran, and its backend's phase and kernel times.
+struct LevelTimes {
+  int slices = 0;
+  std::uint64_t iterations = 0;
+  double seconds = 0.0;
+  PhaseTimes times;
+  std::vector<KernelTime> kernels;
+};
+
+/// The phase and kernel times of every level summed (kernels by name, in first-seen order).
+LevelTimes total_times(const std::vector<LevelTimes>& levels);
+
 struct PackReport {
   const World& world;
   const RunResult& result;
@@ -32,6 +45,7 @@ struct PackReport {
   std::string driver;                           ///< the device's driver and platform version
   const std::vector<ProgressSample>& progress;  ///< every statistics check of the packing, resumes included
   std::vector<KernelTime> kernels;              ///< device time per kernel (this run's; empty for the reference)
+  std::vector<LevelTimes> levels = {};          ///< this run's levels, in order (one: no refinement)
 };
 
 void write_stats(const std::filesystem::path& file, const PackReport& report);

@@ -63,6 +63,9 @@ void add_pack_command(CLI::App& app, CommandLine& cl) {
   cl.pack_cmd->add_flag("--still", cl.pack.still,
                         "pack the same elements standing still (no animation, guided elements as ordinary copies, "
                         "at most 12 slices): the reference an animated packing's coverage is judged against");
+  cl.pack_cmd->add_flag("--preview", cl.pack.preview,
+                        "stop when the coarse level (fewer slices) stops, and render it: the composition in a "
+                        "fraction of the packing's time; `pack --resume DIR` goes on to the scene's slices");
   cl.pack_cmd->add_option("--still-reference", cl.pack.still_reference,
                           "a folder `pack --still` wrote for this scene: stats.json then carries its coverage "
                           "beside this packing's, and a `still:` line compares them");

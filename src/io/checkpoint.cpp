@@ -91,6 +91,8 @@ class Reader {
 // it, instead of stepping or drawing it (a NaN resumed as if it were a packing).
 void check_values(const Checkpoint& c, const Reader& r) {
   const SimState& s = c.state;
+  if (c.level_slices < 0 || c.level_slices == 1 || c.level_slices > 1000)
+    r.fail("its level (" + std::to_string(c.level_slices) + " slices) is not one animpak writes");
   if (std::find(std::begin(stop_reasons), std::end(stop_reasons), c.stop_reason) == std::end(stop_reasons))
     r.fail("its stop reason \"" + c.stop_reason.substr(0, 40) + "\" is not one animpak writes");
   for (const std::uint64_t since : {s.settling_since, s.secondary_since, s.mark_iteration})
@@ -131,6 +133,7 @@ void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c, co
   w.put_string((relative.empty() ? c.scene_file : relative).generic_string());
   w.put<std::uint64_t>(c.seed);
   w.put_string(c.stop_reason);
+  w.put<std::int32_t>(c.level_slices);
   w.put<std::uint64_t>(c.state.iteration);
   w.put<std::uint64_t>(c.state.settling_since);
   w.put<std::uint64_t>(c.state.secondary_since);
@@ -157,8 +160,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& file, const std::filesys
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
   // Versions 2 to 4 ended in a 64-bit FNV checksum, which anyone can recompute for a state changed on
-  // purpose; version 5 ends in a SHA-256 of everything before it, and its values are checked below.
-  if (version >= 2 && version < checkpoint_version)
+  // purpose; version 5 on end in a SHA-256 of everything before it, and its values are checked below.
+  // Version 6 adds the level (level_slices); a version 5 state is at the scene's own slices.
+  if (version >= 2 && version < 5)
     throw InputError(name + ": state format version " + std::to_string(version) +
                      " (animpak 0.15 and before), whose checksum cannot tell a changed state from a packed one; "
                      "pack the scene again with this version (the animpak that wrote it still renders it)");
@@ -181,6 +185,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file, const std::filesys
                        .lexically_normal();
   c.seed = r.get<std::uint64_t>();
   c.stop_reason = r.get_string();
+  if (version >= 6) c.level_slices = r.get<std::int32_t>();
   c.state.iteration = r.get<std::uint64_t>();
   c.state.settling_since = r.get<std::uint64_t>();
   c.state.secondary_since = r.get<std::uint64_t>();

@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 54> table{{
+const std::array<ParamInfo, 55> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -34,6 +34,9 @@ const std::array<ParamInfo, 54> table{{
      "minimum distance between interior samples", "not stated"},
     {"slices", "element", field<&Params::element, &Params::Element::slices>(), 2, 1000,
      "n_s: slices along the time axis (§3.1)", "n_s = 100 (§3.1)"},
+    {"coarse_step", "element", field<&Params::element, &Params::Element::coarse_step>(), 1, 100,
+     "the packing starts with one slice per coarse_step of n_s, refined to n_s at its stop (1: n_s throughout)",
+     "n_s throughout (§8: future work)"},
     {"initial_scale", "placement", field<&Params::placement, &Params::Placement::initial_scale>(), 0.001, 1.0,
      "size of every element at the start (§4)", "5–10 % of full size (§4)"},
     {"seed_spacing", "placement", field<&Params::placement, &Params::Placement::seed_spacing>(), 0.01, 1.0,

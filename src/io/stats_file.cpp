@@ -177,6 +177,13 @@ json stats_json(const Stats& s) {
           {{"name", k.name}, {"phase", k.phase}, {"seconds", number_or_null(k.seconds)}, {"launches", k.launches}});
     out["kernels"] = kernels;
   }
+  if (s.level_slices) out["level_slices"] = *s.level_slices;
+  if (s.levels) {
+    json levels = json::array();
+    for (const StatsLevel& l : *s.levels)
+      levels.push_back({{"slices", l.slices}, {"iterations", l.iterations}, {"seconds", number_or_null(l.seconds)}});
+    out["levels"] = levels;
+  }
   if (s.frames) out["frames"] = frames_json(*s.frames);
   if (s.between_slices) out["between_slices"] = frames_json(*s.between_slices);
   if (s.quality)
@@ -385,6 +392,14 @@ std::vector<StatsKernel> read_kernels(const json& j) {
   return out;
 }
 
+std::vector<StatsLevel> read_levels(const json& j) {
+  std::vector<StatsLevel> out;
+  if (!j.is_array()) throw StatsShapeError{"levels"};
+  for (const json& l : j)
+    out.push_back({whole<std::int64_t>(l, "slices"), whole<std::uint64_t>(l, "iterations"), number_in(l, "seconds")});
+  return out;
+}
+
 StatsQuality read_quality(const json& j) {
   return {number_in(j, "share_threshold"), read_summary(field(j, "frames")), read_summary(field(j, "between_slices"))};
 }
@@ -455,16 +470,18 @@ Stats parse_stats(const std::string& source, const std::filesystem::path& file) 
   optional_field(root, "final_growth", s.final_growth, s, read_growth);
   optional_field(root, "progress", s.progress, s, read_progress_section);
   optional_field(root, "kernels", s.kernels, s, read_kernels);
+  optional_field(root, "level_slices", s.level_slices, s, as_whole);
+  optional_field(root, "levels", s.levels, s, read_levels);
   optional_field(root, "frames", s.frames, s, read_frames);
   optional_field(root, "between_slices", s.between_slices, s, read_frames);
   optional_field(root, "quality", s.quality, s, read_quality);
   optional_field(root, "motion", s.motion, s, read_motion);
   optional_field(root, "still_reference", s.still_reference, s, read_still);
   static const char* const known[] = {
-      "format_version",  "animpak", "scene",          "seed",     "elements",    "vertices", "iterations",
-      "stop_reason",     "commit",  "device",         "driver",   "rendered_by", "springs",  "envelope_triangles",
-      "secondary_since", "seconds", "final_growth",   "progress", "kernels",     "frames",   "between_slices",
-      "quality",         "motion",  "still_reference"};
+      "format_version",  "animpak", "scene",           "seed",         "elements",    "vertices", "iterations",
+      "stop_reason",     "commit",  "device",          "driver",       "rendered_by", "springs",  "envelope_triangles",
+      "secondary_since", "seconds", "final_growth",    "progress",     "kernels",     "frames",   "between_slices",
+      "quality",         "motion",  "still_reference", "level_slices", "levels"};
   for (const auto& [key, value] : root.items())
     if (std::find(std::begin(known), std::end(known), key) == std::end(known)) s.kept[key] = value.dump();
   return s;

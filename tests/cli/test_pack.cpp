@@ -104,10 +104,10 @@ TEST_CASE("animpak pack/render: missing, foreign, truncated, modified and newer 
   CHECK_THAT(checksum.err, Contains("checksum mismatch"));
 
   std::string newer = good;
-  newer[8] = 6;  // the little-endian u32 version right after the 8 magic bytes
+  newer[8] = 7;  // the little-endian u32 version right after the 8 magic bytes
   const CommandResult version = render_state(box, newer);
   CHECK(version.code == 2);
-  CHECK_THAT(version.err, Contains("state format version 6") && Contains("reads version 5"));
+  CHECK_THAT(version.err, Contains("state format version 7") && Contains("reads version 6"));
 
   // Version 4 ended in an FNV checksum anyone can recompute: refused, not trusted.
   std::string older = good;
@@ -596,4 +596,67 @@ TEST_CASE("animpak pack --profile: the time of every phase and kernel at the end
   const CommandResult quiet = run_animpak("pack " + box.scene() + " --out " + box.path("quiet") +
                                           " --max-iterations 10 --no-render --device pocl");
   CHECK(quiet.err.find("profile:") == std::string::npos);
+}
+
+TEST_CASE(
+    "animpak pack: coarse to fine, interrupted before and after the refinement or stopped as a preview, resumes "
+    "to the uninterrupted state.bin byte for byte") {
+  // Nine slices packed first at three (docs/parameters.md, "Coarse to fine"), with a collision grid coarse
+  // enough to allow it.
+  const Sandbox box("levels", animpak::test::star_scene(3, 9, 2, {"", R"("cell_size": 0.2, "coarse_step": 4)"}));
+  const CommandResult whole = run_animpak("pack " + box.scene() + " --out " + box.path("whole") + " --no-render");
+  INFO(whole.err);
+  REQUIRE(whole.code == 0);
+  CHECK_THAT(whole.err, Contains("coarse to fine: 3 slices until they stop, then the scene's 9"));
+  const animpak::Stats stats = animpak::parse_stats(bytes_of(box.path("whole") + "/stats.json"), "stats.json");
+  REQUIRE(stats.levels);
+  REQUIRE(stats.levels->size() == 2);
+  CHECK((*stats.levels)[0].slices == 3);
+  CHECK((*stats.levels)[1].slices == 9);
+  CHECK(!stats.level_slices);
+  const std::uint64_t refined_at = (*stats.levels)[0].iterations;
+  REQUIRE(refined_at >= 40);
+  REQUIRE(stats.iterations > refined_at);
+  const std::string expected = bytes_of(box.path("whole") + "/state.bin");
+  CHECK(animpak::read_checkpoint(box.path("whole") + "/state.bin").level_slices == 0);
+
+  // Stopped by an iteration limit before the refinement, then after it (on a check, every 10 iterations).
+  for (const std::uint64_t cut : {refined_at / 20 * 10, refined_at / 10 * 10 + 20}) {
+    INFO("interrupted at iteration " << cut);
+    const std::string dir = box.path("cut" + std::to_string(cut));
+    REQUIRE(run_animpak("pack " + box.scene() + " --out " + dir + " --max-iterations " + std::to_string(cut) +
+                        " --no-render")
+                .code == 0);
+    CHECK(animpak::read_checkpoint(dir + "/state.bin").level_slices == (cut < refined_at ? 3 : 0));
+    const CommandResult resumed = run_animpak("pack --resume " + dir + " --max-iterations 100000 --no-render");
+    INFO(resumed.err);
+    REQUIRE(resumed.code == 0);
+    CHECK(bytes_of(dir + "/state.bin") == expected);
+  }
+
+  // A preview stops at the coarse level's stop, says how to go on, and goes on to the same end.
+  const CommandResult preview =
+      run_animpak("pack " + box.scene() + " --out " + box.path("preview") + " --preview --no-render");
+  INFO(preview.err);
+  REQUIRE(preview.code == 0);
+  CHECK_THAT(preview.err, Contains("a preview at 3 slices") && Contains("pack --resume"));
+  const animpak::Checkpoint previewed = animpak::read_checkpoint(box.path("preview") + "/state.bin");
+  CHECK(previewed.level_slices == 3);
+  CHECK(previewed.state.iteration == refined_at);
+  // Resumed with --preview again, it is finished; without, it refines and packs on.
+  const CommandResult again = run_animpak("pack --resume " + box.path("preview") + " --preview --no-render");
+  CHECK(again.code == 0);
+  CHECK_THAT(again.err, Contains("holds a finished packing"));
+  const CommandResult on = run_animpak("pack --resume " + box.path("preview") + " --no-render");
+  INFO(on.err);
+  REQUIRE(on.code == 0);
+  CHECK_THAT(on.err, Contains("refined to 9 slices"));
+  CHECK(bytes_of(box.path("preview") + "/state.bin") == expected);
+
+  // A scene without a coarse level refuses --preview and leaves no folder.
+  const Sandbox plain("levels-none");
+  const CommandResult refused = run_animpak("pack " + plain.scene() + " --out " + plain.path("p") + " --preview");
+  CHECK(refused.code == 1);
+  CHECK_THAT(refused.err, Contains("no coarse level"));
+  CHECK(!fs::exists(plain.path("p") + "/state.bin"));
 }

@@ -2,8 +2,10 @@
 // random worlds and on a small real scene (the default example's star in the heart container). Every
 // array of the state must match bit for bit, and so must the statistics of the stop test.
 #include "animpak/curve.hpp"
+#include "animpak/levels.hpp"
 #include "animpak/scene.hpp"
 #include "equivalence_support.hpp"
+#include "scene/tiny_scenes.hpp"
 
 namespace animpak::test {
 namespace {
@@ -183,6 +185,49 @@ TEST_CASE("steps: one element alone, and a world without envelope triangles", "[
   fill_reference_copy(f);
   REQUIRE(f.topo.envelope_count() == 0);
   check_steps(f.topo, f.state, paper_params(), 10, 1, "no envelope");
+}
+
+}  // namespace animpak::test
+
+namespace animpak::test {
+
+TEST_CASE("steps: across a refinement from the coarse level to the scene's slices, the backends stay identical",
+          "[equivalence][opencl]") {
+  // Coarse to fine (docs/parameters.md, "Coarse to fine"): 30 steps at the coarse level's 3 slices, the fine
+  // state made from each backend's own coarse state by the one host routine, then 30 steps at 9 slices.
+  const std::string text = star_scene(3, 9, 4, swapping_pair(R"("cell_size": 0.2, "coarse_step": 4)"));
+  SceneSpec scene = parse_scene(text, "levels.json", "/");
+  const World fine = make_world(scene);
+  scene.params.element.slices = coarse_slices(scene.params);
+  REQUIRE(scene.params.element.slices == 3);
+  const World coarse = make_world(scene);
+  const std::vector<DeviceChoice> devices = devices_under_test();
+  if (skip_without_devices(devices)) return;
+  for (const DeviceChoice& d : devices)
+    for (const GridSort sort : grid_sorts) {
+      INFO(d.device.name << " (grid sorted on the " << grid_sort_name(sort) << ")");
+      auto ref = make_reference_backend(coarse.topology, coarse.state, coarse.params);
+      auto dev = make_opencl_backend(coarse.topology, coarse.state, coarse.params, d, sort);
+      for (int step = 0; step < 30; ++step) ref->step(), dev->step();
+      const SimState ref_coarse = ref->state(), dev_coarse = dev->state();
+      INFO(state_difference(ref_coarse, dev_coarse));
+      REQUIRE(state_difference(ref_coarse, dev_coarse).empty());
+      const SimState ref_fine = refine_state(coarse, ref_coarse, fine),
+                     dev_fine = refine_state(coarse, dev_coarse, fine);
+      REQUIRE(state_difference(ref_fine, dev_fine).empty());
+      ref = make_reference_backend(fine.topology, ref_fine, fine.params);
+      dev = make_opencl_backend(fine.topology, dev_fine, fine.params, d, sort);
+      for (int step = 1; step <= 30; ++step) {
+        ref->step(), dev->step();
+        if (step % 10 != 0) continue;
+        const std::string diff = state_difference(ref->state(), dev->state());
+        INFO("fine level, after step " << step << "\n" << diff);
+        REQUIRE(diff.empty());
+      }
+      // Not vacuous: the fine level moved on from the refined state.
+      CHECK(ref->state().iteration == 60);
+      CHECK(state_difference(ref_fine, ref->state()) != "");
+    }
 }
 
 }  // namespace animpak::test

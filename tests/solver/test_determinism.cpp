@@ -9,6 +9,7 @@
 
 #include "animpak/checkpoint.hpp"
 #include "animpak/scene.hpp"
+#include "animpak/sha256.hpp"
 #include "animpak/simulation.hpp"
 #include "scene/tiny_scenes.hpp"
 #include "temp_dir.hpp"
@@ -118,6 +119,7 @@ TEST_CASE("state.bin: every counter and mark round-trips, and files of versions 
   saved.scene_text = "{}";
   saved.scene_file = "tiny.json";
   saved.stop_reason = "gap";
+  saved.level_slices = 26;
   saved.state = w.state;
   saved.state.iteration = 700077;
   saved.state.settling_since = 700070;  // values no earlier field holds
@@ -133,9 +135,23 @@ TEST_CASE("state.bin: every counter and mark round-trips, and files of versions 
   CHECK(now.state.mark_growth_1 == 2.125);
   CHECK(now.state.mark_growth_2 == 2.0625);
   CHECK(now.state.mark_growth_3 == 2.03125);
+  CHECK(now.level_slices == 26);
 
   std::ifstream in(temp / "state.bin", std::ios::binary);
   const std::string current((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  {
+    // Version 5 (animpak 0.16 to 0.18) has no level: the same bytes without it read at the scene's slices.
+    const std::size_t level_at = current.find("gap") + 3;
+    std::string v5 = current.substr(0, level_at) + current.substr(level_at + 4, current.size() - 64 - level_at - 4);
+    v5[8] = 5;
+    v5 += sha256_hex(v5);
+    const std::filesystem::path file = temp / "v5.bin";
+    std::ofstream(file, std::ios::binary) << v5;
+    const Checkpoint old = read_checkpoint(file);
+    CHECK(old.level_slices == 0);
+    CHECK(old.state.iteration == 700077);
+    CHECK(old.state.mark_growth_3 == 2.03125);
+  }
   // The same body under an older version number with the FNV-1a checksum those versions ended in: a
   // checksum anyone can recompute after changing a value, so these files are no longer trusted.
   for (const int version : {2, 3, 4}) {
