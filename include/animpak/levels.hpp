@@ -25,9 +25,9 @@ std::string level_mismatch(const World& coarse, const World& fine);
 /// scene at its coarse level), at the same iteration: every vertex of every fine slice on the curve its
 /// vertex follows in the coarse state at the fine slice's time (include/animpak/curve.hpp, as the frames
 /// draw it), its t the slice's, its velocity and the slice's g interpolated linearly between the two coarse
-/// slices around that time; the rest lengths from the fine rest copy at those g (§5.3). The growth phase
-/// starts again (settling_since 0, the stall test's marks cleared: the fine level runs its own stop test);
-/// secondary_since is kept. Throws std::invalid_argument when level_mismatch says why.
+/// slices around that time; the rest lengths from the fine rest copy at those g (§5.3). The coarse level's
+/// stop is the packing's: the state settles from there (settling_since the refinement's iteration; the stall
+/// test's marks and secondary_since kept), so the scene's slices only clear what the refinement left. Throws std::invalid_argument when level_mismatch says why.
 SimState refine_state(const World& coarse, const SimState& coarse_state, const World& fine);
 
 }  // namespace animpak

@@ -73,7 +73,10 @@ class Progress {
                     st.outside_vertices});
     if (elapsed - last_print_ < (tty_ ? 0.5 : 5.0)) return;
     last_print_ = elapsed;
-    const std::optional<StopEstimate> estimate = model_.estimate();
+    std::optional<StopEstimate> estimate = model_.estimate();
+    // At the coarse level the model sees that level's stop; the scene's slices' steps still to come are
+    // added at their own cost (docs/cli.md, "Progress and the time left").
+    if (estimate && fine_cost_ > 0.0) estimate->seconds_left += fine_steps_ * fine_cost_ * recent_pace();
     const std::string line = pack_progress_text(st, elapsed, estimate, verbose_);
     if (tty_) {
       const double done =
@@ -86,17 +89,34 @@ class Progress {
   void finish() {
     if (tty_) std::cerr << "\n";
   }
+  /// Coarse to fine: while at the coarse level, a step at the scene's slices costs `cost` coarse steps and
+  /// about `steps` of them follow the refinement; 0 once refined.
+  void set_fine_level(double cost, double steps) { fine_cost_ = cost, fine_steps_ = steps; }
   const std::vector<ProgressSample>& samples() const { return model_.samples(); }
 
  private:
   static double now() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   }
+  // Seconds per step over the last 200 or more steps (0 before there are two samples).
+  double recent_pace() const {
+    const std::vector<ProgressSample>& s = model_.samples();
+    if (s.size() < 2) return 0.0;
+    std::size_t k = s.size() - 1;
+    while (k > 0 && s.back().iteration - s[k].iteration < 200) --k;
+    const double steps = double(s.back().iteration - s[k].iteration);
+    return steps > 0.0 ? (s.back().seconds - s[k].seconds) / steps : 0.0;
+  }
   bool tty_, verbose_;
+  double fine_cost_ = 0.0, fine_steps_ = 0.0;
   StopModel model_;
   ProgressShare share_;
   double start_, last_print_ = -1e9;
 };
+
+// The steps a packing takes at the scene's slices after its coarse level (docs/parameters.md, "Coarse to
+// fine"), for the time left while at the coarse level: about what the examples took.
+constexpr double kFineLevelSteps = 600.0;
 
 // A packing that stopped on its own (not interrupted) is finished: resuming it would only step it on past
 // its stop, changing it. One stopped by its iteration limit continues under a larger limit.
@@ -285,6 +305,9 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     previous_samples.push_back({checkpoint.state.iteration, previous_seconds});
   Progress progress(loaded.world.params, loaded.world.topology.has_secondary(), unit_mesh_density(loaded.world),
                     previous_samples, options.verbose);
+  if (coarse)
+    progress.set_fine_level(double(loaded.world.topology.vertex_count()) / coarse->world.topology.vertex_count(),
+                            kFineLevelSteps);
   RunControl control;
   control.interrupt = &interrupted;
   control.on_check = [&](const StepStatistics& st) { progress(st); };
@@ -324,6 +347,7 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
               << result.last_good.iteration << " iterations (" << reason << "); refined to "
               << loaded.world.params.element.slices << " slices\n";
     checkpoint.level_slices = 0;
+    progress.set_fine_level(0.0, 0.0);
     coarse.reset();
     level_world = &loaded.world;
     result.last_good = loaded.world.state;

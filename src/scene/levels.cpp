@@ -83,6 +83,10 @@ SimState refine_state(const World& coarse, const SimState& coarse_state, const W
       out.spring_rest[k] = rest_copy_length(topo, out.growth, v, k);
   out.iteration = coarse_state.iteration;
   out.secondary_since = coarse_state.secondary_since;
+  // The coarse level's stop is the packing's: growth stays stopped, and the scene's slices settle from the
+  // refinement on (docs/parameters.md, "Coarse to fine", has the measurement that chose this).
+  out.settling_since = coarse_state.iteration;
+  copy_progress_marks(coarse_state, out);
   return out;
 }
 
