@@ -115,8 +115,8 @@ class Progress {
 };
 
 // The steps a packing takes at the scene's slices after its coarse level (docs/parameters.md, "Coarse to
-// fine"), for the time left while at the coarse level: about what the examples took.
-constexpr double kFineLevelSteps = 600.0;
+// fine"), for the time left while at the coarse level: they settle, aquatic-loop in 10.
+constexpr double kFineLevelSteps = 50.0;
 
 // A packing that stopped on its own (not interrupted) is finished: resuming it would only step it on past
 // its stop, changing it. One stopped by its iteration limit continues under a larger limit.

@@ -9,10 +9,11 @@ namespace animpak {
 int coarse_slices(const Params& params) {
   const int slices = params.element.slices, step = params.element.coarse_step;
   if (step <= 1 || slices < 3) return 0;
+  const int coarse = (slices - 1 + step - 1) / step + 1;
   // build_world's warning: slices more than three collision-grid cells apart in t do not see each other.
+  // A scene too short for a coarse level of its step has none (fewer slices saved would not pay).
   const int grid_least = static_cast<int>(std::ceil(1.0 / (3.0 * params.forces.cell_size))) + 1;
-  const int coarse = std::max({grid_least, (slices - 1 + step - 1) / step + 1, 2});
-  return 2 * coarse <= slices ? coarse : 0;
+  return coarse >= grid_least && 2 * coarse <= slices ? coarse : 0;
 }
 
 std::string level_mismatch(const World& coarse, const World& fine) {

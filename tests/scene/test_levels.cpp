@@ -27,13 +27,16 @@ World level_world(const std::string& text, int slices) {
 
 }  // namespace
 
-TEST_CASE("coarse_slices: about one slice per coarse_step, never fewer than the grid needs, none unless at most half") {
+TEST_CASE("coarse_slices: about one slice per coarse_step, none where the grid needs more or that saves too little") {
   Params p;
   CHECK(coarse_slices(p) == 26);  // 100 slices: 99 intervals / 4, rounded up, + 1
+  p.element.slices = 40;
+  CHECK(coarse_slices(p) == 11);
   p.element.slices = 24;
-  CHECK(coarse_slices(p) == 10);  // 7 by the step, but slices 0.12 (three cells of 0.04) apart at most
-  p.element.slices = 19;
-  CHECK(coarse_slices(p) == 0);  // 10 is more than half of 19
+  CHECK(coarse_slices(p) == 0);  // 7 by the step, but slices 0.12 (three cells of 0.04) apart at most
+  p.element.coarse_step = 2;
+  CHECK(coarse_slices(p) == 0);  // 13: more than half of 24
+  p.element.coarse_step = 4;
   p.element.slices = 100;
   p.element.coarse_step = 1;
   CHECK(coarse_slices(p) == 0);
