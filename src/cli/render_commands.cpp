@@ -135,8 +135,8 @@ void add_frame_options(CLI::App& cmd, FrameOptions& f) {
       ->check(CLI::Range(0.0, 0.5));
   cmd.add_option("--interpolation", f.interpolation,
                  "how lottie and svg-anim move: linear (each path keyed where the curve between slices needs it, "
-                 "so that the player's eased line between keys stays within 3/4 of a pixel, or 0.3 % of the "
-                 "element's size, of it) "
+                 "so that the player's eased line between keys stays within 3/4 of a pixel less --curve-tolerance, "
+                 "or 0.3 % of the element's size, of it) "
                  "or hold (keyed at the frames, each shown until the next)")
       ->check(CLI::IsMember({"linear", "hold"}));
   cmd.add_option("--background", f.background,
