@@ -346,6 +346,10 @@ struct FrameOutput {
   std::vector<FrameFormat> formats{FrameFormat::png, FrameFormat::gif};
   FrameStyle style;
   int precision = 2;  ///< decimals of a pixel (of a `style.size` picture) kept in Lottie and animated SVG coordinates
+  /// Lottie and animated SVG paths are cubic Béziers within this many pixels (of a `style.size` picture) of
+  /// the art's polylines, at most 0.5, taken from the keys' three quarters of a pixel
+  /// (docs/animation-formats.md, "Curves"); 0 writes the polylines, point by point.
+  double curve_tolerance = 0.05;
   Interpolation interpolation = Interpolation::linear;
   /// Called as the render goes: `stage` is "frame" once per frame (done = frames written so far, total =
   /// count), then the name of each file or measure as it starts ("animation.json", "between slices",

@@ -55,6 +55,7 @@ struct FrameOptions {
   std::string container = "outline";     ///< outline, fill (its art's paint) or none
   bool no_container = false;             ///< --no-container: container none
   int precision = 2;                     ///< lottie, svg-anim: decimals of a pixel
+  double curve_tolerance = 0.05;         ///< lottie, svg-anim: pixels between the Béziers and the polylines
   std::string interpolation = "linear";  ///< lottie, svg-anim: linear or hold
 };
 

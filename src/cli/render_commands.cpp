@@ -80,6 +80,7 @@ FrameOutput frame_output(const FrameOptions& options) {
   out.style.container = parse_container(options);
   out.formats.clear();
   out.precision = options.precision;
+  out.curve_tolerance = options.curve_tolerance;
   out.interpolation = options.interpolation == "hold" ? Interpolation::hold : Interpolation::linear;
   for (const std::string& argument : options.formats)
     for (FrameFormat f : format_list(argument)) out.formats.push_back(f);
@@ -128,10 +129,14 @@ void add_frame_options(CLI::App& cmd, FrameOptions& f) {
   cmd.add_option("--precision", f.precision,
                  "decimals of a pixel kept in lottie and svg-anim coordinates (of a --size picture)")
       ->check(CLI::Range(0, 6));
+  cmd.add_option("--curve-tolerance", f.curve_tolerance,
+                 "pixels (of a --size picture) the cubic Bezier curves of lottie and svg-anim paths may lie from the "
+                 "art's polylines, taken from the keys' 3/4 of a pixel; 0 writes the polylines point by point")
+      ->check(CLI::Range(0.0, 0.5));
   cmd.add_option("--interpolation", f.interpolation,
                  "how lottie and svg-anim move: linear (each path keyed where the curve between slices needs it, "
-                 "so that the player's eased line between keys stays within 3/4 of a pixel, or 0.3 % of the "
-                 "element's size, of it) "
+                 "so that the player's eased line between keys stays within 3/4 of a pixel less --curve-tolerance, "
+                 "or 0.3 % of the element's size, of it) "
                  "or hold (keyed at the frames, each shown until the next)")
       ->check(CLI::IsMember({"linear", "hold"}));
   cmd.add_option("--background", f.background,

@@ -25,7 +25,8 @@ double stroke_tolerance(const World& world, int element, const FrameOutput& out)
 }
 
 // How far the player's straight line between two keys may stray from the curve the frames follow: three
-// quarters of a pixel of the output picture, or 0.3 % of the element's size where that is less. A shape's
+// quarters of a pixel of the output picture less the curves' own share (FrameOutput::curve_tolerance,
+// docs/animation-formats.md, "Curves"), or 0.3 % of the element's size where that is less. A shape's
 // overlap with itself (IoU) falls with the displacement over its size, and a star 30 pixels across, keyed
 // to 0.5 % of its size, fell to 0.985 against the PNG frame under rlottie; at 0.3 % it holds 0.99.
 constexpr double key_tolerance_px = 0.75;
@@ -358,6 +359,27 @@ double stray(const std::vector<Placement>& shown, const std::vector<std::vector<
 // (its position and angle keyframes).
 constexpr std::size_t point_key_cost = 26, place_key_cost = 140;
 
+// Every path's polylines at its keys as cubic Béziers (fit_beziers) within `tolerance_px` pixels when one
+// world unit is `pixels` pixels: the points are local to the element's frame (and a path's own), so the
+// tolerance in their units is the pixels over the largest scale the placements give them.
+void add_curves(const ArtShape& art, double pixels, double tolerance_px, ElementKeys& keys) {
+  double element_scale = 0.0;
+  for (const Placement& at : keys.placements) element_scale = std::max(element_scale, at.scale);
+  for (std::size_t p = 0; p < keys.paths.size(); ++p) {
+    PathKeys& path = keys.paths[p];
+    double own_scale = 1.0;
+    for (const Placement& at : path.placements) own_scale = std::max(own_scale, at.scale);
+    const double tolerance = tolerance_px / (pixels * element_scale * own_scale);
+    path.curves.assign(path.lines.size(), {});
+    for (std::size_t q = 0; q < art.paths[p].polylines.size(); ++q) {
+      std::vector<std::vector<Vec2>> at_keys;
+      for (const auto& lines : path.lines) at_keys.push_back(lines[q]);
+      const std::vector<BezierLine> fitted = fit_beziers(at_keys, art.paths[p].polylines[q].closed, tolerance);
+      for (std::size_t k = 0; k < fitted.size(); ++k) path.curves[k].push_back(fitted[k]);
+    }
+  }
+}
+
 // Element `element`'s keys, its art reflected across the container's mirror when `reflected` (a drawn
 // mirror image): element_keys and drawn_keys.
 ElementKeys keys_of(const World& world, const SimState& state, int element, const FrameOutput& out, bool reflected) {
@@ -397,7 +419,7 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
       fit_to_picture(raster_width(box, out.style.size), out.style.size, box, 0.02 * out.style.size).scale;
   const bool cubic = world.params.forces.motion_curve != curve_linear;
   const std::vector<Vec2> tangents = element_tangents(world, state, element);
-  double tolerance = key_tolerance_px / pixels;
+  double tolerance = (key_tolerance_px - std::clamp(out.curve_tolerance, 0.0, 0.5)) / pixels;
   {
     const std::vector<Vec2> start = element_at(world, state, element, 0.0, tangents);
     double x0 = start.front().x, x1 = x0, y0 = start.front().y, y1 = y0;
@@ -546,6 +568,8 @@ ElementKeys keys_of(const World& world, const SimState& state, int element, cons
             keys.stroke_ease.emplace_back();
     }
   }
+  if (!keys.frames.empty() && out.curve_tolerance > 0)
+    add_curves(lib.art.art, pixels, std::min(out.curve_tolerance, 0.5), keys);
   return keys;
 }
 

@@ -121,6 +121,20 @@ std::string shape_value(const std::vector<Vec2>& pixels, bool closed, int decima
   return "{\"i\":" + zeros + ",\"o\":" + zeros + ",\"v\":" + v + ",\"c\":" + (closed ? "true" : "false") + "}";
 }
 
+// A Lottie shape value of cubic Bézier segments (BezierLine), its points mapped by `to`: each vertex with its
+// in and out tangents relative to it, [0, 0] on a straight side.
+template <class Map>
+std::string bezier_shape_value(const BezierLine& line, Map to, int decimals) {
+  std::string v = "[", in = "[", out = "[";
+  const auto pair = [&](Vec2 p) { return "[" + number(p.x, decimals) + "," + number(p.y, decimals) + "]"; };
+  for (std::size_t k = 0; k < line.points.size(); ++k) {
+    const Vec2 at = to(line.points[k]);
+    const std::string comma = k ? "," : "";
+    v += comma + pair(at), in += comma + pair(to(line.before[k]) - at), out += comma + pair(to(line.after[k]) - at);
+  }
+  return "{\"i\":" + in + "],\"o\":" + out + "],\"v\":" + v + "],\"c\":" + (line.closed ? "true" : "false") + "}";
+}
+
 // Keyframes of one property, value(k) at frames[k]. Linear keys ease linearly (a straight line between two
 // keys) unless `ease` gives the interval a timing curve (Ease); hold keys ("h": 1) show their value until
 // the next. Keys carry no end value ("e"): each interval ends on the next key's start, as Bodymovin 5.5 and
@@ -286,8 +300,10 @@ class LottieLayers {
       write_keyframes(
           json_, path_keys.frames, interpolation_, true,
           [&](std::size_t k) {
+            const auto to = [&](Vec2 v) { return placed_ ? v * fit_.scale : fit_.to_pixel(v) - origin_; };
+            if (!path_keys.curves.empty()) return bezier_shape_value(path_keys.curves[k][q], to, decimals_);
             std::vector<Vec2> pixels = path_keys.lines[k][q];
-            for (Vec2& v : pixels) v = placed_ ? v * fit_.scale : fit_.to_pixel(v) - origin_;
+            for (Vec2& v : pixels) v = to(v);
             return shape_value(pixels, path.polylines[q].closed, decimals_);
           },
           path_keys.ease);
@@ -419,16 +435,45 @@ SvgView svg_view(const World& world, const FrameOutput& out) {
 }
 
 // A path's d, its points as `to` writes them (in the art's coordinates less an origin, or a placed
-// element's own frame).
+// element's own frame): its polylines, or with `curves` (BezierLine, one per polyline) their cubic
+// segments, C for a curved one and L for a straight one, so that every key of a path writes the same
+// commands.
 template <class Map>
 void write_svg_path_data(std::ostream& svg, const SvgView& view, const ArtPath& path,
-                         const std::vector<std::vector<Vec2>>& lines, Map to) {
+                         const std::vector<std::vector<Vec2>>& lines, Map to,
+                         const std::vector<BezierLine>* curves = nullptr) {
   bool first = true;
+  const auto point = [&](Vec2 v) {
+    const Vec2 a = to(v);
+    svg << view.n(a.x) << ' ' << view.n(a.y);
+  };
   for (std::size_t q = 0; q < path.polylines.size(); ++q) {
     if (!drawn(path.polylines[q])) continue;
-    for (std::size_t k = 0; k < lines[q].size(); ++k) {
-      const Vec2 a = to(lines[q][k]);
-      svg << (k ? " L" : (first ? "M" : " M")) << view.n(a.x) << ' ' << view.n(a.y);
+    if (curves != nullptr) {
+      const BezierLine& line = (*curves)[q];
+      const std::size_t n = line.points.size();
+      svg << (first ? "M" : " M");
+      point(line.points[0]);
+      for (std::size_t k = 0; k < (line.closed ? n : n - 1); ++k) {
+        const std::size_t next = (k + 1) % n;
+        const bool straight = line.after[k] == line.points[k] && line.before[next] == line.points[next];
+        if (straight && next == 0) break;  // Z closes it
+        if (straight) {
+          svg << " L";
+        } else {
+          svg << " C";
+          point(line.after[k]);
+          svg << ' ';
+          point(line.before[next]);
+          svg << ' ';
+        }
+        point(line.points[next]);
+      }
+    } else {
+      for (std::size_t k = 0; k < lines[q].size(); ++k) {
+        svg << (k ? " L" : (first ? "M" : " M"));
+        point(lines[q][k]);
+      }
     }
     if (path.polylines[q].closed) svg << " Z";
     first = false;
@@ -533,8 +578,9 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
   svg << "<path";
   if (!keys.placements.empty())
     svg << " transform=\"translate(" << translate(0) << ") rotate(" << rotate(0) << ") scale(" << scale(0) << ")\"";
+  const auto curves = [&](std::size_t k) { return keys.curves.empty() ? nullptr : &keys.curves[k]; };
   svg << " d=\"";
-  write_svg_path_data(svg, view, path, keys.lines[0], to);
+  write_svg_path_data(svg, view, path, keys.lines[0], to, curves(0));
   svg << "\"" << svg_paint(path, stroke_width(0));
   if (keys.frames.size() == 1 && element.stroke_frames.size() == 1 && keys.place_frames.size() <= 1) {
     svg << "/>\n";
@@ -557,7 +603,7 @@ void write_animated_path(std::ostream& svg, const SvgView& view, const ArtPath& 
     svg << "<animate attributeName=\"d\" " << shape_timing << " values=\"";
     for (std::size_t k = 0; k < keys.frames.size(); ++k) {
       if (k) svg << ';';
-      write_svg_path_data(svg, view, path, keys.lines[k], to);
+      write_svg_path_data(svg, view, path, keys.lines[k], to, curves(k));
     }
     svg << "\"/>\n";
   }

@@ -54,6 +54,24 @@ struct Placement {
   }
 };
 
+/// One polyline drawn as cubic Bézier segments: vertex k at points[k], with the control point before it
+/// (`before[k]`, ending the segment from vertex k − 1) and the one after it (`after[k]`, starting the
+/// segment to vertex k + 1), absolute, each equal to its vertex on a straight side; a closed line's last
+/// segment runs from its last vertex back to vertex 0 (docs/animation-formats.md, "Curves").
+struct BezierLine {
+  std::vector<Vec2> points, before, after;
+  bool closed = true;
+};
+
+/// One polyline at every key of a path (`keys[k]`, the same point count in each) as cubic Bézier segments
+/// with the same knots in every key, so that a player's straight move of vertices and control points from
+/// key to key keeps the curves within `tolerance` of the polyline's points as it moves them: each knot one
+/// of the polyline's points, every turn of more than 45 degrees one, and each segment, at every key, a
+/// straight side or the least-squares cubic through the points between, which lies within `tolerance` of
+/// each of them and of each edge's middle at parameters common to the keys. A line of fewer than 3 points,
+/// or `tolerance` 0, comes back as its polyline (every control point on its vertex).
+std::vector<BezierLine> fit_beziers(const std::vector<std::vector<Vec2>>& keys, bool closed, double tolerance);
+
 /// The keys of one art path: its polylines' points at `frames`, increasing, in frames of the document
 /// (frame i is frames/frame_i.png), and the easing of each interval between two keys (ease[k] leads from
 /// frames[k] to frames[k + 1]). One key: the path does not change shape in its frame. With `placements`
@@ -64,6 +82,9 @@ struct PathKeys {
   std::vector<double> frames;
   std::vector<std::vector<std::vector<Vec2>>> lines;
   std::vector<Ease> ease;
+  /// The polylines as cubic Béziers at each key (curves[k][q], fit_beziers), in the same coordinates as
+  /// `lines`; empty: the writers write the polylines themselves.
+  std::vector<std::vector<BezierLine>> curves;
   std::vector<double> place_frames;
   std::vector<Placement> placements;
   std::vector<Ease> place_ease;
