@@ -257,7 +257,8 @@ TEST_CASE("animpak render: a state whose values a packing cannot hold is refused
   const std::string out = box.path("out");
   REQUIRE(run_animpak("pack " + box.scene() + " --out " + out + " --max-iterations 10 --no-render").code == 0);
   const std::string good = read_text(out + "/state.bin");
-  // The layout (include/animpak/checkpoint.hpp): magic, version, three strings and the counters, then x.
+  // The layout (include/animpak/checkpoint.hpp): magic, version, three strings, the level and the counters,
+  // then x.
   std::size_t at = 8 + 4;
   const auto skip_string = [&] {
     std::uint64_t n;
@@ -268,6 +269,7 @@ TEST_CASE("animpak render: a state whose values a packing cannot hold is refused
   skip_string();        // its path
   at += 8;              // the seed
   skip_string();        // the stop reason
+  at += 4;              // the level
   at += 4 * 8 + 4 * 8;  // iteration, settling, secondary, mark; four growth marks
   at += 8;              // x's length
   const auto with_x = [&](float value) {
