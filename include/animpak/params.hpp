@@ -61,21 +61,23 @@ struct Params {
     double k_boundary = 5.0;         ///< Eq. 4
     double k_torsion = 2e-4;         ///< Eq. 5
     double k_target_angle = 2e-3;    ///< Eq. 5 on a guided element's slices whose targets give an angle
+    // clang-format off
     /// The stiffness of each force of AP_LOCAL_FORCES (kernels/shared_types.h), with its default: Eq. 6's k_tmp.
 #define AP_PARAMS_MEMBER(name, stiffness, default_value, ...) double stiffness = default_value;
     AP_LOCAL_FORCES(AP_PARAMS_MEMBER)
 #undef AP_PARAMS_MEMBER
-    double dt = 0.05;               ///< Δt_sim, symplectic Euler step
-    double velocity_cap = 0.02;     ///< speeds are capped at velocity_cap · Δt_sim
-    double cell_size = 0.04;        ///< collision grid cell edge (25³ cells over the unit cube)
-    int grid_rebuild_interval = 1;  ///< rebuild the collision grid every k steps
-    int far_cells = 1;              ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
-                                    ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
-    int interval_points = 7;        ///< the overlap test also checks this many evenly spaced times inside
-                                    ///< every slice interval (1: the middle only; docs/parameters.md)
-    int motion_curve = 2;           ///< between slices every vertex follows 2: the C2 spline through its
-                                    ///< slices, 1: a monotone C1 cubic, 0: straight lines (§6);
-                                    ///< include/animpak/curve.hpp
+    double dt = 0.05;                ///< Δt_sim, symplectic Euler step
+    double velocity_cap = 0.02;      ///< speeds are capped at velocity_cap · Δt_sim
+    double cell_size = 0.04;         ///< collision grid cell edge (25³ cells over the unit cube)
+    int grid_rebuild_interval = 1;   ///< rebuild the collision grid every k steps
+    int far_cells = 1;               ///< 1: Eq. 1's far shell sums one mean centroid per cell and element
+                                     ///< (weighted by its triangles); 0: every triangle's centroid (§5.1)
+    int interval_points = 7;         ///< the overlap test also checks this many evenly spaced times inside
+                                     ///< every slice interval (1: the middle only; docs/parameters.md)
+    int motion_curve = 2;            ///< between slices every vertex follows 2: the C2 spline through its
+                                     ///< slices, 1: a monotone C1 cubic, 0: straight lines (§6);
+                                     ///< include/animpak/curve.hpp
+    // clang-format on
   };
 
   /// §5.3 growth (src/solver).

@@ -91,13 +91,15 @@ const std::array<ParamInfo, 53 + AP_LOCAL_FORCE_COUNT> table{{
     {"k_target_angle", "forces", field<&Params::forces, &Params::Forces::k_target_angle>(), 0.0, inf,
      "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)",
      "not stated (§4: an optional orientation at targets)"},
+// clang-format off
 // The rows of AP_LOCAL_FORCES (kernels/shared_types.h), where their members are in Params::Forces.
 #define AP_LOCAL_FORCE_ROW(name, stiffness, default_value, max, meaning, paper) \
   {#stiffness, "forces", field<&Params::forces, &Params::Forces::stiffness>(), 0.0, max, meaning, paper},
     AP_LOCAL_FORCES(AP_LOCAL_FORCE_ROW)
 #undef AP_LOCAL_FORCE_ROW
-        {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)",
-         "Δt_sim = 0.01 (§5)"},
+    // clang-format on
+    {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)",
+     "Δt_sim = 0.01 (§5)"},
     {"velocity_cap", "forces", field<&Params::forces, &Params::Forces::velocity_cap>(), 0.0, inf,
      "speeds are capped at velocity_cap · Δt_sim (§5)", "10 Δt_sim (§5)"},
     {"cell_size", "forces", field<&Params::forces, &Params::Forces::cell_size>(), 0.005, 1.0,
