@@ -2,7 +2,7 @@
 # kernels from any folder (docs/architecture.md, "The twin rule"). Two roles in one file:
 #   include(cmake/EmbedKernels.cmake) defines animpak_embed_kernels(OUTPUT KERNEL_DIR);
 #   cmake -DKERNEL_DIR=... -DOUTPUT=... -P cmake/EmbedKernels.cmake writes OUTPUT (run at build time).
-# The generated file defines animpak::opencl::embedded_kernel_source(name).
+# The generated file defines animpak::opencl::embedded_kernel_source(name) and embedded_kernel_names().
 
 if(CMAKE_SCRIPT_MODE_FILE)
   file(GLOB kernel_files RELATIVE "${KERNEL_DIR}" "${KERNEL_DIR}/*.cl" "${KERNEL_DIR}/*.h")
@@ -24,6 +24,9 @@ if(CMAKE_SCRIPT_MODE_FILE)
        "constexpr EmbeddedKernel embedded[] = {\n${entries}};\n\n}  // namespace\n\n"
        "std::string_view embedded_kernel_source(std::string_view name) {\n"
        "  for (const EmbeddedKernel& k : embedded)\n    if (k.name == name) return k.text;\n  return {};\n}\n\n"
+       "std::vector<std::string_view> embedded_kernel_names() {\n"
+       "  std::vector<std::string_view> names;\n"
+       "  for (const EmbeddedKernel& k : embedded) names.push_back(k.name);\n  return names;\n}\n\n"
        "}  // namespace animpak::opencl\n")
   # Only a changed text touches the output, so editing one kernel rebuilds one object.
   file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)

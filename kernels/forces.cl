@@ -1,8 +1,8 @@
 /* Total force, paper Eq. 7, gathered per vertex (src/solver/reference/forces.cpp): the overlap
  * test and repulsion first (the repulsion kernel, one work-item per boundary vertex), the container
- * query, then every other force, summed left to right in this order:
+ * query, then every other force, summed left to right in the order of AP_FORCE_TERMS (shared_types.h):
  *   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
- * with F_edg the springs' sum plus the fold guard. Zero forces are still added, so a −0 sum turns into +0
+ * with F_edg the springs' sum plus the fold guard and the forces of AP_LOCAL_FORCES last. Zero forces are still added, so a −0 sum turns into +0
  * exactly as in the reference. What the step reads besides the forces, each vertex's gap and contact
  * bits, is contact_gap's (contact.cl), from the container query this kernel leaves in `wall`. */
 
@@ -53,9 +53,9 @@ __kernel void step_forces(const WorldInfo world,
 
   const uchar overlap_bits = boundary ? repulsion_contact[v] : 0;
   const bool overlapping = overlap_bits != 0, inside = (overlap_bits & AP_CONTACT_INSIDE) != 0;
-  const float rpl_x = boundary ? repulsion[AP_RPL_X * vs + v] : 0.0f,
-              rpl_y = boundary ? repulsion[AP_RPL_Y * vs + v] : 0.0f,
-              rpl_t = boundary ? repulsion[AP_RPL_T * vs + v] : 0.0f;
+  const float repulsion_x = boundary ? repulsion[AP_RPL_X * vs + v] : 0.0f,
+              repulsion_y = boundary ? repulsion[AP_RPL_Y * vs + v] : 0.0f,
+              repulsion_t = boundary ? repulsion[AP_RPL_T * vs + v] : 0.0f;
   float wall2, wall_x, wall_y;
   bool in_container;
   if (boundary && p.k_mirror != 0.0f) { /* wall_mirror_force made this query, nearest point included */
@@ -67,53 +67,68 @@ __kernel void step_forces(const WorldInfo world,
     wall_inside[v] = in_container ? 1 : 0;
     wall_d2[v] = wall2;
   }
-  float edg_x, edg_y, edg_t;
+  float springs_x, springs_y, springs_t;
   spring_force(p, v, springs + AP_SPRINGS_BEGIN * world.spring_stride, springs + AP_SPRINGS_OTHER * world.spring_stride,
-               springs + AP_SPRINGS_CLASS * world.spring_stride, spring_rest, x, y, t, &edg_x, &edg_y, &edg_t);
+               springs + AP_SPRINGS_CLASS * world.spring_stride, spring_rest, x, y, t, &springs_x, &springs_y,
+               &springs_t);
   { /* F_edg = springs + the fold guard (reference step_forces) */
     float fold_x, fold_y;
     fold_force(p, v, slice, tri_begin, tri_list, tri_a, tri_b, tri_c, vertex_rest + AP_REST_COPY_X * vs,
                vertex_rest + AP_REST_COPY_Y * vs, growth, x, y, &fold_x, &fold_y);
-    edg_x = edg_x + fold_x;
-    edg_y = edg_y + fold_y;
+    springs_x = springs_x + fold_x;
+    springs_y = springs_y + fold_y;
   }
-  float tgt_x = 0.0f, tgt_y = 0.0f, tgt_t = 0.0f;
+  float target_x = 0.0f, target_y = 0.0f, target_t = 0.0f;
   if (target[v] >= 0 && (flags[v] & AP_VERTEX_ANCHOR) != 0)
     target_force(p, target[v], px, py, pt, targets + AP_X * world.target_stride, targets + AP_Y * world.target_stride,
-                 targets + AP_T * world.target_stride, &tgt_x, &tgt_y, &tgt_t);
-  float bdr_x = 0.0f, bdr_y = 0.0f, bdr_t = 0.0f;
-  boundary_force(p, in_container, wall2, wall_x, wall_y, px, py, boundary, &bdr_x, &bdr_y);
+                 targets + AP_T * world.target_stride, &target_x, &target_y, &target_t);
+  float boundary_x = 0.0f, boundary_y = 0.0f, boundary_t = 0.0f;
+  boundary_force(p, in_container, wall2, wall_x, wall_y, px, py, boundary, &boundary_x, &boundary_y);
   if (boundary && p.k_mirror != 0.0f && !overlapping) { /* the wall's mirror image (wall_mirror_force) */
-    bdr_x = bdr_x + wall[AP_WALL_MIRROR_X * vs + v];
-    bdr_y = bdr_y + wall[AP_WALL_MIRROR_Y * vs + v];
-    bdr_t = bdr_t + wall[AP_WALL_MIRROR_T * vs + v];
+    boundary_x = boundary_x + wall[AP_WALL_MIRROR_X * vs + v];
+    boundary_y = boundary_y + wall[AP_WALL_MIRROR_Y * vs + v];
+    boundary_t = boundary_t + wall[AP_WALL_MIRROR_T * vs + v];
   }
-  float ovr_x = 0.0f, ovr_y = 0.0f, ovr_t = 0.0f;
+  float overlap_x = 0.0f, overlap_y = 0.0f, overlap_t = 0.0f;
   if (overlapping)
     overlap_force(p, v, inside, repulsion[AP_RPL_DEPTH_X * vs + v], repulsion[AP_RPL_DEPTH_Y * vs + v], tri_begin,
-                  tri_list, tri_a, tri_b, tri_c, x, y, t, &ovr_x, &ovr_y, &ovr_t);
+                  tri_list, tri_a, tri_b, tri_c, x, y, t, &overlap_x, &overlap_y, &overlap_t);
   const int s = slice[v];
-  float tor_x = 0.0f, tor_y = 0.0f;
-  const float tor_t = 0.0f;
+  float torsion_x = 0.0f, torsion_y = 0.0f;
+  const float torsion_t = 0.0f;
   const float k_tor = (flags[v] & AP_VERTEX_HOLD_ANGLE) != 0 ? p.k_target_angle : p.k_torsion;
   torsion_force(k_tor, px, py, slice_geometry[AP_GEOM_CX * world.slice_stride + s],
                 slice_geometry[AP_GEOM_CY * world.slice_stride + s], vertex_rest[AP_REST_DIR_X * vs + v],
-                vertex_rest[AP_REST_DIR_Y * vs + v], &tor_x, &tor_y);
-  const float temporal_x = 0.0f, temporal_y = 0.0f;
-  const float temporal_t = temporal_force(p, vertex_rest[AP_REST_T * vs + v], pt);
+                vertex_rest[AP_REST_DIR_Y * vs + v], &torsion_x, &torsion_y);
+  const LocalForceInputs in = {x,
+                               y,
+                               t,
+                               vertex_topology + AP_TOPO_ELEMENT * vs,
+                               slice,
+                               flags,
+                               target,
+                               vertex_rest + AP_REST_T * vs,
+                               vertex_rest + AP_REST_DIR_X * vs,
+                               vertex_rest + AP_REST_DIR_Y * vs,
+                               vertex_rest + AP_REST_COPY_X * vs,
+                               vertex_rest + AP_REST_COPY_Y * vs,
+                               vertex_rest + AP_REST_COPY_T * vs};
+#define AP_KERNEL_LOCAL_FORCE(name, ...) \
+  float name##_x, name##_y, name##_t;    \
+  name##_force(p, in, v, &name##_x, &name##_y, &name##_t);
+  AP_LOCAL_FORCES(AP_KERNEL_LOCAL_FORCE)
+#undef AP_KERNEL_LOCAL_FORCE
 
-  forces[AP_X * vs + v] = rpl_x + edg_x + tgt_x + bdr_x + ovr_x + tor_x + temporal_x;
-  forces[AP_Y * vs + v] = rpl_y + edg_y + tgt_y + bdr_y + ovr_y + tor_y + temporal_y;
-  forces[AP_T * vs + v] = rpl_t + edg_t + tgt_t + bdr_t + ovr_t + tor_t + temporal_t;
+#define AP_KERNEL_PART(name, ...) {name##_x, name##_y, name##_t},
+  const float part[AP_FORCE_COMPONENTS][3] = {AP_FORCE_TERMS(AP_KERNEL_PART)};
+#undef AP_KERNEL_PART
+  for (int axis = 0; axis < 3; ++axis) {
+    float sum = part[0][axis];
+    for (int c = 1; c < AP_FORCE_COMPONENTS; ++c) sum = sum + part[c][axis];
+    forces[axis * vs + v] = sum;
+  }
   if (world.breakdown == 0) return;
   const int n = world.vertices;
-  const float parts[AP_FORCE_COMPONENTS][3] = {{rpl_x, rpl_y, rpl_t},
-                                               {edg_x, edg_y, edg_t},
-                                               {tgt_x, tgt_y, tgt_t},
-                                               {bdr_x, bdr_y, bdr_t},
-                                               {ovr_x, ovr_y, ovr_t},
-                                               {tor_x, tor_y, tor_t},
-                                               {temporal_x, temporal_y, temporal_t}};
   for (int c = 0; c < AP_FORCE_COMPONENTS; ++c)
-    for (int axis = 0; axis < 3; ++axis) breakdown[(c * 3 + axis) * n + v] = parts[c][axis];
+    for (int axis = 0; axis < 3; ++axis) breakdown[(c * 3 + axis) * n + v] = part[c][axis];
 }

@@ -208,6 +208,35 @@ typedef struct {
   ap_int band_segments, cell_start, cell_segments;
 } ContainerIndexInfo;
 
+/* The forces of Eq. 7, one row each, in the order the sum adds them (docs/architecture.md, "How to add a
+ * force"). Every list of the forces follows this one: the total's left-to-right sum in both step_forces
+ * (kernels/forces.cl, src/solver/reference/forces.cpp), the fields of ForceBreakdown
+ * (include/animpak/solver/step.hpp), the breakdown buffer's components and breakdown_forces
+ * (src/solver/compare.cpp), which validate and the equivalence suite compare. X(name, ...): the first
+ * six are computed in step_forces itself; AP_LOCAL_FORCES's rows follow them. */
+#define AP_FORCE_TERMS(X) X(repulsion) X(springs) X(target) X(boundary) X(overlap) X(torsion) AP_LOCAL_FORCES(X)
+
+/* Forces of one vertex's own state with one stiffness each, one row per force:
+ *   X(name, stiffness, default, max, meaning, paper)
+ * The row is the whole binding: the stiffness is a ForceParams field set by step_params with one
+ * static_cast<float>, a Params::Forces member (a double with that default) and a row of the "forces" group
+ * of param_table() (src/io/params.cpp; range 0 to max, meaning and the paper's value as the table prints
+ * them). Its force is name_force: in the reference, Vec3f name_force(const Topology&, const SimState&,
+ * const ForceParams&, std::int32_t v), declared from this list in include/animpak/reference/local_forces.hpp;
+ * in the kernels, void name_force(const ForceParams p, const LocalForceInputs in, int v, float* fx,
+ * float* fy, float* ft) in a kernel file of its own, which program_source places before forces.cl
+ * (src/solver/opencl/program.cpp). Both step_forces call it for every vertex. The host reads every
+ * column, the kernels the first two. */
+/* clang-format off */
+#define AP_LOCAL_FORCES(X) \
+  X(temporal, k_temporal, 1.0, inf, "k_tmp, temporal strength (Eq. 6)", "k_tmp = 1 (Eq. 6)")
+/* clang-format on */
+
+/* How many rows a list has: 0 AP_LOCAL_FORCES(AP_COUNT_ROW). */
+#define AP_COUNT_ROW(...) +1
+enum { AP_LOCAL_FORCE_COUNT = 0 AP_LOCAL_FORCES(AP_COUNT_ROW) };
+#define AP_FORCE_PARAMS_FIELD(name, stiffness, ...) ap_float stiffness;
+
 /* Every Params constant of the step's arithmetic, converted once to float (static_cast<float>, products
  * formed in double first) by step_params (src/solver/step_params.cpp): the kernels get it by value, the
  * reference reads the same block. */
@@ -215,7 +244,8 @@ typedef struct {
   ap_float k_repulsion, repulsion_epsilon;
   ap_float k_wall;                      /* wall_repulsion * k_repulsion */
   ap_float k_spring[AP_SPRING_CLASSES]; /* by SpringClass */
-  ap_float k_target, k_overlap, k_overlap_depth, k_boundary, k_torsion, k_temporal;
+  ap_float k_target, k_overlap, k_overlap_depth, k_boundary, k_torsion;
+  AP_LOCAL_FORCES(AP_FORCE_PARAMS_FIELD) /* the stiffness of each force of AP_LOCAL_FORCES */
   ap_float dt;
   ap_float velocity_cap; /* velocity_cap * dt */
   ap_float growth_step;  /* growth_rate * dt */
@@ -236,7 +266,8 @@ typedef struct {
   ap_float growth_boost;       /* a free slice's growth step is at most growth_boost × growth_step */
   ap_float boost_gap;          /* ... and growth_step × slice gap / boost_gap below that */
   ap_float boost_step;         /* boost_speed * velocity_cap * dt * dt: the outline's largest boosted step */
-  ap_float pad_boost;          /* unused: keeps the size a multiple of 8 bytes */
+  ap_float pad[2 - AP_LOCAL_FORCE_COUNT % 2]; /* unused, 0: with the 32 fields besides AP_LOCAL_FORCES, keeps
+                                               * the size a multiple of 8 bytes (src/solver/opencl/layout.cpp) */
 } ForceParams;
 
 /* Sizes of the world and the strides of its grouped buffers, passed to every kernel that walks more
@@ -254,14 +285,20 @@ typedef struct {
   ap_int segment_stride;  /* segments */
 } WorldInfo;
 
-/* Force components in the breakdown buffer, each 3 * vertices floats (x, then y, then t). */
-#define AP_FORCE_REPULSION 0
-#define AP_FORCE_SPRINGS 1
-#define AP_FORCE_TARGET 2
-#define AP_FORCE_BOUNDARY 3
-#define AP_FORCE_OVERLAP 4
-#define AP_FORCE_TORSION 5
-#define AP_FORCE_TEMPORAL 6
-#define AP_FORCE_COMPONENTS 7
+/* Force components in the breakdown buffer, each 3 * vertices floats (x, then y, then t): AP_FORCE_<name>
+ * for every row of AP_FORCE_TERMS, in its order. */
+#define AP_FORCE_TERM_INDEX(name, ...) AP_FORCE_##name,
+enum { AP_FORCE_TERMS(AP_FORCE_TERM_INDEX) AP_FORCE_COMPONENTS };
+
+#ifdef __OPENCL_VERSION__
+/* What a force of AP_LOCAL_FORCES reads of vertex v, the planes step_forces names at its top: the
+ * positions and the per-vertex topology and rest state (the kernels' twin of the reference's Topology and
+ * SimState). */
+typedef struct {
+  __global const float *x, *y, *t;
+  __global const int *element, *slice, *flags, *target;
+  __global const float *rest_t, *rest_dir_x, *rest_dir_y, *rest_copy_x, *rest_copy_y, *rest_copy_t;
+} LocalForceInputs;
+#endif
 
 #endif

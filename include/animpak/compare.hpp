@@ -45,8 +45,9 @@ struct NamedForce {
   ForceField ForceBreakdown::*field;
 };
 
-/// The seven forces in the order of Eq. 7 (the total is StepForces::total).
-extern const std::array<NamedForce, 7> breakdown_forces;
+/// The forces of Eq. 7 in their sum's order, one per row of AP_FORCE_TERMS (kernels/shared_types.h), named
+/// as it names them (the total is StepForces::total).
+extern const std::array<NamedForce, AP_FORCE_COMPONENTS> breakdown_forces;
 
 /// One per-element array of a SimState and what its index counts.
 struct NamedStateArray {

@@ -7,6 +7,8 @@
 // include/animpak/param_table.hpp).
 #pragma once
 
+#include "shared_types.h"
+
 namespace animpak {
 
 struct Params {
@@ -62,7 +64,11 @@ struct Params {
     double k_boundary = 5.0;         ///< Eq. 4
     double k_torsion = 2e-4;         ///< Eq. 5
     double k_target_angle = 2e-3;    ///< Eq. 5 on a guided element's slices whose targets give an angle
-    double k_temporal = 1.0;         ///< Eq. 6
+    // clang-format off
+    /// The stiffness of each force of AP_LOCAL_FORCES (kernels/shared_types.h), with its default: Eq. 6's k_tmp.
+#define AP_PARAMS_MEMBER(name, stiffness, default_value, ...) double stiffness = default_value;
+    AP_LOCAL_FORCES(AP_PARAMS_MEMBER)
+#undef AP_PARAMS_MEMBER
     double dt = 0.05;                ///< Δt_sim, symplectic Euler step
     double velocity_cap = 0.02;      ///< speeds are capped at velocity_cap · Δt_sim
     double cell_size = 0.04;         ///< collision grid cell edge (25³ cells over the unit cube)
@@ -74,6 +80,7 @@ struct Params {
     int motion_curve = 2;            ///< between slices every vertex follows 2: the C2 spline through its
                                      ///< slices, 1: a monotone C1 cubic, 0: straight lines (§6);
                                      ///< include/animpak/curve.hpp
+    // clang-format on
   };
 
   /// §5.3 growth (src/solver).

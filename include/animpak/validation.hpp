@@ -43,7 +43,7 @@ struct DeviceValidation {
   std::string error;  ///< the OpenCL error that stopped the comparison; empty when it ran
   int steps = 0;
   std::vector<std::int64_t> checked_states;  ///< states whose forces were compared
-  std::vector<ForceComparison> forces;       ///< the seven forces, then "total"
+  std::vector<ForceComparison> forces;       ///< the forces of Eq. 7 (breakdown_forces), then "total"
   std::int64_t first_differing_step = -1;    ///< -1: the states stayed identical
   std::vector<StateMismatch> mismatches;     ///< at first_differing_step
 

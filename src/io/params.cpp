@@ -21,7 +21,7 @@ constexpr auto field() {
 
 // Ranges reject values that make the simulation meaningless (a negative stiffness, a zero time step);
 // they do not judge taste.
-const std::array<ParamInfo, 55> table{{
+const std::array<ParamInfo, 54 + AP_LOCAL_FORCE_COUNT> table{{
     {"flatten_tolerance", "art", field<&Params::art, &Params::ArtImport::flatten_tolerance>(), 1e-4, 10.0,
      "curve flattening tolerance, art units", "not in the paper (art import)"},
     {"offset", "element", field<&Params::element, &Params::Element::offset>(), 0.0, 0.5,
@@ -94,8 +94,13 @@ const std::array<ParamInfo, 55> table{{
     {"k_target_angle", "forces", field<&Params::forces, &Params::Forces::k_target_angle>(), 0.0, inf,
      "k_tor on the slices of guided elements whose targets give an angle (Eq. 5, §4)",
      "not stated (§4: an optional orientation at targets)"},
-    {"k_temporal", "forces", field<&Params::forces, &Params::Forces::k_temporal>(), 0.0, inf,
-     "k_tmp, temporal strength (Eq. 6)", "k_tmp = 1 (Eq. 6)"},
+// clang-format off
+// The rows of AP_LOCAL_FORCES (kernels/shared_types.h), where their members are in Params::Forces.
+#define AP_LOCAL_FORCE_ROW(name, stiffness, default_value, max, meaning, paper) \
+  {#stiffness, "forces", field<&Params::forces, &Params::Forces::stiffness>(), 0.0, max, meaning, paper},
+    AP_LOCAL_FORCES(AP_LOCAL_FORCE_ROW)
+#undef AP_LOCAL_FORCE_ROW
+    // clang-format on
     {"dt", "forces", field<&Params::forces, &Params::Forces::dt>(), 1e-6, 1.0, "Δt_sim, symplectic Euler step (§5)",
      "Δt_sim = 0.01 (§5)"},
     {"velocity_cap", "forces", field<&Params::forces, &Params::Forces::velocity_cap>(), 0.0, inf,

@@ -43,13 +43,9 @@ FloatDifference compare_floats(std::span<const float> expected, std::span<const 
   return d;
 }
 
-const std::array<NamedForce, 7> breakdown_forces = {{{"repulsion", &ForceBreakdown::repulsion},
-                                                     {"springs", &ForceBreakdown::springs},
-                                                     {"target", &ForceBreakdown::target},
-                                                     {"boundary", &ForceBreakdown::boundary},
-                                                     {"overlap", &ForceBreakdown::overlap},
-                                                     {"torsion", &ForceBreakdown::torsion},
-                                                     {"temporal", &ForceBreakdown::temporal}}};
+#define AP_NAMED_FORCE(name, ...) NamedForce{#name, &ForceBreakdown::name},
+const std::array<NamedForce, AP_FORCE_COMPONENTS> breakdown_forces = {AP_FORCE_TERMS(AP_NAMED_FORCE)};
+#undef AP_NAMED_FORCE
 
 const std::array<NamedStateArray, 8> state_arrays = {{{"x", &SimState::x, "vertex"},
                                                       {"y", &SimState::y, "vertex"},

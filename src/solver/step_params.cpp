@@ -24,7 +24,9 @@ ForceParams step_params(const Params& params) {
   p.k_overlap_depth = static_cast<float>(f.k_overlap_depth);
   p.k_boundary = static_cast<float>(f.k_boundary);
   p.k_torsion = static_cast<float>(f.k_torsion);
-  p.k_temporal = static_cast<float>(f.k_temporal);
+#define AP_SET_STIFFNESS(name, stiffness, ...) p.stiffness = static_cast<float>(f.stiffness);
+  AP_LOCAL_FORCES(AP_SET_STIFFNESS)
+#undef AP_SET_STIFFNESS
   p.dt = static_cast<float>(f.dt);
   p.velocity_cap = static_cast<float>(f.velocity_cap * f.dt);
   p.growth_step = static_cast<float>(g.growth_rate * f.dt);

@@ -15,10 +15,12 @@
 // steps (src/solver/run.cpp). The last case checks that: a row outside those groups that changes
 // step_params or the reference's steps fails there, and then needs a world in row_cases().
 //
-// To extend (docs/architecture.md, "How to add a force", step 7): a new row of the groups above needs an
-// entry in row_cases() with a value in its range, not its default, not a power of two (so that products
-// round), in a world where it changes the result; the first case fails, naming the row, until it has one.
-// A row may have more entries, where another value takes another branch (wall_mirror 0: no mirror image).
+// To extend (docs/architecture.md, "How to add a force"): a new row of the groups above needs an entry in
+// row_cases() with a value in its range, not its default, not a power of two (so that products round), in
+// a world where it changes the result; the first case fails, naming the row, until it has one. The
+// stiffness of a force of AP_LOCAL_FORCES (kernels/shared_types.h) has one without being listed
+// (local_force_case), unless it is. A row may have more entries, where another value takes another
+// branch (wall_mirror 0: no mirror image).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -56,7 +58,16 @@ struct RowCase {
   bool settle = false;  ///< growth stopped before row_settle_step (the settling phase)
 };
 
-const std::vector<RowCase>& row_cases() {
+/// The case of a force of AP_LOCAL_FORCES that row_cases() does not list: the crowded world, where every
+/// vertex has a force of its own, at 0.73 of its default (0.37 for a default of 0, or 0.73 of a lower
+/// maximum): in its range, not its default, not a power of two.
+RowCase local_force_case(std::string_view row, double default_value, double max) {
+  const double value = default_value != 0.0 ? 0.73 * default_value : std::min(0.37, 0.73 * max);
+  return {row, value, RowWorld::crowded};
+}
+
+/// The cases written out, row by row.
+const std::vector<RowCase>& listed_cases() {
   static const std::vector<RowCase> cases = {
       // "forces"
       {"k_repulsion", 1.37e-7, RowWorld::crowded},
@@ -77,7 +88,6 @@ const std::vector<RowCase>& row_cases() {
       {"k_boundary", 3.7, RowWorld::crowded},
       {"k_torsion", 3.1e-4, RowWorld::crowded},
       {"k_target_angle", 2.9e-3, RowWorld::crowded},
-      {"k_temporal", 1.3, RowWorld::crowded},
       {"dt", 0.037, RowWorld::crowded},
       {"velocity_cap", 0.013, RowWorld::crowded},
       {"cell_size", 0.057, RowWorld::crowded},
@@ -101,6 +111,23 @@ const std::vector<RowCase>& row_cases() {
       // "stop", the one row the step reads
       {"stop_gap", 0.13, RowWorld::sparse},
   };
+  return cases;
+}
+
+/// listed_cases(), and local_force_case for every force of AP_LOCAL_FORCES that it does not list.
+const std::vector<RowCase>& row_cases() {
+  static const std::vector<RowCase> cases = [] {
+    std::vector<RowCase> all = listed_cases();
+    const auto add_local = [&](std::string_view row, double default_value, double max) {
+      if (std::none_of(all.begin(), all.end(), [&](const RowCase& c) { return c.row == row; }))
+        all.push_back(local_force_case(row, default_value, max));
+    };
+    [[maybe_unused]] constexpr double inf = std::numeric_limits<double>::infinity();
+#define AP_LOCAL_FORCE_CASE(name, stiffness, default_value, max, ...) add_local(#stiffness, default_value, max);
+    AP_LOCAL_FORCES(AP_LOCAL_FORCE_CASE)
+#undef AP_LOCAL_FORCE_CASE
+    return all;
+  }();
   return cases;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "animpak/compare.hpp"
 #include "tiny_worlds.hpp"
 
 using namespace animpak;
@@ -56,10 +57,14 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
   for (std::int32_t v = 0; v < w.topo.vertex_count(); ++v) {
     INFO("vertex " << v);
     const Vec3f r = parts.repulsion.at(v), e = parts.springs.at(v), tg = parts.target.at(v), b = parts.boundary.at(v),
-                o = parts.overlap.at(v), to = parts.torsion.at(v), tm = parts.temporal.at(v);
-    CHECK(f.total.x[v] == r.x + e.x + tg.x + b.x + o.x + to.x + tm.x);
-    CHECK(f.total.y[v] == r.y + e.y + tg.y + b.y + o.y + to.y + tm.y);
-    CHECK(f.total.t[v] == r.t + e.t + tg.t + b.t + o.t + to.t + tm.t);
+                o = parts.overlap.at(v), to = parts.torsion.at(v);
+    // Eq. 7 left to right over breakdown_forces, the order of AP_FORCE_TERMS.
+    Vec3f sum = (parts.*breakdown_forces[0].field).at(v);
+    for (std::size_t c = 1; c < breakdown_forces.size(); ++c) {
+      const Vec3f part = (parts.*breakdown_forces[c].field).at(v);
+      sum = {sum.x + part.x, sum.y + part.y, sum.t + part.t};
+    }
+    CHECK(same(f.total.at(v), sum));
     CHECK(same(f.total.at(v), again.total.at(v)));
 
     const Vec3f q{w.state.x[v], w.state.y[v], w.state.t[v]};
@@ -80,7 +85,9 @@ TEST_CASE("step_forces: the total is Eq. 7 summed in order, each part from its o
     CHECK(same(b, Vec3f{point.x + mirror.x, point.y + mirror.y, point.t + mirror.t}));
     CHECK(same(o, Vec3f{}));
     CHECK(same(to, torsion_force(w.topo, w.state, step_params(p), v, cx[w.topo.slice[v]], cy[w.topo.slice[v]])));
-    CHECK(same(tm, temporal_force(w.topo, w.state, step_params(p), v)));
+#define AP_CHECK_LOCAL_FORCE(name, ...) CHECK(same(parts.name.at(v), name##_force(w.topo, w.state, step_params(p), v)));
+    AP_LOCAL_FORCES(AP_CHECK_LOCAL_FORCE)
+#undef AP_CHECK_LOCAL_FORCE
     if (f.closest[v] < 0.04f) ++with_neighbour;
   }
   CHECK(with_neighbour > 26);  // the facing sides see each other

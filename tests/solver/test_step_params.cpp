@@ -3,8 +3,13 @@
 // here against the expression ForceParams documents, written out again.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <initializer_list>
+#include <string_view>
+#include <variant>
+#include <vector>
 
+#include "animpak/param_table.hpp"
 #include "animpak/step_params.hpp"
 
 using namespace animpak;
@@ -34,7 +39,6 @@ Params odd_params() {
   f.k_boundary = 4.9;
   f.k_torsion = 2.3e-4;
   f.k_target_angle = 2.9e-3;
-  f.k_temporal = 1.3;
   f.dt = 0.043;
   f.velocity_cap = 0.022;
   f.interval_points = 5;
@@ -75,7 +79,6 @@ TEST_CASE("step_params: every constant converted once, products formed in double
   CHECK(p.k_overlap_depth == static_cast<float>(f.k_overlap_depth));
   CHECK(p.k_boundary == static_cast<float>(f.k_boundary));
   CHECK(p.k_torsion == static_cast<float>(f.k_torsion));
-  CHECK(p.k_temporal == static_cast<float>(f.k_temporal));
   CHECK(p.dt == static_cast<float>(f.dt));
   CHECK(p.velocity_cap == static_cast<float>(f.velocity_cap * f.dt));
   CHECK(p.growth_step == static_cast<float>(g.growth_rate * f.dt));
@@ -95,7 +98,7 @@ TEST_CASE("step_params: every constant converted once, products formed in double
   CHECK(p.growth_boost == static_cast<float>(g.growth_boost));
   CHECK(p.boost_gap == static_cast<float>(g.boost_gap));
   CHECK(p.boost_step == static_cast<float>(g.boost_speed * f.velocity_cap * f.dt * f.dt));
-  CHECK(p.pad_boost == 0.0f);
+  for (const float pad : p.pad) CHECK(pad == 0.0f);
 }
 
 TEST_CASE("step_params: the constants of these tests tell a product formed in double from one in float") {
@@ -122,4 +125,30 @@ TEST_CASE("step_params: the spring stiffnesses by SpringClass") {
         static_cast<float>(params.forces.k_negative_space));
   CHECK(p.k_spring[static_cast<int>(SpringClass::time)] == static_cast<float>(params.forces.k_time));
   CHECK(p.k_spring[static_cast<int>(SpringClass::target)] == static_cast<float>(params.forces.k_target));
+}
+
+TEST_CASE("step_params: the stiffness of every force of AP_LOCAL_FORCES, from its row of the parameter table") {
+  // Each row's Params member set through param_table() to a value of its own, none a round number.
+  struct Local {
+    std::string_view row;
+    float ForceParams::*field;
+  };
+#define AP_LOCAL_FORCE_FIELD(name, stiffness, ...) Local{#stiffness, &ForceParams::stiffness},
+  const Local locals[] = {AP_LOCAL_FORCES(AP_LOCAL_FORCE_FIELD)};
+#undef AP_LOCAL_FORCE_FIELD
+  Params params = odd_params();
+  std::vector<double> values;
+  for (const Local& local : locals) {
+    const auto row = std::find_if(param_table().begin(), param_table().end(),
+                                  [&](const ParamInfo& info) { return info.name == local.row; });
+    REQUIRE(row != param_table().end());
+    CHECK(row->group == "forces");
+    values.push_back(1.37 + 0.113 * static_cast<double>(values.size()));
+    std::get<double& (*)(Params&)>(row->field)(params) = values.back();
+  }
+  const ForceParams p = step_params(params);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    INFO(locals[i].row);
+    CHECK(p.*locals[i].field == static_cast<float>(values[i]));
+  }
 }

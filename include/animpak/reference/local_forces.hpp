@@ -42,7 +42,11 @@ void slice_centroids(const Topology& topo, const SimState& state, std::vector<fl
 Vec3f torsion_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v, float cx,
                     float cy);
 
-/// Eq. 6: k_tmp (rest_t − t) along t. temporal.cpp.
-Vec3f temporal_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
+/// The force of each row of AP_LOCAL_FORCES (kernels/shared_types.h) on vertex v, in its own file
+/// (name.cpp): Eq. 6's temporal_force, k_tmp (rest_t − t) along t, in temporal.cpp.
+#define AP_DECLARE_LOCAL_FORCE(name, ...) \
+  Vec3f name##_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v);
+AP_LOCAL_FORCES(AP_DECLARE_LOCAL_FORCE)
+#undef AP_DECLARE_LOCAL_FORCE
 
 }  // namespace animpak::reference

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "animpak/state.hpp"
+#include "shared_types.h"
 
 namespace animpak {
 
@@ -30,9 +31,12 @@ struct ForceField {
   Vec3f at(std::int32_t v) const { return {x[v], y[v], t[v]}; }
 };
 
-/// Every force of Eq. 7 separately (the equivalence suite and `validate` compare them one by one).
+/// Every force of Eq. 7 separately, one field per row of AP_FORCE_TERMS (kernels/shared_types.h), in its
+/// order (the equivalence suite and `validate` compare them one by one).
 struct ForceBreakdown {
-  ForceField repulsion, springs, target, boundary, overlap, torsion, temporal;
+#define AP_BREAKDOWN_FIELD(name, ...) ForceField name;
+  AP_FORCE_TERMS(AP_BREAKDOWN_FIELD)
+#undef AP_BREAKDOWN_FIELD
 };
 
 struct StepForces {

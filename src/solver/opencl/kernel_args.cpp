@@ -6,7 +6,7 @@
 namespace animpak::opencl {
 
 const std::vector<KernelParameters>& kernel_parameters() {
-  // One row per __kernel, in program order (program.cpp, kernel_files); the names are the kernels' own.
+  // One row per __kernel, in program order (program.cpp, kernel_files()); the names are the kernels' own.
   static const std::vector<KernelParameters> table = {
       {"envelope_cells", {"grid", "world", "env_a", "env_b", "env_c", "positions", "cx", "cy", "ct", "triangle_cell"}},
       {"grid_clear", {"grid", "cell_count"}},

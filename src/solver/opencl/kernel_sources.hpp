@@ -4,14 +4,23 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace animpak::opencl {
 
 /// The embedded text of kernels/<name>, or empty when there is no such file.
 std::string_view embedded_kernel_source(std::string_view name);
 
-/// One OpenCL program: the FP_CONTRACT pragma, shared_types.h, then every kernel file in dependency
-/// order, each behind a #line so build logs name the file. InputError when ANIMPAK_KERNEL_DIR lacks a file.
+/// The names of the embedded files (kernels/*.cl and *.h), in name order.
+std::vector<std::string_view> embedded_kernel_names();
+
+/// The kernel files of one program in dependency order (program.cpp says the rule): the phases' files
+/// by name, and between torsion.cl and forces.cl every other embedded .cl file, the forces of
+/// AP_LOCAL_FORCES (kernels/shared_types.h), in name order.
+std::vector<std::string> kernel_files();
+
+/// One OpenCL program: the FP_CONTRACT pragma, shared_types.h, then kernel_files(), each behind a #line
+/// so build logs name the file. InputError when ANIMPAK_KERNEL_DIR lacks a file.
 std::string program_source();
 
 /// Where line `line` (1-based) of program_source() comes from, as "file.cl:N"; the line itself when it

@@ -20,14 +20,14 @@ static_assert(sizeof(WorldInfo) == 52 && offsetof(WorldInfo, breakdown) == 20 &&
               offsetof(WorldInfo, segment_stride) == 48);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
-static_assert(sizeof(ForceParams) == 34 * 4 && offsetof(ForceParams, k_spring) == 12 &&
-              offsetof(ForceParams, k_target) == 32 && offsetof(ForceParams, max_growth) == 80 &&
-              offsetof(ForceParams, k_target_angle) == 88 && offsetof(ForceParams, wall_range2) == 92 &&
-              offsetof(ForceParams, settle_shrink_step) == 96 && offsetof(ForceParams, interval_points) == 100 &&
-              offsetof(ForceParams, motion_curve) == 104 && offsetof(ForceParams, k_mirror) == 108 &&
-              offsetof(ForceParams, k_fold) == 112 && offsetof(ForceParams, fold_area) == 116 &&
-              offsetof(ForceParams, growth_boost) == 120 && offsetof(ForceParams, boost_gap) == 124 &&
-              offsetof(ForceParams, boost_step) == 128);
+// ForceParams: 32 fields of its own, one per force of AP_LOCAL_FORCES after k_torsion, and the pad that
+// keeps the size a multiple of 8 bytes; a 4-byte scalar each, so no padding between them.
+static_assert(sizeof(ForceParams) == (32 + AP_LOCAL_FORCE_COUNT + 2 - AP_LOCAL_FORCE_COUNT % 2) * 4 &&
+              sizeof(ForceParams) % 8 == 0);
+static_assert(offsetof(ForceParams, k_spring) == 12 && offsetof(ForceParams, k_target) == 32 &&
+              offsetof(ForceParams, dt) == 52 + 4 * AP_LOCAL_FORCE_COUNT &&
+              offsetof(ForceParams, boost_step) == 124 + 4 * AP_LOCAL_FORCE_COUNT &&
+              offsetof(ForceParams, pad) == 128 + 4 * AP_LOCAL_FORCE_COUNT);
 static_assert(AP_VERTEX_BOUNDARY == vertex_boundary && AP_VERTEX_ANCHOR == vertex_anchor &&
               AP_VERTEX_HOLD_ANGLE == vertex_hold_angle);
 static_assert(AP_SPRING_CLASSES == spring_class_count);

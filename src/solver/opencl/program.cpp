@@ -1,5 +1,6 @@
 // Assembling and building the kernels' program in one place, so every caller gets the same
 // source, options and annotated build log (docs/architecture.md, "The twin rule").
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -14,13 +15,15 @@
 namespace animpak::opencl {
 namespace {
 
-// Dependency order: each file uses only functions of the files before it.
-constexpr const char* kernel_files[] = {"closest_point.cl", "segments.cl",  "grid.cl",     "curve.cl",  "overlap.cl",
-                                        "overlap_grid.cl",  "repulsion.cl", "springs.cl",  "target.cl", "boundary.cl",
-                                        "contact.cl",       "torsion.cl",   "temporal.cl", "forces.cl", "integrate.cl",
-                                        "constraints.cl",   "growth.cl",    "stats.cl"};
+// Dependency order: each file uses only functions of the files before it. The files of the forces of
+// AP_LOCAL_FORCES (kernels/shared_types.h) are not named: kernel_files() puts every .cl file these lists
+// leave out between them, so a force's file uses only functions of before_forces and forces.cl calls it.
+constexpr std::string_view before_forces[] = {"closest_point.cl", "segments.cl",     "grid.cl",      "curve.cl",
+                                              "overlap.cl",       "overlap_grid.cl", "repulsion.cl", "springs.cl",
+                                              "target.cl",        "boundary.cl",     "contact.cl",   "torsion.cl"};
+constexpr std::string_view from_forces[] = {"forces.cl", "integrate.cl", "constraints.cl", "growth.cl", "stats.cl"};
 
-std::string kernel_text(const char* name) {
+std::string kernel_text(const std::string& name) {
   if (const char* dir = std::getenv("ANIMPAK_KERNEL_DIR"); dir != nullptr && *dir != '\0') {
     const std::filesystem::path file = std::filesystem::path(dir) / name;
     std::ifstream in(file, std::ios::binary);
@@ -34,10 +37,22 @@ std::string kernel_text(const char* name) {
 
 }  // namespace
 
+std::vector<std::string> kernel_files() {
+  std::vector<std::string> files(std::begin(before_forces), std::end(before_forces));
+  const auto named = [](std::string_view name) {
+    return std::find(std::begin(before_forces), std::end(before_forces), name) != std::end(before_forces) ||
+           std::find(std::begin(from_forces), std::end(from_forces), name) != std::end(from_forces);
+  };
+  for (const std::string_view name : embedded_kernel_names())
+    if (name.ends_with(".cl") && !named(name)) files.emplace_back(name);
+  files.insert(files.end(), std::begin(from_forces), std::end(from_forces));
+  return files;
+}
+
 std::string program_source() {
   // FP_CONTRACT OFF: no fused multiply-adds, so every product and sum rounds as in the reference.
   std::string source = "#pragma OPENCL FP_CONTRACT OFF\n#line 1 \"shared_types.h\"\n" + kernel_text("shared_types.h");
-  for (const char* name : kernel_files) source += "\n#line 1 \"" + std::string(name) + "\"\n" + kernel_text(name);
+  for (const std::string& name : kernel_files()) source += "\n#line 1 \"" + name + "\"\n" + kernel_text(name);
   return source;
 }
 

@@ -2,6 +2,7 @@
 // demand (every check_interval steps, and every step while the run settles), the full state only in
 // state(), the forces and grids for the equivalence suite and validate; and the device time of every
 // launch and transfer, from the profiling events.
+#include "animpak/compare.hpp"
 #include "animpak/reference/grid.hpp"
 #include "device_backend.hpp"
 
@@ -88,16 +89,13 @@ StepForces DeviceBackend::evaluate_forces(ForceBreakdown* out) {
   if (out != nullptr) {
     std::vector<float> all(static_cast<std::size_t>(3) * AP_FORCE_COMPONENTS * n);
     read(breakdown_, all, "breakdown", true);
-    ForceField* fields[AP_FORCE_COMPONENTS] = {};
-    fields[AP_FORCE_REPULSION] = &out->repulsion, fields[AP_FORCE_SPRINGS] = &out->springs;
-    fields[AP_FORCE_TARGET] = &out->target, fields[AP_FORCE_BOUNDARY] = &out->boundary;
-    fields[AP_FORCE_OVERLAP] = &out->overlap, fields[AP_FORCE_TORSION] = &out->torsion;
-    fields[AP_FORCE_TEMPORAL] = &out->temporal;
+    // Component c is the row c of AP_FORCE_TERMS, as breakdown_forces lists them.
     for (int c = 0; c < AP_FORCE_COMPONENTS; ++c) {
       const auto at = [&](int axis) { return all.begin() + (static_cast<std::ptrdiff_t>(c) * 3 + axis) * n; };
-      fields[c]->x.assign(at(0), at(1));
-      fields[c]->y.assign(at(1), at(2));
-      fields[c]->t.assign(at(2), at(3));
+      ForceField& field = out->*breakdown_forces[c].field;
+      field.x.assign(at(0), at(1));
+      field.y.assign(at(1), at(2));
+      field.t.assign(at(2), at(3));
     }
   }
   pending_.clear();

@@ -1,13 +1,15 @@
 // Total force, paper Eq. 7, for every vertex from one snapshot of positions (docs/parameters.md lists
 // what we add to the paper). Per vertex, in this order: the grid queries, the overlap test (Eq. 3
 // replaces Eq. 1 for a vertex that overlaps another element), the container query, then each force.
-// The sum is formed left to right in Eq. 7's order, with the target-point spring (an Eq. 2 spring)
-// right after the edge springs, and the fold guard added to the springs' sum (F_edg = springs + fold):
+// The sum is formed left to right in the order of AP_FORCE_TERMS (kernels/shared_types.h), Eq. 7's,
+// with the target-point spring (an Eq. 2 spring) right after the edge springs, the fold guard added to
+// the springs' sum (F_edg = springs + fold), and the forces of AP_LOCAL_FORCES last:
 //   F = ((((((F_rpl + F_edg) + F_tgt) + F_bdr) + F_ovr) + F_tor) + F_tmp)
 // The kernels add in exactly this order. Each vertex's gap and contact bits come from the same queries
 // (contact_gap, contact.cpp; the kernel contact_gap runs after step_forces).
 #include <cmath>
 
+#include "animpak/compare.hpp"
 #include "animpak/reference/boundary.hpp"
 #include "animpak/reference/grid.hpp"
 #include "animpak/reference/local_forces.hpp"
@@ -24,11 +26,8 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
   r.total.assign(n);
   r.closest.assign(n, std::numeric_limits<float>::infinity());
   r.contact.assign(n, 0);
-  if (out != nullptr) {
-    for (ForceField* f :
-         {&out->repulsion, &out->springs, &out->target, &out->boundary, &out->overlap, &out->torsion, &out->temporal})
-      f->assign(n);
-  }
+  if (out != nullptr)
+    for (const NamedForce& f : breakdown_forces) (out->*f.field).assign(n);
 
   // Per-slice passes first, whose results every vertex of the slice reads: the centroids (Eq. 5) and the
   // boxes of the boundary polygons with the overlap test's broadphase over them.
@@ -57,10 +56,12 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
     const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
     const ContainerQuery wall = container_query(topo.container, px, py, boundary);
+    Vec3f part[AP_FORCE_COMPONENTS];  // by AP_FORCE_TERMS
+    part[AP_FORCE_repulsion] = rpl.force;
     const Vec3f springs = spring_force(topo, state, params, v);
     const Vec3f fold = fold_force(topo, state, params, v);
-    const Vec3f edg{springs.x + fold.x, springs.y + fold.y, springs.t};
-    const Vec3f tgt = target_force(topo, state, params, v);
+    part[AP_FORCE_springs] = {springs.x + fold.x, springs.y + fold.y, springs.t};
+    part[AP_FORCE_target] = target_force(topo, state, params, v);
     Vec3f bdr = boundary_force(params, wall, px, py, boundary);
     if (boundary && k_mirror != 0.0f && !overlap.overlap) {
       // The wall's mirror image joins the wall's point force (docs/parameters.md, "Containment"); like
@@ -68,27 +69,24 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
       const Vec3f mirror = wall_mirror_force(topo, state, params, grid, v, wall);
       bdr = {bdr.x + mirror.x, bdr.y + mirror.y, bdr.t + mirror.t};
     }
-    const Vec3f ovr = overlap_force(topo, state, params, v, overlap);
+    part[AP_FORCE_boundary] = bdr;
+    part[AP_FORCE_overlap] = overlap_force(topo, state, params, v, overlap);
     const std::int32_t s = topo.slice[v];
-    const Vec3f tor = torsion_force(topo, state, params, v, cx[s], cy[s]);
-    const Vec3f tmp = temporal_force(topo, state, params, v);
+    part[AP_FORCE_torsion] = torsion_force(topo, state, params, v, cx[s], cy[s]);
+#define AP_REFERENCE_LOCAL_FORCE(name, ...) part[AP_FORCE_##name] = name##_force(topo, state, params, v);
+    AP_LOCAL_FORCES(AP_REFERENCE_LOCAL_FORCE)
+#undef AP_REFERENCE_LOCAL_FORCE
 
-    r.total.x[v] = rpl.force.x + edg.x + tgt.x + bdr.x + ovr.x + tor.x + tmp.x;
-    r.total.y[v] = rpl.force.y + edg.y + tgt.y + bdr.y + ovr.y + tor.y + tmp.y;
-    r.total.t[v] = rpl.force.t + edg.t + tgt.t + bdr.t + ovr.t + tor.t + tmp.t;
+    Vec3f total = part[0];
+    for (int c = 1; c < AP_FORCE_COMPONENTS; ++c)
+      total = {total.x + part[c].x, total.y + part[c].y, total.t + part[c].t};
+    r.total.set(v, total);
     // What the step reads besides the forces: the gap and contact bits (contact.cpp).
     const ContactGap gap = contact_gap(topo, state, params, v, overlap, rpl.closest, wall);
     r.closest[v] = gap.closest;
     r.contact[v] = gap.contact;
-    if (out != nullptr) {
-      out->repulsion.set(v, rpl.force);
-      out->springs.set(v, edg);
-      out->target.set(v, tgt);
-      out->boundary.set(v, bdr);
-      out->overlap.set(v, ovr);
-      out->torsion.set(v, tor);
-      out->temporal.set(v, tmp);
-    }
+    if (out != nullptr)
+      for (int c = 0; c < AP_FORCE_COMPONENTS; ++c) (out->*breakdown_forces[c].field).set(v, part[c]);
   }
   return r;
 }
