@@ -12,8 +12,8 @@ namespace animpak {
 
 /// The slices per element of a scene's coarse level: one for about every params.element.coarse_step of
 /// the scene's slice intervals; 0 (the packing runs at the scene's slices from the start) when that is
-/// fewer than the collision grid needs to see from one slice to the next (slices at most three cells apart
-/// in t) or more than half the scene's slices, or coarse_step is 1.
+/// fewer than twice what the collision grid needs to see from one slice to the next (slices at most three
+/// cells apart in t: 10 at the default cell_size) or more than half the scene's slices, or coarse_step is 1.
 int coarse_slices(const Params& params);
 
 /// Why `coarse` cannot stand for `fine` at the coarse level (the elements or their loop partners differ

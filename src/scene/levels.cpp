@@ -11,9 +11,10 @@ int coarse_slices(const Params& params) {
   if (step <= 1 || slices < 3) return 0;
   const int coarse = (slices - 1 + step - 1) / step + 1;
   // build_world's warning: slices more than three collision-grid cells apart in t do not see each other.
-  // A scene too short for a coarse level of its step has none (fewer slices saved would not pay).
+  // The coarse level keeps twice that many: at the grid's least, a traveller's path and the settling fail
+  // (docs/parameters.md, "Coarse to fine", has the packs that chose the bound).
   const int grid_least = static_cast<int>(std::ceil(1.0 / (3.0 * params.forces.cell_size))) + 1;
-  return coarse >= grid_least && 2 * coarse <= slices ? coarse : 0;
+  return coarse >= 2 * grid_least && 2 * coarse <= slices ? coarse : 0;
 }
 
 std::string level_mismatch(const World& coarse, const World& fine) {

@@ -601,18 +601,18 @@ TEST_CASE("animpak pack --profile: the time of every phase and kernel at the end
 TEST_CASE(
     "animpak pack: coarse to fine, interrupted before and after the refinement or stopped as a preview, resumes "
     "to the uninterrupted state.bin byte for byte") {
-  // Nine slices packed first at three (docs/parameters.md, "Coarse to fine"), with a collision grid coarse
+  // 13 slices packed first at four (docs/parameters.md, "Coarse to fine"), with a collision grid coarse
   // enough to allow it.
-  const Sandbox box("levels", animpak::test::star_scene(3, 9, 2, {"", R"("cell_size": 0.2, "coarse_step": 4)"}));
+  const Sandbox box("levels", animpak::test::star_scene(3, 13, 2, {"", R"("cell_size": 0.5, "coarse_step": 4)"}));
   const CommandResult whole = run_animpak("pack " + box.scene() + " --out " + box.path("whole") + " --no-render");
   INFO(whole.err);
   REQUIRE(whole.code == 0);
-  CHECK_THAT(whole.err, Contains("coarse to fine: 3 slices until they stop, then the scene's 9"));
+  CHECK_THAT(whole.err, Contains("coarse to fine: 4 slices until they stop, then the scene's 13"));
   const animpak::Stats stats = animpak::parse_stats(bytes_of(box.path("whole") + "/stats.json"), "stats.json");
   REQUIRE(stats.levels);
   REQUIRE(stats.levels->size() == 2);
-  CHECK((*stats.levels)[0].slices == 3);
-  CHECK((*stats.levels)[1].slices == 9);
+  CHECK((*stats.levels)[0].slices == 4);
+  CHECK((*stats.levels)[1].slices == 13);
   CHECK(!stats.level_slices);
   const std::uint64_t refined_at = (*stats.levels)[0].iterations;
   REQUIRE(refined_at >= 40);
@@ -627,7 +627,7 @@ TEST_CASE(
     REQUIRE(run_animpak("pack " + box.scene() + " --out " + dir + " --max-iterations " + std::to_string(cut) +
                         " --no-render")
                 .code == 0);
-    CHECK(animpak::read_checkpoint(dir + "/state.bin").level_slices == (cut < refined_at ? 3 : 0));
+    CHECK(animpak::read_checkpoint(dir + "/state.bin").level_slices == (cut < refined_at ? 4 : 0));
     const CommandResult resumed = run_animpak("pack --resume " + dir + " --max-iterations 100000 --no-render");
     INFO(resumed.err);
     REQUIRE(resumed.code == 0);
@@ -639,9 +639,9 @@ TEST_CASE(
       run_animpak("pack " + box.scene() + " --out " + box.path("preview") + " --preview --no-render");
   INFO(preview.err);
   REQUIRE(preview.code == 0);
-  CHECK_THAT(preview.err, Contains("a preview at 3 slices") && Contains("pack --resume"));
+  CHECK_THAT(preview.err, Contains("a preview at 4 slices") && Contains("pack --resume"));
   const animpak::Checkpoint previewed = animpak::read_checkpoint(box.path("preview") + "/state.bin");
-  CHECK(previewed.level_slices == 3);
+  CHECK(previewed.level_slices == 4);
   CHECK(previewed.state.iteration == refined_at);
   // Resumed with --preview again, it is finished; without, it refines and packs on.
   const CommandResult again = run_animpak("pack --resume " + box.path("preview") + " --preview --no-render");
@@ -650,7 +650,7 @@ TEST_CASE(
   const CommandResult on = run_animpak("pack --resume " + box.path("preview") + " --no-render");
   INFO(on.err);
   REQUIRE(on.code == 0);
-  CHECK_THAT(on.err, Contains("refined to 9 slices"));
+  CHECK_THAT(on.err, Contains("refined to 13 slices"));
   CHECK(bytes_of(box.path("preview") + "/state.bin") == expected);
 
   // A scene without a coarse level refuses --preview and leaves no folder.

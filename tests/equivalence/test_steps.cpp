@@ -194,13 +194,13 @@ namespace animpak::test {
 
 TEST_CASE("steps: across a refinement from the coarse level to the scene's slices, the backends stay identical",
           "[equivalence][opencl]") {
-  // Coarse to fine (docs/parameters.md, "Coarse to fine"): 30 steps at the coarse level's 3 slices, the fine
-  // state made from each backend's own coarse state by the one host routine, then 30 steps at 9 slices.
-  const std::string text = star_scene(3, 9, 4, swapping_pair(R"("cell_size": 0.2, "coarse_step": 4)"));
+  // Coarse to fine (docs/parameters.md, "Coarse to fine"): 30 steps at the coarse level's 4 slices, the fine
+  // state made from each backend's own coarse state by the one host routine, then 30 steps at 13 slices.
+  const std::string text = star_scene(3, 13, 4, swapping_pair(R"("cell_size": 0.5, "coarse_step": 4)"));
   SceneSpec scene = parse_scene(text, "levels.json", "/");
   const World fine = make_world(scene);
   scene.params.element.slices = coarse_slices(scene.params);
-  REQUIRE(scene.params.element.slices == 3);
+  REQUIRE(scene.params.element.slices == 4);
   const World coarse = make_world(scene);
   const std::vector<DeviceChoice> devices = devices_under_test();
   if (skip_without_devices(devices)) return;

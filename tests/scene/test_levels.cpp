@@ -13,10 +13,10 @@ using namespace animpak;
 
 namespace {
 
-// Three stars and two guided ones that loop into each other, nine slices; with a collision grid of five
-// cells a side the coarse level has three slices (t = 0, 0.5, 1), those of fine slices 0, 4 and 8.
-std::string level_scene(const std::string& params = R"("cell_size": 0.2, "coarse_step": 4)") {
-  return test::star_scene(3, 9, 4, test::swapping_pair(params));
+// Three stars and two guided ones that loop into each other, 13 slices; with a collision grid of two cells
+// a side the coarse level has four slices (t = 0, 1/3, 2/3, 1), those of fine slices 0, 4, 8 and 12.
+std::string level_scene(const std::string& params = R"("cell_size": 0.5, "coarse_step": 4)") {
+  return test::star_scene(3, 13, 4, test::swapping_pair(params));
 }
 
 World level_world(const std::string& text, int slices) {
@@ -27,25 +27,30 @@ World level_world(const std::string& text, int slices) {
 
 }  // namespace
 
-TEST_CASE("coarse_slices: about one slice per coarse_step, none where the grid needs more or that saves too little") {
+TEST_CASE(
+    "coarse_slices: about one slice per coarse_step, none below twice the grid's least or that saves too little") {
   Params p;
   CHECK(coarse_slices(p) == 26);  // 100 slices: 99 intervals / 4, rounded up, + 1
+  p.element.slices = 74;
+  CHECK(coarse_slices(p) == 20);  // twice the 10 slices 0.12 (three cells of 0.04) apart
+  p.element.slices = 73;
+  CHECK(coarse_slices(p) == 0);  // 19
   p.element.slices = 40;
-  CHECK(coarse_slices(p) == 11);
+  CHECK(coarse_slices(p) == 0);
   p.element.slices = 24;
-  CHECK(coarse_slices(p) == 0);  // 7 by the step, but slices 0.12 (three cells of 0.04) apart at most
   p.element.coarse_step = 2;
-  CHECK(coarse_slices(p) == 0);  // 13: more than half of 24
-  p.element.coarse_step = 4;
+  CHECK(coarse_slices(p) == 0);  // 13: more than half of 24, and fewer than 20
   p.element.slices = 100;
   p.element.coarse_step = 1;
   CHECK(coarse_slices(p) == 0);
-  p.element.coarse_step = 10;
-  CHECK(coarse_slices(p) == 11);
-  p.forces.cell_size = 0.2;
-  p.element.slices = 9;
+  p.element.coarse_step = 3;
+  CHECK(coarse_slices(p) == 34);
+  p.element.coarse_step = 6;
+  CHECK(coarse_slices(p) == 0);  // 18
+  p.forces.cell_size = 0.5;
+  p.element.slices = 13;
   p.element.coarse_step = 4;
-  CHECK(coarse_slices(p) == 3);
+  CHECK(coarse_slices(p) == 4);
 }
 
 TEST_CASE(
@@ -53,8 +58,8 @@ TEST_CASE(
   const std::string text = level_scene();
   const World coarse = level_world(text, coarse_slices(parse_scene(text, "levels.json", "/").params));
   const World fine = level_world(text, 0);
-  REQUIRE(coarse.library.front().slice_count == 3);
-  REQUIRE(fine.library.front().slice_count == 9);
+  REQUIRE(coarse.library.front().slice_count == 4);
+  REQUIRE(fine.library.front().slice_count == 13);
   REQUIRE(level_mismatch(coarse, fine).empty());
   REQUIRE(fine.elements.size() == 5);
 
@@ -67,7 +72,7 @@ TEST_CASE(
     moved.y[v] += static_cast<float>(0.01 * std::cos(2 * std::numbers::pi * t));
     moved.vx[v] = static_cast<float>(0.001 * (1 + t)), moved.vy[v] = -0.002f, moved.vt[v] = 0.0005f;
   }
-  for (std::size_t s = 0; s < moved.growth.size(); ++s) moved.growth[s] = 2.0f + 0.25f * float(s % 3);
+  for (std::size_t s = 0; s < moved.growth.size(); ++s) moved.growth[s] = 2.0f + 0.25f * float(s % 4);
   moved.iteration = 730, moved.settling_since = 700, moved.secondary_since = 0;
   moved.mark_iteration = 720, moved.mark_growth = 2.5, moved.mark_growth_1 = 2.4;
 
@@ -85,7 +90,7 @@ TEST_CASE(
     INFO("element " << fine.elements[e].name);
     const int P = fine.library[fine.elements[e].library].vertices_per_slice();
     const std::vector<Vec2> tangents = element_tangents(coarse, moved, int(e));
-    for (int s = 0; s < 9; ++s) {
+    for (int s = 0; s < 13; ++s) {
       INFO("fine slice " << s);
       const std::int32_t fs = fine.elements[e].slice_begin + s;
       const std::vector<Vec2> on_curve = element_at(coarse, moved, int(e), ft.rest_t[ft.slice_begin[fs]], tangents);
@@ -95,10 +100,10 @@ TEST_CASE(
         CHECK(refined.y[k] == static_cast<float>(on_curve[v].y));
         CHECK(refined.t[k] == ft.rest_t[k]);
       }
-      // Slices 0, 4 and 8 are the coarse ones: their values exactly; the others a quarter of the way on.
+      // Slices 0, 4, 8 and 12 are the coarse ones: their values exactly; the others a quarter of the way on.
       const std::int32_t c0 = coarse.elements[e].slice_begin + s / 4;
       const float share = float(s % 4) / 4.0f;
-      const float g0 = moved.growth[c0], g1 = moved.growth[c0 + (s < 8 ? 1 : 0)];
+      const float g0 = moved.growth[c0], g1 = moved.growth[c0 + (s < 12 ? 1 : 0)];
       CHECK(refined.growth[fs] == Approx(g0 + (g1 - g0) * share).epsilon(1e-6));
       const std::size_t a = static_cast<std::size_t>(coarse.topology.slice_begin[c0]);
       const std::size_t k = static_cast<std::size_t>(ft.slice_begin[fs]);
@@ -124,8 +129,8 @@ TEST_CASE(
 
 TEST_CASE("refine_state: worlds whose elements differ are refused, saying why") {
   const std::string text = level_scene();
-  const World coarse = level_world(text, 3);
-  const World other = level_world(test::star_scene(4, 9, 4, test::swapping_pair(R"("cell_size": 0.2)")), 0);
+  const World coarse = level_world(text, 4);
+  const World other = level_world(test::star_scene(4, 13, 4, test::swapping_pair(R"("cell_size": 0.5)")), 0);
   CHECK_THAT(level_mismatch(coarse, other), Catch::Matchers::Contains("places 5 elements, the scene's slices 6"));
   CHECK_THROWS_AS(refine_state(coarse, coarse.state, other), std::invalid_argument);
 }
