@@ -192,7 +192,7 @@ TEST_CASE("steps: one element alone, and a world without envelope triangles", "[
 
 namespace animpak::test {
 
-TEST_CASE("steps: across a refinement from the coarse level to the scene's slices, the backends stay identical",
+TEST_CASE("steps: a small real scene across a refinement from the coarse level to the scene's slices stays identical",
           "[equivalence][opencl]") {
   // Coarse to fine (docs/parameters.md, "Coarse to fine"): 30 steps at the coarse level's 4 slices, the fine
   // state made from each backend's own coarse state by the one host routine, then 30 steps at 13 slices.
