@@ -27,7 +27,8 @@ std::string level_mismatch(const World& coarse, const World& fine);
 /// draw it), its t the slice's, its velocity and the slice's g interpolated linearly between the two coarse
 /// slices around that time; the rest lengths from the fine rest copy at those g (§5.3). The coarse level's
 /// stop is the packing's: the state settles from there (settling_since the refinement's iteration; the stall
-/// test's marks and secondary_since kept), so the scene's slices only clear what the refinement left. Throws std::invalid_argument when level_mismatch says why.
+/// test's marks and secondary_since kept), so the scene's slices only clear what the refinement left.
+/// Throws std::invalid_argument when level_mismatch says why.
 SimState refine_state(const World& coarse, const SimState& coarse_state, const World& fine);
 
 }  // namespace animpak

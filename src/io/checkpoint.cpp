@@ -160,7 +160,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& file, const std::filesys
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof magic, sizeof version);
   // Versions 2 to 4 ended in a 64-bit FNV checksum, which anyone can recompute for a state changed on
-  // purpose; version 5 on end in a SHA-256 of everything before it, and its values are checked below.
+  // purpose; versions 5 and 6 end in a SHA-256 of everything before it, and its values are checked below.
   // Version 6 adds the level (level_slices); a version 5 state is at the scene's own slices.
   if (version >= 2 && version < 5)
     throw InputError(name + ": state format version " + std::to_string(version) +
