@@ -126,6 +126,13 @@ World build_world(const SceneSpec& scene, Container container, std::vector<Space
 /// the two consecutive slices whose current t values bracket tf (include/animpak/curve.hpp; the paper's
 /// linear interpolation with `motion_curve` 0).
 std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf);
+/// The interval of element instance `element` (of two slices or more) that element_at reads at time tf:
+/// its first slice (of the element's), tf's share of the way to the next one (0 to 1), and its length in t.
+struct SliceInterval {
+  int slice = 0;
+  double share = 0.0, length = 0.0;
+};
+SliceInterval slice_interval(const World& world, const SimState& state, int element, double tf);
 /// The same with the element's tangents computed once (element_tangents), for many times of one state.
 std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
                              const std::vector<Vec2>& tangents);

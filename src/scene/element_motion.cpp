@@ -53,8 +53,7 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   return element_at(world, state, element, tf, element_tangents(world, state, element));
 }
 
-std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
-                             const std::vector<Vec2>& tangents) {
+SliceInterval slice_interval(const World& world, const SimState& state, int element, double tf) {
   const ElementInstance& inst = world.elements[element];
   const SpacetimeElement& lib = world.library[inst.library];
   const int P = lib.vertices_per_slice(), n = lib.slice_count;
@@ -62,16 +61,25 @@ std::vector<Vec2> element_at(const World& world, const SimState& state, int elem
   // Slices stay ordered (time springs) and flat (simultaneity), so the first vertex's t is the slice's.
   int s = 0;
   while (s < n - 2 && slice_t(s + 1) < tf) ++s;
+  const double t0 = slice_t(s), t1 = slice_t(s + 1);
+  return {s, t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0, t1 - t0};
+}
+
+std::vector<Vec2> element_at(const World& world, const SimState& state, int element, double tf,
+                             const std::vector<Vec2>& tangents) {
+  const ElementInstance& inst = world.elements[element];
+  const SpacetimeElement& lib = world.library[inst.library];
+  const int P = lib.vertices_per_slice(), n = lib.slice_count;
   std::vector<Vec2> out(P);
   if (n < 2) {
     for (int v = 0; v < P; ++v) out[v] = {state.x[inst.vertex_begin + v], state.y[inst.vertex_begin + v]};
     return out;
   }
-  const double t0 = slice_t(s), t1 = slice_t(s + 1);
-  const double w = t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
+  const SliceInterval at = slice_interval(world, state, element, tf);
+  const int s = at.slice;
   // The curve the overlap test walks (include/animpak/curve.hpp), in double, with the tangents at this
   // interval's two slices.
-  const CurveBasis<double> basis = curve_basis(w, t1 - t0, world.params.forces.motion_curve);
+  const CurveBasis<double> basis = curve_basis(at.share, at.length, world.params.forces.motion_curve);
   for (int v = 0; v < P; ++v) {
     const int a = inst.vertex_begin + s * P + v, b = a + P;
     const Vec2 ma = tangents[static_cast<std::size_t>(s) * P + v],

@@ -51,20 +51,17 @@ SimState refine_state(const World& coarse, const SimState& coarse_state, const W
   for (std::size_t i = 0; i < fine.elements.size(); ++i) {
     const ElementInstance &ci = coarse.elements[i], &fi = fine.elements[i];
     const int P = fine.library[fi.library].vertices_per_slice();
-    const int nc = coarse.library[ci.library].slice_count, nf = fine.library[fi.library].slice_count;
+    const int nf = fine.library[fi.library].slice_count;
     const std::vector<Vec2> tangents = element_tangents(coarse, coarse_state, static_cast<int>(i));
-    const auto coarse_t = [&](int s) { return double(coarse_state.t[ci.vertex_begin + s * P]); };
     for (int sf = 0; sf < nf; ++sf) {
       const std::int32_t first = fi.vertex_begin + sf * P;
       const double tf = double(topo.rest_t[first]);
       const std::vector<Vec2> at = element_at(coarse, coarse_state, static_cast<int>(i), tf, tangents);
-      // The two coarse slices around tf, as element_at brackets it, and tf's share of the way between them.
-      int s = 0;
-      while (s < nc - 2 && coarse_t(s + 1) < tf) ++s;
-      const double t0 = coarse_t(s), t1 = coarse_t(std::min(s + 1, nc - 1));
-      const double w = t1 > t0 ? std::clamp((tf - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
+      // The two coarse slices around tf (the interval element_at reads) and tf's share of the way between.
+      const SliceInterval around = slice_interval(coarse, coarse_state, static_cast<int>(i), tf);
+      const double w = around.share;
       const auto lerp = [w](double a, double b) { return static_cast<float>(a + (b - a) * w); };
-      const std::int32_t cs = ci.slice_begin + s, cn = ci.slice_begin + std::min(s + 1, nc - 1);
+      const std::int32_t cs = ci.slice_begin + around.slice, cn = cs + 1;
       out.growth[fi.slice_begin + sf] = lerp(coarse_state.growth[cs], coarse_state.growth[cn]);
       for (int v = 0; v < P; ++v) {
         const std::size_t a = static_cast<std::size_t>(coarse.topology.slice_begin[cs] + v),
