@@ -1,6 +1,7 @@
 /* Boundary force, paper Eq. 4, and the containment projection (src/solver/reference/boundary.cpp):
  * k_bdr (p_b − x) in x, y for a vertex outside the container (even-odd over every ring, so inside a
- * hole is outside); a vertex still outside after a step moves onto the boundary. */
+ * hole is outside); a vertex still outside after a step moves onto the boundary. The container at a
+ * vertex's t is the one at rest moved by its motion at that t (container_query_at). */
 
 /** One segment's turn at the nearest point: the first segment (by index) reaching the minimum wins. */
 void container_try_segment(int i,
@@ -100,6 +101,103 @@ bool edge_crosses_container(int segments,
   return false;
 }
 
+/** The container's motion at time t (reference container_frame): the two entries of the motion table
+ * around t, clamped to the table, interpolated linearly; w = [a -b; b a] p + e. */
+void container_frame(const WorldInfo world,
+                     __global const float* segments,
+                     float t,
+                     float* a,
+                     float* b,
+                     float* ex,
+                     float* ey) {
+  __global const float* ma = segments + AP_SEG_MOTION_A * world.segment_stride;
+  __global const float* mb = segments + AP_SEG_MOTION_B * world.segment_stride;
+  __global const float* mx = segments + AP_SEG_MOTION_EX * world.segment_stride;
+  __global const float* my = segments + AP_SEG_MOTION_EY * world.segment_stride;
+  const int intervals = world.motion_entries - 1;
+  const float u = t * (float)intervals;
+  float f = floor(u);
+  if (!(f >= 0.0f)) f = 0.0f;
+  const float last = (float)(intervals - 1);
+  if (f > last) f = last;
+  const int i = (int)f;
+  float w = u - f;
+  if (!(w >= 0.0f)) w = 0.0f;
+  if (w > 1.0f) w = 1.0f;
+  *a = ma[i] + (ma[i + 1] - ma[i]) * w;
+  *b = mb[i] + (mb[i + 1] - mb[i]) * w;
+  *ex = mx[i] + (mx[i + 1] - mx[i]) * w;
+  *ey = my[i] + (my[i + 1] - my[i]) * w;
+}
+
+/** The point (wx, wy) of the plane at the frame's time, taken back to the container at rest. */
+void container_to_rest(float a, float b, float ex, float ey, float wx, float wy, float* px, float* py) {
+  const float s2 = a * a + b * b, dx = wx - ex, dy = wy - ey;
+  *px = (a * dx + b * dy) / s2;
+  *py = (a * dy - b * dx) / s2;
+}
+
+/** The container query of (px, py) at time pt (reference container_query with a time): at rest when the
+ * container does not move; otherwise taken to the container at rest, queried there, the nearest point
+ * brought back and its squared distance measured at pt. */
+AP_INLINE bool container_query_at(const WorldInfo world,
+                                  __global const float* segments,
+                                  const ContainerIndexInfo ix,
+                                  __global const int* index,
+                                  float px,
+                                  float py,
+                                  float pt,
+                                  bool nearest,
+                                  float* distance2,
+                                  float* qx,
+                                  float* qy) {
+  __global const float* ax = segments + AP_SEG_AX * world.segment_stride;
+  __global const float* ay = segments + AP_SEG_AY * world.segment_stride;
+  __global const float* bx = segments + AP_SEG_BX * world.segment_stride;
+  __global const float* by = segments + AP_SEG_BY * world.segment_stride;
+  if (world.motion_entries == 0)
+    return container_query(world.segments, ix, index, px, py, nearest, ax, ay, bx, by, distance2, qx, qy);
+  float a, b, ex, ey, lx, ly;
+  container_frame(world, segments, pt, &a, &b, &ex, &ey);
+  container_to_rest(a, b, ex, ey, px, py, &lx, &ly);
+  const bool inside = container_query(world.segments, ix, index, lx, ly, nearest, ax, ay, bx, by, distance2, qx, qy);
+  if (!(*distance2 < INFINITY)) { /* no nearest point was sought: the point itself, as at rest */
+    *qx = px;
+    *qy = py;
+    return inside;
+  }
+  const float rx = *qx, ry = *qy;
+  *qx = a * rx - b * ry + ex;
+  *qy = b * rx + a * ry + ey;
+  const float ux = *qx - px, uy = *qy - py;
+  *distance2 = ux * ux + uy * uy;
+  return inside;
+}
+
+/** edge_crosses_container at time pt (reference edge_crosses_container with a time): both ends taken to
+ * the container at rest by its motion at pt. */
+bool edge_crosses_container_at(const WorldInfo world,
+                               __global const float* segments,
+                               const ContainerIndexInfo ix,
+                               __global const int* index,
+                               float px,
+                               float py,
+                               float nx,
+                               float ny,
+                               float pt) {
+  __global const float* ax = segments + AP_SEG_AX * world.segment_stride;
+  __global const float* ay = segments + AP_SEG_AY * world.segment_stride;
+  __global const float* bx = segments + AP_SEG_BX * world.segment_stride;
+  __global const float* by = segments + AP_SEG_BY * world.segment_stride;
+  if (world.motion_entries == 0)
+    return edge_crosses_container(world.segments, ix, index, px, py, nx, ny, ax, ay, bx, by);
+  float a, b, ex, ey, lx, ly, mx, my;
+  container_frame(world, segments, pt, &a, &b, &ex, &ey);
+  container_to_rest(a, b, ex, ey, px, py, &lx, &ly);
+  container_to_rest(a, b, ex, ey, nx, ny, &mx, &my);
+  return edge_crosses_container(world.segments, ix, index, lx, ly, mx, my, ax, ay, bx, by);
+}
+
 /** The container's force from the query of (px, py) (reference boundary_force): Eq. 4 outside; inside,
  * for a boundary vertex within wall_range of the wall, the wall's Eq. 1-shaped repulsion from its
  * nearest point. */
@@ -129,26 +227,21 @@ void boundary_force(const ForceParams p,
 /** Containment: a vertex outside the container moves past its nearest boundary point by
  * AP_CONTAINMENT_MARGIN and stops in x, y; one work-item per vertex. */
 __kernel void apply_containment(const WorldInfo world,
-                                __global const float* segments,           /* input: container segments */
+                                __global const float* segments,           /* input: AP_SEG_*, the container */
                                 const ContainerIndexInfo container_index, /* the container's index */
                                 __global const int* container_lists,      /* input: its lists */
                                 __global float* positions,                /* input/output: x, y */
                                 __global float* velocities) {             /* input/output: x, y */
-  __global const float* seg_ax = segments + AP_SEG_AX * world.segment_stride;
-  __global const float* seg_ay = segments + AP_SEG_AY * world.segment_stride;
-  __global const float* seg_bx = segments + AP_SEG_BX * world.segment_stride;
-  __global const float* seg_by = segments + AP_SEG_BY * world.segment_stride;
   __global float* x = positions + AP_X * world.vertex_stride;
   __global float* y = positions + AP_Y * world.vertex_stride;
+  __global const float* t = positions + AP_T * world.vertex_stride;
   __global float* vx = velocities + AP_X * world.vertex_stride;
   __global float* vy = velocities + AP_Y * world.vertex_stride;
   const int v = get_global_id(0);
   if (v >= world.vertices) return;
   const float px = x[v], py = y[v];
   float d2, qx, qy;
-  if (container_query(world.segments, container_index, container_lists, px, py, false, seg_ax, seg_ay, seg_bx, seg_by,
-                      &d2, &qx, &qy))
-    return;
+  if (container_query_at(world, segments, container_index, container_lists, px, py, t[v], false, &d2, &qx, &qy)) return;
   const float dx = qx - px, dy = qy - py;
   const float e2 = dx * dx + dy * dy;
   if (!(e2 > 0.0f)) return;
@@ -186,10 +279,8 @@ __kernel void wall_mirror_force(const GridInfo grid,
   const int v = boundary_vertices[i];
   const float px = positions[AP_X * vs + v], py = positions[AP_Y * vs + v], pt = positions[AP_T * vs + v];
   float d2, qx, qy;
-  const bool inside = container_query(
-      world.segments, container_index, container_lists, px, py, true, segments + AP_SEG_AX * world.segment_stride,
-      segments + AP_SEG_AY * world.segment_stride, segments + AP_SEG_BX * world.segment_stride,
-      segments + AP_SEG_BY * world.segment_stride, &d2, &qx, &qy);
+  const bool inside =
+      container_query_at(world, segments, container_index, container_lists, px, py, pt, true, &d2, &qx, &qy);
   float mx = 0.0f, my = 0.0f, mt = 0.0f;
   if (p.k_mirror != 0.0f && inside && d2 > 0.0f && d2 < p.wall_range2) {
     float sx, sy, st, closest2;

@@ -6,7 +6,7 @@
 /** Vertex v's gap and AP_CONTACT_* bits; one work-item per vertex, after step_forces. */
 __kernel void contact_gap(const WorldInfo world,
                           const ForceParams p,
-                          __global const float* positions,          /* input: x, y */
+                          __global const float* positions,          /* input: x, y, t */
                           __global const int* vertex_topology,      /* input: AP_TOPO_SLICE, AP_TOPO_FLAGS */
                           __global const int* slice_topology,       /* input: AP_SLICES_BEGIN, AP_SLICES_BOUNDARY */
                           __global const float* repulsion,          /* input: AP_RPL_CLOSEST */
@@ -42,11 +42,8 @@ __kernel void contact_gap(const WorldInfo world,
       const int next = v - lo + 1 == slice_topology[AP_SLICES_BOUNDARY * world.slice_stride + s] ? lo : v + 1;
       const float px = x[v], py = y[v];
       const float ex = x[next] - px, ey = y[next] - py;
-      if (wall2 < ex * ex + ey * ey &&
-          edge_crosses_container(
-              world.segments, container_index, container_lists, px, py, x[next], y[next],
-              segments + AP_SEG_AX * world.segment_stride, segments + AP_SEG_AY * world.segment_stride,
-              segments + AP_SEG_BX * world.segment_stride, segments + AP_SEG_BY * world.segment_stride)) {
+      if (wall2 < ex * ex + ey * ey && edge_crosses_container_at(world, segments, container_index, container_lists, px,
+                                                                 py, x[next], y[next], positions[AP_T * vs + v])) {
         bits = AP_CONTACT_OUTSIDE;
         wall_gap = 0.0f;
       }

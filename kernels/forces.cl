@@ -41,10 +41,6 @@ __kernel void step_forces(const WorldInfo world,
   __global const int* tri_c = triangles + AP_TRIS_C * world.triangle_stride;
   __global const int* tri_begin = triangles + AP_TRIS_BEGIN * world.triangle_stride;
   __global const int* tri_list = triangles + AP_TRIS_LIST * world.triangle_stride;
-  __global const float* seg_ax = segments + AP_SEG_AX * world.segment_stride;
-  __global const float* seg_ay = segments + AP_SEG_AY * world.segment_stride;
-  __global const float* seg_bx = segments + AP_SEG_BX * world.segment_stride;
-  __global const float* seg_by = segments + AP_SEG_BY * world.segment_stride;
   __global float* wall_d2 = wall + AP_WALL_D2 * vs;
   __global float* wall_qx = wall + AP_WALL_QX * vs;
   __global float* wall_qy = wall + AP_WALL_QY * vs;
@@ -62,8 +58,8 @@ __kernel void step_forces(const WorldInfo world,
     in_container = wall_inside[v] != 0;
     wall2 = wall_d2[v], wall_x = wall_qx[v], wall_y = wall_qy[v];
   } else { /* made here, and left for contact_gap */
-    in_container = container_query(world.segments, container_index, container_lists, px, py, boundary, seg_ax, seg_ay,
-                                   seg_bx, seg_by, &wall2, &wall_x, &wall_y);
+    in_container = container_query_at(world, segments, container_index, container_lists, px, py, pt, boundary, &wall2,
+                                      &wall_x, &wall_y);
     wall_inside[v] = in_container ? 1 : 0;
     wall_d2[v] = wall2;
   }

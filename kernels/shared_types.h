@@ -162,12 +162,17 @@ typedef float ap_float;
 #define AP_WALL_QY 5
 #define AP_WALL_PLANES 6
 /* targets (float, target_stride): the target points' x, y, t (AP_X, AP_Y, AP_T). */
-/* segments (float, segment_stride): the container's segments, a to b. */
+/* segments (float, segment_stride): the container's segments at rest, a to b, and its motion table
+ * (ContainerGeometry::motion_*, world.motion_entries entries; none when it does not move). */
 #define AP_SEG_AX 0
 #define AP_SEG_AY 1
 #define AP_SEG_BX 2
 #define AP_SEG_BY 3
-#define AP_SEG_PLANES 4
+#define AP_SEG_MOTION_A 4
+#define AP_SEG_MOTION_B 5
+#define AP_SEG_MOTION_EX 6
+#define AP_SEG_MOTION_EY 7
+#define AP_SEG_PLANES 8
 /* grid_index (int, GridInfo.index_stride): the collision grid's cell ranges (cells + 1), each slot's
  * element (grid_gather; then AP_LANES spare slots), the far field's run ranges (cells + 1) and each
  * run's element (grid_runs). */
@@ -283,6 +288,7 @@ typedef struct {
   ap_int triangle_stride; /* triangles */
   ap_int target_stride;   /* targets */
   ap_int segment_stride;  /* segments */
+  ap_int motion_entries;  /* the container's motion table in segments; 0: the container does not move */
 } WorldInfo;
 
 /* Force components in the breakdown buffer, each 3 * vertices floats (x, then y, then t): AP_FORCE_<name>

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "animpak/container_motion.hpp"
 #include "animpak/curve.hpp"
 #include "animpak/element.hpp"
 #include "animpak/io.hpp"
@@ -36,6 +37,12 @@ struct Container {
   std::optional<MirrorLine> mirror;
   std::vector<Vec2> whole_outline;
   std::vector<std::vector<Vec2>> whole_holes;
+  /// Its motion as a whole (docs/scene-format.md, "A container that moves"): at time t the container is
+  /// motion.at(t) applied to `outline` and `holes`, which are its shape at rest. It does not move unless
+  /// the scene animates it (animate_container).
+  ContainerMotion motion;
+  /// The elements take the motion's change of scale into their scripts (ContainerSpec::inherit_scale).
+  bool inherit_scale = true;
 
   /// Inside the outline and outside every hole.
   bool contains(Vec2 p) const;
@@ -57,6 +64,12 @@ struct Container {
 /// normalizes them like element art (longer side 1, centred). InputError names the file and the path
 /// index for a missing index, an outline with fewer than 3 points or no area, or a hole outside it.
 Container make_container(const ArtShape& art, const ContainerSpec& spec);
+
+/// Sets container.motion from the scene's `container.animation` (pivot in container art coordinates,
+/// default the outline's area centroid; looping with the scene) and container.inherit_scale. InputError
+/// naming the scene file for an animated mirrored scene or an animation the container cannot take.
+/// container.cpp.
+void animate_container(Container& container, const SceneSpec& scene);
 
 /// The side of `whole` that `spec` keeps, for a mirrored scene (docs/scene-format.md, "Mirror"): the
 /// container clipped to that side of the line (in the container art's coordinates, through whole.frame),

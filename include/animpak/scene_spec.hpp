@@ -68,6 +68,13 @@ struct ContainerSpec {
   std::filesystem::path art;
   std::optional<int> outline;             ///< source index of the outline path; default: the largest path not a hole
   std::optional<std::vector<int>> holes;  ///< source indices; default: `.path` type-7 paths, none for SVG
+  /// Its motion as a whole (docs/scene-format.md, "A container that moves"): the `rotate` or `pulse`
+  /// preset or transform keys, about `pivot` (container art coordinates; default: the outline's area
+  /// centroid); `loop` is the scene's. None: it stands still.
+  AnimationSpec animation;
+  /// The elements take the container's change of scale into their scripts (a beating container's
+  /// elements beat with it); false: they keep their scripted size.
+  bool inherit_scale = true;
 };
 
 struct LibraryElementSpec {

@@ -57,6 +57,12 @@ struct ContainerGeometry {
   std::vector<float> ax, ay, bx, by;     ///< segment i runs from (ax[i], ay[i]) to (bx[i], by[i])
   std::vector<std::int32_t> ring_begin;  ///< ring r is segments [ring_begin[r], ring_begin[r+1]); ring 0 the outline
   ContainerIndex index;                  ///< built by index_container; empty: every query tries every segment
+  /// Its motion (include/animpak/container_motion.hpp) as the solver reads it: kContainerMotionIntervals + 1
+  /// entries over t in [0, 1] of the similarity w = [a −b; b a] p + e from the segments (the container at
+  /// rest) to the container at t, linearly interpolated between entries (container_frame in
+  /// src/solver/reference/boundary.cpp, kernels/boundary.cl). Empty: it does not move.
+  std::vector<float> motion_a, motion_b, motion_ex, motion_ey;
+  bool moves() const { return !motion_a.empty(); }
 };
 
 /// Cell of one coordinate on a uniform grid of n cells of edge `cell` from 0: clamp(floor(c / cell), 0,

@@ -471,7 +471,9 @@ int check(const CheckOptions& options) {
     art_file = container->art;
     report = {{"file", art_file.string()}, {"scene", options.file.string()}, {"ready", false}};
   } else if (options.container) {
-    container = ContainerSpec{options.file, options.outline, std::nullopt};
+    container = ContainerSpec{};
+    container->art = options.file;
+    container->outline = options.outline;
     if (!options.holes.empty()) container->holes = options.holes;
   }
   if (!options.exclude.empty()) {

@@ -89,10 +89,11 @@ void check_handle_seam(const JsonField& keys_field, const std::vector<HandleKey>
 
 }  // namespace
 
-AnimationSpec read_animation(const JsonField& field) {
+AnimationSpec read_animation(const JsonField& field, bool loop) {
   const ObjectSpec& format = kAnimationObject;
   field.check_keys(format.keys());
   AnimationSpec spec;
+  spec.loop = loop;
   if (auto f = field.optional("preset"))
     spec.preset = static_cast<AnimationPreset>(read_choice(*f, format.at("preset")));
 

@@ -54,7 +54,22 @@ fs::path resolve_art(const JsonField& field, const fs::path& base_dir, const Art
   return resolved;
 }
 
-ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, const ArtLocator& locate) {
+/// The container's `animation` (docs/scene-format.md, "A container that moves"): its whole-body motion,
+/// looping when the scene loops; handles and swim bend art, so a container refuses them here.
+AnimationSpec read_container_animation(const JsonField& field, bool loop) {
+  if (auto f = field.optional("loop"))
+    f->fail("a container's animation loops when the scene does (`loop` at the top of the scene); remove it");
+  if (auto f = field.optional("handles"))
+    f->fail(
+        "a container moves as a whole (turn, scale, move); handles would bend it, which animpak does not pack; "
+        "use keys or the rotate or pulse preset");
+  AnimationSpec spec = io_detail::read_animation(field, loop);
+  if (spec.preset == AnimationPreset::swim)
+    field.required("preset").fail("swim bends its art, and a container moves as a whole; use rotate, pulse or keys");
+  return spec;
+}
+
+ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, const ArtLocator& locate, bool loop) {
   ContainerSpec spec;
   // A bare string is the common case: the container is its art's default outline and holes.
   if (field.json().is_string()) {
@@ -77,6 +92,8 @@ ContainerSpec read_container(const JsonField& field, const fs::path& base_dir, c
     }
     spec.holes = std::move(holes);
   }
+  if (auto f = field.optional("animation")) spec.animation = read_container_animation(*f, loop);
+  if (auto f = field.optional("inherit_scale")) spec.inherit_scale = f->boolean();
   return spec;
 }
 
@@ -539,9 +556,9 @@ SceneSpec parse_scene(const std::string& text, const fs::path& file_for_messages
 
   SceneSpec scene;
   scene.file = file_for_messages;
-  scene.container = read_container(root.required("container"), base_dir, locate);
-  scene.elements = read_elements(root.required("elements"), base_dir, locate);
   if (auto f = root.optional("loop")) scene.loop = f->boolean();
+  scene.container = read_container(root.required("container"), base_dir, locate, scene.loop);
+  scene.elements = read_elements(root.required("elements"), base_dir, locate);
   // A phase shifts the copy's slices round the loop, so the t = 1 slice must meet the t = 0 one.
   for (std::size_t i = 0; i < scene.elements.size() && !scene.loop; ++i)
     if (scene.elements[i].random_phase || scene.elements[i].phase != 0.0)

@@ -46,6 +46,13 @@ const std::array kContainerFields{
               .meaning = "source indices of the hole paths, not the outline",
               .items = &kPathIndex,
               .distinct = true},
+    FieldSpec{.key = "animation",
+              .type = Type::object,
+              .meaning = "its motion as a whole: the rotate or pulse preset, or keys; loops when the scene does",
+              .object = &kAnimationObject},
+    FieldSpec{.key = "inherit_scale",
+              .type = Type::boolean,
+              .meaning = "the elements scale with an animated container (default true)"},
 };
 
 const FieldSpec kTransformKeyItem{.key = "", .type = Type::object, .meaning = "", .object = &kTransformKeyObject};

@@ -121,4 +121,30 @@ Container make_container(const ArtShape& art, const ContainerSpec& spec) {
   return c;
 }
 
+void animate_container(Container& container, const SceneSpec& scene) {
+  container.inherit_scale = scene.container.inherit_scale;
+  const AnimationSpec& spec = scene.container.animation;
+  if (spec.preset == AnimationPreset::none && spec.keys.empty() && spec.handles.empty()) return;
+  if (scene.mirror)
+    throw InputError(scene.file.string() +
+                     ": container.animation: a mirrored scene's container cannot move (its mirror line stands "
+                     "still); remove `mirror` or the container's animation");
+  // The outline's area centroid, as an element's pivot defaults to its outline's (animate.cpp).
+  double a = 0.0, cx = 0.0, cy = 0.0;
+  const std::vector<Vec2>& ring = container.outline;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Vec2 p = ring[i], q = ring[(i + 1) % n];
+    const double c = cross(p, q);
+    a += c;
+    cx += (p.x + q.x) * c;
+    cy += (p.y + q.y) * c;
+  }
+  const Vec2 pivot = spec.pivot ? container.frame.to_unit(*spec.pivot) : Vec2{cx / (3.0 * a), cy / (3.0 * a)};
+  try {
+    container.motion = ContainerMotion(spec, pivot, container.frame.scale, scene.loop);
+  } catch (const InputError& e) {
+    throw InputError(scene.file.string() + ": " + e.what());
+  }
+}
+
 }  // namespace animpak

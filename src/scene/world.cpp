@@ -14,8 +14,32 @@ namespace {
 
 using scene_detail::Placement;
 
+// Slice s of instance `p` as placed in the container at rest, carried by the container's motion at the
+// slice's time (docs/scene-format.md, "A container that moves"): the whole slice by the similarity, or,
+// when the elements do not inherit the container's scale, its centroid by the similarity and its shape
+// by the turn alone. A container that does not move leaves the positions as placed, bit for bit.
+std::vector<Vec2> placed_slice(const Container& container, const SpacetimeElement& e, const Placement& p, int s) {
+  const int P = e.vertices_per_slice();
+  std::vector<Vec2> q(static_cast<std::size_t>(P));
+  for (int v = 0; v < P; ++v) q[v] = scene_detail::placed(p, e, s, v);
+  if (!container.motion.moves()) return q;
+  const Similarity m = container.motion.at(static_cast<double>(s) / (e.slice_count - 1));
+  if (container.inherit_scale) {
+    for (Vec2& x : q) x = m.apply(x);
+    return q;
+  }
+  Vec2 c;
+  for (const Vec2& x : q) c = c + x;
+  c = c * (1.0 / P);
+  const Vec2 moved = m.apply(c);
+  const double k = 1.0 / m.scale();
+  for (Vec2& x : q) x = moved + m.linear(x - c) * k;
+  return q;
+}
+
 // Appends instance `p` (library element `e`) to the topology and the initial state.
-void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e, const Placement& p, int index) {
+void append_instance(Topology& topo, SimState& state, const Container& container, const SpacetimeElement& e,
+                     const Placement& p, int index) {
   const int P = e.vertices_per_slice(), B = e.slice.boundary_count, n = e.slice_count;
   const auto V = static_cast<std::int32_t>(topo.element.size());
   const auto S = static_cast<std::int32_t>(topo.slice_boundary.size());
@@ -26,16 +50,21 @@ void append_instance(Topology& topo, SimState& state, const SpacetimeElement& e,
     topo.slice_boundary.push_back(B);
     topo.slice_element.push_back(index);
     const float t = static_cast<float>(s) / static_cast<float>(n - 1);
+    const std::vector<Vec2> slice = placed_slice(container, e, p, s);
     for (int v = 0; v < P; ++v) {
-      const Vec2 q = scene_detail::placed(p, e, s, v);
+      const Vec2 q = slice[v];
       std::uint8_t flags = v < B ? vertex_boundary : 0;
       std::int32_t target = -1;
       if (keyed && key->hold_angle) flags |= vertex_hold_angle;
       if (keyed && v == p.anchor) {
         flags |= vertex_anchor;
         target = static_cast<std::int32_t>(topo.target_x.size());
-        topo.target_x.push_back(key->point.x);
-        topo.target_y.push_back(key->point.y);
+        // Targets are given in the container's frame: they move with it.
+        const Vec2 goal = container.motion.moves()
+                              ? container.motion.at(key->point.t).apply(Vec2{key->point.x, key->point.y})
+                              : Vec2{key->point.x, key->point.y};
+        topo.target_x.push_back(static_cast<float>(goal.x));
+        topo.target_y.push_back(static_cast<float>(goal.y));
         topo.target_t.push_back(key->point.t);
       }
       topo.element.push_back(index);
@@ -125,6 +154,12 @@ void container_segments(Topology& topo, const Container& c) {
   for (const auto& h : c.holes) add_ring(h);
   topo.container.ring_begin.push_back(static_cast<std::int32_t>(topo.container.ax.size()));
   index_container(topo.container);
+  for (const Similarity& m : c.motion.table()) {
+    topo.container.motion_a.push_back(static_cast<float>(m.a));
+    topo.container.motion_b.push_back(static_cast<float>(m.b));
+    topo.container.motion_ex.push_back(static_cast<float>(m.ex));
+    topo.container.motion_ey.push_back(static_cast<float>(m.ey));
+  }
 }
 
 std::string with_commas(double value) {
@@ -289,7 +324,7 @@ World build_world(const SceneSpec& given, Container container, std::vector<Space
                               p.guided ? p.offset.front() : p.seed, p.angle.front(),
                               p.guided ? 1.0 : *smallest / *largest});
     topo.element_secondary.push_back(p.secondary ? 1 : 0);
-    append_instance(topo, world.state, e, p, static_cast<int>(i));
+    append_instance(topo, world.state, container, e, p, static_cast<int>(i));
   }
   finish_slices(topo);
   incident_triangles(topo);
@@ -343,6 +378,7 @@ World make_world(const SceneSpec& scene) {
   Container container =
       make_container(load_art(scene.container.art, {scene.params.art.flatten_tolerance}), scene.container);
   if (scene.mirror) container = mirror_container(container, *scene.mirror, scene.file.string());
+  animate_container(container, scene);
   // Before any element is meshed (docs/cli.md, "Limits"): per slice, the interior samples the art's box
   // grown by the offset holds at interior_spacing (packed hexagonally, the most it can hold) and about
   // its perimeter over boundary_spacing on the boundary.

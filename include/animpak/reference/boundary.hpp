@@ -1,4 +1,5 @@
-// The reference's container, the same at every t, so everything here is in x, y only
+// The reference's container, in x, y only at each vertex's own t: the container at rest (the segments)
+// moved by its motion at that t (ContainerGeometry::motion_*; docs/scene-format.md, "A container that moves")
 // (src/solver/reference/boundary.cpp; kernels/boundary.cl is its twin):
 //   Eq. 4, F_bdr = k_bdr (p_b − x) on a vertex outside the container, p_b the nearest point of its boundary;
 // inside, the wall's repulsion on a boundary vertex in Eq. 1's form, and the wall as the element's mirror
@@ -27,6 +28,25 @@ struct ContainerQuery {
 /// The even–odd test always; the nearest boundary point only when `nearest` or the point is outside.
 /// A world without a container has every point inside. boundary.cpp.
 ContainerQuery container_query(const ContainerGeometry& box, float px, float py, bool nearest);
+
+/// The container's motion at time t (ContainerGeometry::motion_*): the two table entries around t
+/// (clamped to the table) interpolated linearly in float, w = [a −b; b a] p + e (kernels/boundary.cl,
+/// container_frame). Only for a container that moves.
+struct ContainerFrame {
+  float a = 1.0f, b = 0.0f, ex = 0.0f, ey = 0.0f;
+  /// The point w of the plane at this time, taken back to the container at rest.
+  void to_rest(float wx, float wy, float& px, float& py) const;
+  /// The point p of the container at rest, brought to this time.
+  void from_rest(float px, float py, float& wx, float& wy) const;
+};
+ContainerFrame container_frame(const ContainerGeometry& box, float t);
+
+/// The query of (px, py) at time pt: against the container at rest when it does not move (the same bits as
+/// the query above); otherwise the point is taken to the container at rest, queried there, and its nearest
+/// point brought back to pt, its squared distance measured there. boundary.cpp.
+ContainerQuery container_query(const ContainerGeometry& box, float px, float py, float pt, bool nearest);
+/// edge_crosses_container at time pt, both ends taken to the container at rest by the motion at pt.
+bool edge_crosses_container(const ContainerGeometry& box, float px, float py, float nx, float ny, float pt);
 
 /// Whether the boundary edge p → n properly crosses a segment of the container's boundary (touching does
 /// not count). Both ends may be inside: a reflex corner of the container, such as the heart's notch,

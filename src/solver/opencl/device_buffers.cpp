@@ -22,7 +22,8 @@ WorldInfo world_info(const Topology& topo, std::int32_t boundaries, std::int32_t
   w.spring_stride = plane_stride(std::max<std::int64_t>(size(topo.spring_begin), size(topo.spring_other)), alignment);
   w.triangle_stride = plane_stride(std::max({size(topo.tri_a), size(topo.tri_begin), size(topo.tri_list)}), alignment);
   w.target_stride = plane_stride(size(topo.target_x), alignment);
-  w.segment_stride = plane_stride(w.segments, alignment);
+  w.motion_entries = static_cast<std::int32_t>(topo.container.motion_a.size());
+  w.segment_stride = plane_stride(std::max(w.segments, w.motion_entries), alignment);
   return w;
 }
 
@@ -85,6 +86,12 @@ TopologyBuffers upload_topology(const cl::Context& context, const cl::CommandQue
   b.segments.write(queue, AP_SEG_AY, topo.container.ay);
   b.segments.write(queue, AP_SEG_BX, topo.container.bx);
   b.segments.write(queue, AP_SEG_BY, topo.container.by);
+  if (topo.container.moves()) {
+    b.segments.write(queue, AP_SEG_MOTION_A, topo.container.motion_a);
+    b.segments.write(queue, AP_SEG_MOTION_B, topo.container.motion_b);
+    b.segments.write(queue, AP_SEG_MOTION_EX, topo.container.motion_ex);
+    b.segments.write(queue, AP_SEG_MOTION_EY, topo.container.motion_ey);
+  }
   b.env_a = in(topo.env_a, "env_a"), b.env_b = in(topo.env_b, "env_b"), b.env_c = in(topo.env_c, "env_c");
   b.env_element = in(topo.env_element, "env_element");
   b.container_index = in(topo.container.index.data, "container.index");

@@ -15,9 +15,9 @@ static_assert(sizeof(GridInfo) == 28 && offsetof(GridInfo, cell) == 4 && offseto
               offsetof(GridInfo, far_cells) == 16 && offsetof(GridInfo, slot_stride) == 24);
 static_assert(sizeof(ContainerIndexInfo) == 32 && offsetof(ContainerIndexInfo, nx) == 12 &&
               offsetof(ContainerIndexInfo, cell_segments) == 28);
-static_assert(sizeof(WorldInfo) == 52 && offsetof(WorldInfo, breakdown) == 20 &&
+static_assert(sizeof(WorldInfo) == 56 && offsetof(WorldInfo, breakdown) == 20 &&
               offsetof(WorldInfo, boundaries) == 24 && offsetof(WorldInfo, vertex_stride) == 28 &&
-              offsetof(WorldInfo, segment_stride) == 48);
+              offsetof(WorldInfo, segment_stride) == 48 && offsetof(WorldInfo, motion_entries) == 52);
 static_assert(sizeof(OverlapGridInfo) == 32 && offsetof(OverlapGridInfo, x0) == 12 &&
               offsetof(OverlapGridInfo, cell_t) == 28);
 // ForceParams: 32 fields of its own, one per force of AP_LOCAL_FORCES after k_torsion, and the pad that

@@ -1,7 +1,9 @@
 // Boundary force, paper Eq. 4: F_bdr = k_bdr (p_b − x) for a vertex outside the container, p_b the
 // closest point on the container's boundary; the wall's repulsion on a boundary vertex inside; and the
-// containment projection that backs them up (docs/parameters.md, "Containment"). The
-// container is the same in every t, so the test and the force are in x, y only. Holes count: the
+// containment projection that backs them up (docs/parameters.md, "Containment"). The test and the
+// force are in x, y only: at the vertex's own t, the container is the one at rest (the segments) moved
+// by its motion at t (docs/scene-format.md, "A container that moves"), so a point is taken back to the
+// container at rest, tested there, and its nearest point brought forward again. Holes count: the
 // even–odd rule over the segments of all rings puts a vertex inside a hole outside the container, and
 // p_b is searched on every ring.
 #include <algorithm>
@@ -56,6 +58,58 @@ ContainerQuery container_query(const ContainerGeometry& box, float px, float py,
   return q;
 }
 
+ContainerFrame container_frame(const ContainerGeometry& box, float t) {
+  const std::int32_t intervals = static_cast<std::int32_t>(box.motion_a.size()) - 1;
+  const float u = t * static_cast<float>(intervals);
+  float f = std::floor(u);
+  if (!(f >= 0.0f)) f = 0.0f;
+  const float last = static_cast<float>(intervals - 1);
+  if (f > last) f = last;
+  const std::int32_t i = static_cast<std::int32_t>(f);
+  float w = u - f;
+  if (!(w >= 0.0f)) w = 0.0f;
+  if (w > 1.0f) w = 1.0f;
+  const auto lerp = [&](const std::vector<float>& v) { return v[i] + (v[i + 1] - v[i]) * w; };
+  return {lerp(box.motion_a), lerp(box.motion_b), lerp(box.motion_ex), lerp(box.motion_ey)};
+}
+
+void ContainerFrame::to_rest(float wx, float wy, float& px, float& py) const {
+  const float s2 = a * a + b * b, dx = wx - ex, dy = wy - ey;
+  px = (a * dx + b * dy) / s2;
+  py = (a * dy - b * dx) / s2;
+}
+
+void ContainerFrame::from_rest(float px, float py, float& wx, float& wy) const {
+  wx = a * px - b * py + ex;
+  wy = b * px + a * py + ey;
+}
+
+ContainerQuery container_query(const ContainerGeometry& box, float px, float py, float pt, bool nearest) {
+  if (!box.moves()) return container_query(box, px, py, nearest);
+  const ContainerFrame m = container_frame(box, pt);
+  float lx, ly;
+  m.to_rest(px, py, lx, ly);
+  ContainerQuery q = container_query(box, lx, ly, nearest);
+  if (!(q.distance2 < std::numeric_limits<float>::infinity())) {
+    q.qx = px;  // no nearest point was sought: the point itself, as at rest
+    q.qy = py;
+    return q;
+  }
+  m.from_rest(q.qx, q.qy, q.qx, q.qy);
+  const float ux = q.qx - px, uy = q.qy - py;
+  q.distance2 = ux * ux + uy * uy;
+  return q;
+}
+
+bool edge_crosses_container(const ContainerGeometry& box, float px, float py, float nx, float ny, float pt) {
+  if (!box.moves()) return edge_crosses_container(box, px, py, nx, ny);
+  const ContainerFrame m = container_frame(box, pt);
+  float lx, ly, mx, my;
+  m.to_rest(px, py, lx, ly);
+  m.to_rest(nx, ny, mx, my);
+  return edge_crosses_container(box, lx, ly, mx, my);
+}
+
 bool edge_crosses_container(const ContainerGeometry& box, float px, float py, float nx, float ny) {
   const std::size_t segments = box.ax.size();
   const ContainerIndex& ix = box.index;
@@ -96,14 +150,14 @@ Vec3f boundary_force(const ForceParams& params, const ContainerQuery& q, float p
 Vec3f boundary_force(const Topology& topo, const SimState& state, const ForceParams& params, std::int32_t v) {
   const float px = state.x[v], py = state.y[v];
   const bool boundary = (topo.flags[v] & vertex_boundary) != 0;
-  return boundary_force(params, container_query(topo.container, px, py, boundary), px, py, boundary);
+  return boundary_force(params, container_query(topo.container, px, py, state.t[v], boundary), px, py, boundary);
 }
 
 void apply_containment(const Topology& topo, SimState& state) {
   const std::int32_t n = topo.vertex_count();
   for (std::int32_t v = 0; v < n; ++v) {
     const float px = state.x[v], py = state.y[v];
-    const ContainerQuery q = container_query(topo.container, px, py, false);
+    const ContainerQuery q = container_query(topo.container, px, py, state.t[v], false);
     if (q.inside) continue;
     // Past p_b along the direction from x to p_b, so rounding cannot leave the vertex on the outside;
     // a vertex exactly on the boundary has no such direction and stays.

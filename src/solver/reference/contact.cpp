@@ -26,7 +26,7 @@ ContactGap contact_gap(const Topology& topo, const SimState& state, const ForceP
       const std::int32_t next = v - lo + 1 == topo.slice_boundary[s] ? lo : v + 1;
       const float ex = state.x[next] - px, ey = state.y[next] - py;
       if (wall.distance2 < ex * ex + ey * ey &&
-          edge_crosses_container(topo.container, px, py, state.x[next], state.y[next])) {
+          edge_crosses_container(topo.container, px, py, state.x[next], state.y[next], state.t[v])) {
         contact = contact_outside;
         wall_gap = 0.0f;
       }

@@ -55,7 +55,7 @@ StepForces step_forces(const Topology& topo, const SimState& state, const ForceP
     }
     const OverlapResult overlap = overlap_test(topo, state, boxes, overlap_grid, tangents, v, params.interval_points);
     const RepulsionResult rpl = repulsion_force(topo, state, params, grid, v, near, far, overlap.overlap);
-    const ContainerQuery wall = container_query(topo.container, px, py, boundary);
+    const ContainerQuery wall = container_query(topo.container, px, py, state.t[v], boundary);
     Vec3f part[AP_FORCE_COMPONENTS];  // by AP_FORCE_TERMS
     part[AP_FORCE_repulsion] = rpl.force;
     const Vec3f springs = spring_force(topo, state, params, v);
