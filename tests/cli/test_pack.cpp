@@ -602,8 +602,10 @@ TEST_CASE(
     "animpak pack: coarse to fine, interrupted before and after the refinement or stopped as a preview, resumes "
     "to the uninterrupted state.bin byte for byte") {
   // 13 slices packed first at four (docs/parameters.md, "Coarse to fine"), with a collision grid coarse
-  // enough to allow it.
-  const Sandbox box("levels", animpak::test::star_scene(3, 13, 2, {"", R"("cell_size": 0.5, "coarse_step": 4)"}));
+  // enough to allow it; started large and settled briefly, so that each of the seven packs takes seconds.
+  const Sandbox box(
+      "levels", animpak::test::star_scene(3, 13, 2, {"", R"("cell_size": 0.5, "coarse_step": 4, "initial_scale": 0.25,
+                                                               "settle_iterations": 300)"}));
   const CommandResult whole = run_animpak("pack " + box.scene() + " --out " + box.path("whole") + " --no-render");
   INFO(whole.err);
   REQUIRE(whole.code == 0);
@@ -620,14 +622,19 @@ TEST_CASE(
   const std::string expected = bytes_of(box.path("whole") + "/state.bin");
   CHECK(animpak::read_checkpoint(box.path("whole") + "/state.bin").level_slices == 0);
 
-  // Stopped by an iteration limit before the refinement, then after it (on a check, every 10 iterations).
-  for (const std::uint64_t cut : {refined_at / 20 * 10, refined_at / 10 * 10 + 20}) {
+  // Stopped by an iteration limit before the refinement, then after it (on a check, every 10 iterations):
+  // the first check past the refinement, which must come before the stop for the cut to interrupt.
+  const std::uint64_t after = (refined_at / 10 + 1) * 10;
+  REQUIRE(after < stats.iterations);
+  for (const std::uint64_t cut : {refined_at / 20 * 10, after}) {
     INFO("interrupted at iteration " << cut);
     const std::string dir = box.path("cut" + std::to_string(cut));
     REQUIRE(run_animpak("pack " + box.scene() + " --out " + dir + " --max-iterations " + std::to_string(cut) +
                         " --no-render")
                 .code == 0);
-    CHECK(animpak::read_checkpoint(dir + "/state.bin").level_slices == (cut < refined_at ? 4 : 0));
+    const animpak::Checkpoint stopped = animpak::read_checkpoint(dir + "/state.bin");
+    CHECK(stopped.level_slices == (cut < refined_at ? 4 : 0));
+    CHECK(stopped.state.iteration == cut);
     const CommandResult resumed = run_animpak("pack --resume " + dir + " --max-iterations 100000 --no-render");
     INFO(resumed.err);
     REQUIRE(resumed.code == 0);
