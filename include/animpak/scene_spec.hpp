@@ -179,8 +179,10 @@ inline constexpr int still_slices = 12;
 /// The still reference of `scene` (whose text is `text`), as scene text: every element's animation and
 /// phase removed, each guided element turned into one more ordinary copy of its library element (its
 /// count, or the scene's, one higher), and at most 12 slices; everything else, the seed included, as it
-/// was (docs/quality.md, "Still reference"). still_scene.cpp.
-std::string still_scene_text(const std::string& text, const SceneSpec& scene);
+/// was (docs/quality.md, "Still reference"). An animated container stands still at its rest place, scaled
+/// by `container_scale` about its pivot (the caller's mean of its scale over the loop: ContainerMotion's
+/// mean_scale). still_scene.cpp.
+std::string still_scene_text(const std::string& text, const SceneSpec& scene, double container_scale = 1.0);
 
 /// The JSON Schema (draft 2020-12) of the scene file, written from the tables the parser checks keys,
 /// types and ranges with; docs/scene.schema.json is its output.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "animpak/checkpoint.hpp"
+#include "animpak/container_motion.hpp"
 #include "animpak/error.hpp"
 #include "animpak/levels.hpp"
 #include "animpak/opencl.hpp"
@@ -223,7 +224,8 @@ int pack(const PackOptions& options, const FrameRenderer& render_frames) {
     if (!options.force && holds_packing()) refuse_packing();  // again, now that the folder is this run's
     checkpoint.scene_text = read_bytes(checkpoint.scene_file, "check the scene file's path");
     if (options.still) {
-      checkpoint.scene_text = still_scene_text(checkpoint.scene_text, *new_scene);
+      const double mean_scale = ContainerMotion(new_scene->container.animation, {}, 1.0, new_scene->loop).mean_scale();
+      checkpoint.scene_text = still_scene_text(checkpoint.scene_text, *new_scene, mean_scale);
       std::cerr << "animpak: packing the still reference: the same elements standing still"
                 << (new_scene->guided.empty() ? "" : ", guided elements as ordinary copies") << ", "
                 << std::min(new_scene->params.element.slices, still_slices) << " slices\n";

@@ -9,8 +9,15 @@
 
 namespace animpak {
 
-std::string still_scene_text(const std::string& text, const SceneSpec& scene) {
+std::string still_scene_text(const std::string& text, const SceneSpec& scene, double container_scale) {
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(text);
+  // A container that moves stands still at its mean size, about the same pivot.
+  const AnimationSpec& motion = scene.container.animation;
+  if (motion.preset != AnimationPreset::none || !motion.keys.empty()) {
+    nlohmann::ordered_json still = {{"keys", nlohmann::ordered_json::array({{{"t", 0}, {"scale", container_scale}}})}};
+    if (doc["container"]["animation"].contains("pivot")) still["pivot"] = doc["container"]["animation"]["pivot"];
+    doc["container"]["animation"] = still;
+  }
   nlohmann::ordered_json& elements = doc["elements"];
   for (nlohmann::ordered_json& e : elements) {
     e.erase("animation");

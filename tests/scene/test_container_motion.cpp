@@ -72,3 +72,24 @@ TEST_CASE("container animation: handles, swim, its own loop and a mirror are ref
   CHECK_THAT(mirrored, Catch::Contains("scene.json") && Catch::Contains("mirror") &&
                            Catch::Contains("remove `mirror` or the container's animation"));
 }
+
+TEST_CASE("container animation: the still reference stands the container still at the mean size it is given") {
+  const std::string text = scene_with(R"(, "animation": {"pivot": [250, 300], "keys": [
+      {"t": 0, "scale": 1}, {"t": 0.5, "scale": 1.3, "rotate": 20, "translate": [30, 0]}, {"t": 1, "scale": 1}]})");
+  const SceneSpec scene = parse_scene(text, "scene.json", ".");
+  const double mean = ContainerMotion(scene.container.animation, {}, 1.0, scene.loop).mean_scale();
+  CHECK(mean > 1.1);
+  CHECK(mean < 1.2);
+  const SceneSpec still = parse_scene(still_scene_text(text, scene, mean), "still.json", ".");
+  const World w = make_world(still);
+  REQUIRE(w.container.motion.moves());
+  CHECK(w.container.motion.min_scale() == Approx(mean).epsilon(1e-12));
+  CHECK(w.container.motion.max_scale() == Approx(mean).epsilon(1e-12));
+  // No turn, no move: only the scale about the same pivot.
+  const Similarity m = w.container.motion.at(0.4);
+  CHECK(m.angle() == 0.0);
+  const Vec2 pivot = w.container.frame.to_unit({250, 300});
+  const Vec2 kept = m.apply(pivot);
+  CHECK(kept.x == Approx(pivot.x).epsilon(1e-12));
+  CHECK(kept.y == Approx(pivot.y).epsilon(1e-12));
+}
