@@ -259,12 +259,13 @@ inline std::vector<double> mean_contact(const std::vector<FrameMetrics>& metrics
   return mean;
 }
 
-/// The container as a region: the outline minus the holes (even–odd); the shown (whole) container of a
-/// mirrored scene.
-Region container_region(const Container& container);
+/// The container as a region at time t: the outline minus the holes (even–odd), carried by
+/// container.motion.at(t) when the container moves; the shown (whole) container of a mirrored scene.
+Region container_region(const Container& container, double t);
 
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
-/// draw it (element_at, replay_art, element_scale), measured with measure_regions.
+/// draw it (element_at, replay_art, element_scale), measured with measure_regions against the container
+/// where it is at tf (container_region).
 FrameMetrics measure_frame(const World& world, const SimState& state, double tf, Measures what = Measures::all);
 /// The same for art frame_art has replayed at tf.
 FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf,
