@@ -299,7 +299,8 @@ struct MotionMetrics {
   /// Per element, how far it moves over the loop (docs/quality.md, "Motion"): the largest distance of its
   /// art's centroid from its mean place over the frames (how far it steps aside to let a traveller by, or
   /// how far a traveller travels), and the length of the centroid's path per loop, frame to frame, in
-  /// container units. `guided` says which elements are guided: the motion line sums up the others.
+  /// container units; in the container's frame at rest when it moves (docs/quality.md, "A container that
+  /// moves"). `guided` says which elements are guided: the motion line sums up the others.
   std::vector<double> detour, path_length;
   std::vector<bool> guided;
   /// Per element, its start's smallest scale over its largest (ElementInstance::dip): below 1 where its

@@ -18,12 +18,12 @@ namespace {
 // One library element of `count` stars (each turning once a loop) in the heart, whose container has the
 // `animation` object and `inherit_scale`.
 World moving_container_world(const std::string& animation, int count, int slices, bool inherit_scale = true) {
-  const std::string text =
-      R"({"container": {"art": ")" + test::example_file("shapes/heart-container.path") +
-      R"(", "animation": )" + animation + R"(, "inherit_scale": )" + (inherit_scale ? "true" : "false") +
-      R"(}, "elements": [{"name": "star", "art": ")" + test::example_file("default/star.svg") +
-      R"(", "count": )" + std::to_string(count) + R"(, "animation": {"preset": "rotate", "turns": 1}}], "seed": 3, "slices": )" +
-      std::to_string(slices) + "}";
+  const std::string text = R"({"container": {"art": ")" + test::example_file("shapes/heart-container.path") +
+                           R"(", "animation": )" + animation + R"(, "inherit_scale": )" +
+                           (inherit_scale ? "true" : "false") + R"(}, "elements": [{"name": "star", "art": ")" +
+                           test::example_file("default/star.svg") + R"(", "count": )" + std::to_string(count) +
+                           R"(, "animation": {"preset": "rotate", "turns": 1}}], "seed": 3, "slices": )" +
+                           std::to_string(slices) + "}";
   return make_world(parse_scene(text, "moving-container.json", "/"));
 }
 
@@ -44,7 +44,8 @@ std::vector<Region> drawn_regions(const World& w, double tf) {
 
 }  // namespace
 
-TEST_CASE("measure_frame: a star carried far by a travelling container is inside it at every frame and between slices") {
+TEST_CASE(
+    "measure_frame: a star carried far by a travelling container is inside it at every frame and between slices") {
   // The heart travels 400 art units (about 0.8 of its width) to the right and back over the loop: the
   // lone star, placed inside it at rest and carried by it at every slice, leaves the heart at rest.
   const World w = moving_container_world(
@@ -128,7 +129,8 @@ TEST_CASE("measure_motion: a beating container's elements that inherit its scale
   const std::vector<double> times = frame_times(16, true);
   std::vector<std::vector<Vec2>> centroids(w.elements.size());
   for (std::size_t e = 0; e < w.elements.size(); ++e)
-    for (const double t : times) centroids[e].push_back(art_centroid(element_art(w, int(e), element_at(w, w.state, int(e), t))));
+    for (const double t : times)
+      centroids[e].push_back(art_centroid(element_art(w, int(e), element_at(w, w.state, int(e), t))));
   const MotionMetrics m = measure_motion(w, w.state, centroids, times);
   REQUIRE(m.size_over_script.size() == 2);
   for (const double ratio : m.size_over_script) CHECK(ratio == Approx(1.0).epsilon(1e-4));
@@ -169,4 +171,22 @@ TEST_CASE("container_region: a container that does not move is its rings as they
     CHECK(moved.rings[0][i].x == m.apply(w.container.outline[i]).x);
     CHECK(moved.rings[0][i].y == m.apply(w.container.outline[i]).y);
   }
+}
+
+TEST_CASE("measure_motion: a star a turning container carries neither strays nor travels in it") {
+  // The heart turns once a loop about its art's origin, a corner of its box; the lone star rides it. In
+  // the picture its centroid circles that corner; in the heart it stays where it was placed.
+  const World w = moving_container_world(R"({"preset": "rotate", "turns": 1, "pivot": [0, 0]})", 1, 13);
+  const std::vector<double> times = frame_times(48, true);
+  std::vector<std::vector<Vec2>> centroids(1);
+  for (const double t : times) centroids[0].push_back(art_centroid(element_art(w, 0, element_at(w, w.state, 0, t))));
+  double seen = 0.0;  // the largest distance between two of the centroids as the frames show them
+  for (const Vec2 a : centroids[0])
+    for (const Vec2 b : centroids[0]) seen = std::max(seen, std::hypot(a.x - b.x, a.y - b.y));
+  REQUIRE(seen > 0.05);
+  const MotionMetrics m = measure_motion(w, w.state, centroids, times);
+  REQUIRE(m.detour.size() == 1);
+  INFO("detour " << m.detour[0] << ", path " << m.path_length[0] << ", across the picture " << seen);
+  CHECK(m.detour[0] < 0.01 * seen);
+  CHECK(m.path_length[0] < 0.01 * seen);
 }
