@@ -259,12 +259,13 @@ inline std::vector<double> mean_contact(const std::vector<FrameMetrics>& metrics
   return mean;
 }
 
-/// The container as a region: the outline minus the holes (even–odd); the shown (whole) container of a
-/// mirrored scene.
-Region container_region(const Container& container);
+/// The container as a region at time t: the outline minus the holes (even–odd), carried by
+/// container.motion.at(t) when the container moves; the shown (whole) container of a mirrored scene.
+Region container_region(const Container& container, double t);
 
 /// The metrics at frame time tf: every element's art replayed on its interpolated slice as the frames
-/// draw it (element_at, replay_art, element_scale), measured with measure_regions.
+/// draw it (element_at, replay_art, element_scale), measured with measure_regions against the container
+/// where it is at tf (container_region).
 FrameMetrics measure_frame(const World& world, const SimState& state, double tf, Measures what = Measures::all);
 /// The same for art frame_art has replayed at tf.
 FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& art, double tf,
@@ -298,7 +299,8 @@ struct MotionMetrics {
   /// Per element, how far it moves over the loop (docs/quality.md, "Motion"): the largest distance of its
   /// art's centroid from its mean place over the frames (how far it steps aside to let a traveller by, or
   /// how far a traveller travels), and the length of the centroid's path per loop, frame to frame, in
-  /// container units. `guided` says which elements are guided: the motion line sums up the others.
+  /// container units; in the container's frame at rest when it moves (docs/quality.md, "A container that
+  /// moves"). `guided` says which elements are guided: the motion line sums up the others.
   std::vector<double> detour, path_length;
   std::vector<bool> guided;
   /// Per element, its start's smallest scale over its largest (ElementInstance::dip): below 1 where its

@@ -1,5 +1,5 @@
-// Frame metrics of a World: every element's art replayed exactly as the frames draw it, handed to
-// measure_regions (src/render/quality.cpp) as plain regions.
+// Frame metrics of a World: every element's art replayed exactly as the frames draw it, and the container
+// where it is at that time, handed to measure_regions (src/render/quality.cpp) as plain regions.
 #include "animpak/render.hpp"
 
 namespace animpak {
@@ -23,11 +23,19 @@ Region art_region(const ArtShape& art, const ArtPoints& points, double stroke_sc
   return region;
 }
 
-Region container_region(const Container& container) {
+Region container_region(const Container& container, double t) {
   Region region;
   region.rule = FillRule::evenodd;
   region.rings.push_back(container.shown_outline());
   region.rings.insert(region.rings.end(), container.shown_holes().begin(), container.shown_holes().end());
+  // A container that moves is measured where it is at t (docs/quality.md, "A container that moves"): its
+  // shape at rest carried by the motion, as the solver's containment test carries it. One that does not
+  // move keeps its rings as they are, bit for bit.
+  if (container.motion.moves()) {
+    const Similarity m = container.motion.at(t);
+    for (std::vector<Vec2>& ring : region.rings)
+      for (Vec2& p : ring) p = m.apply(p);
+  }
   return region;
 }
 
@@ -37,7 +45,7 @@ FrameMetrics measure_frame(const World& world, const std::vector<ElementArt>& ar
   for (std::size_t i = 0; i < art.size(); ++i)
     elements.push_back(art_region(world.library[world.elements[drawn_source(world, int(i))].library].art.art,
                                   art[i].points, art[i].stroke_scale));
-  FrameMetrics m = measure_regions(elements, container_region(world.container), what);
+  FrameMetrics m = measure_regions(elements, container_region(world.container, tf), what);
   m.t = tf;
   return m;
 }

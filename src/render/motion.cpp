@@ -82,9 +82,19 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
   };
   if (!at_slice.empty() && mean(elsewhere) > 0.0) m.slice_ratio = mean(at_slice) / mean(elsewhere);
   // How far each element moves: its centroid's largest distance from its mean place, and its path per
-  // loop (across the seam into the element it loops into, as the acceleration goes).
-  for (std::size_t e = 0; e < centroids.size(); ++e) {
-    const std::vector<Vec2>& c = centroids[e];
+  // loop (across the seam into the element it loops into, as the acceleration goes). Both in the
+  // container's frame (docs/quality.md, "A container that moves"): each centroid taken back by the
+  // container's motion at its frame time, so that an element the container carries without moving in it
+  // neither strays nor travels. A container that does not move leaves the centroids as they are.
+  std::vector<std::vector<Vec2>> in_container;
+  if (world.container.motion.moves()) {
+    in_container = centroids;
+    for (std::vector<Vec2>& c : in_container)
+      for (std::size_t i = 0; i < c.size() && i < n; ++i) c[i] = world.container.motion.at(times[i]).inverse(c[i]);
+  }
+  const std::vector<std::vector<Vec2>>& placed = in_container.empty() ? centroids : in_container;
+  for (std::size_t e = 0; e < placed.size(); ++e) {
+    const std::vector<Vec2>& c = placed[e];
     Vec2 mean_place{0.0, 0.0};
     for (const Vec2 p : c) mean_place = mean_place + p;
     if (!c.empty()) mean_place = (1.0 / double(c.size())) * mean_place;
@@ -93,8 +103,8 @@ MotionMetrics measure_motion(const World& world, const SimState& state, const st
       detour = std::max(detour, std::hypot(c[i].x - mean_place.x, c[i].y - mean_place.y));
       if (i + 1 < c.size())
         length += std::hypot(c[i + 1].x - c[i].x, c[i + 1].y - c[i].y);
-      else if (world.loop && !centroids[loops_into[e]].empty())
-        length += std::hypot(centroids[loops_into[e]][0].x - c[i].x, centroids[loops_into[e]][0].y - c[i].y);
+      else if (world.loop && !placed[loops_into[e]].empty())
+        length += std::hypot(placed[loops_into[e]][0].x - c[i].x, placed[loops_into[e]][0].y - c[i].y);
     }
     m.detour.push_back(detour);
     m.path_length.push_back(length);
